@@ -1,0 +1,63 @@
+// viewer: PathLab's renderer. With -o it renders headless and writes an image; without, it opens
+// the progressive window. Run `viewer --help` for the options.
+#include "pathlab/headless_render.h"
+#include "pathlab/image_io.h"
+#include "pathlab/input_error.h"
+#include "pathlab/render_options.h"
+#include "viewer_window.h"
+
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+
+namespace {
+
+using namespace pathlab;
+
+/// Checks output paths before any rendering, so a typo costs nothing and leaves nothing behind.
+void checkOutputs(const RenderOptions& options) {
+    if (!options.outputImage.empty()) checkImageOutputPath(options.outputImage, "-o");
+    if (!options.screenshot.empty()) checkImageOutputPath(options.screenshot, "--screenshot");
+    if (!options.statsFile.empty()) {
+        namespace fs = std::filesystem;
+        fs::path folder = fs::path(options.statsFile).parent_path();
+        if (folder.empty()) folder = ".";
+        if (!fs::is_directory(folder))
+            throw InputError("option --stats: folder '" + folder.string() + "' does not exist");
+    }
+}
+
+int renderToFile(const RenderOptions& options) {
+    HeadlessResult result = renderHeadless(options);
+    writeImage(options.outputImage, options.width, options.height, result.image.meanImage());
+    if (!options.statsFile.empty()) writeRenderStats(options.statsFile, result.stats);
+    const RenderStats& s = result.stats;
+    std::printf("wrote %s: %s, %s/%s, %dx%d, %d spp, %.3f s, %.3g samples/s, %.3g rays/s\n",
+                options.outputImage.c_str(), s.scene.c_str(), s.lab.c_str(), s.impl.c_str(),
+                s.width, s.height, s.spp, s.seconds, s.samplesPerSecond(), s.raysPerSecond());
+    if (s.nonfinitePixels > 0)
+        std::fprintf(stderr, "warning: %d pixel(s) received NaN or infinite samples (left out)\n",
+                     s.nonfinitePixels);
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        const RenderOptions options = parseRenderOptions(argc, argv);
+        if (options.help) {
+            std::fputs(renderOptionsHelp(), stdout);
+            return 0;
+        }
+        checkOutputs(options);
+        if (!options.outputImage.empty()) return renderToFile(options);
+        return runViewerWindow(options);
+    } catch (const InputError& error) {
+        std::fprintf(stderr, "viewer: %s\n", error.what());
+        return 2;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "viewer: error: %s\n", error.what());
+        return 1;
+    }
+}

@@ -1,0 +1,59 @@
+#pragma once
+/// Per-pixel running sums of radiance samples: the image so far and how noisy it is.
+
+#include "pathlab/color.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace pathlab {
+
+/// For every pixel, the sum and the sum of squares of its samples (per channel), and whether any
+/// sample was not finite. Non-finite samples are counted, not added, so one NaN does not hide the
+/// rest of the image.
+class AccumulationBuffer {
+public:
+    AccumulationBuffer(int width, int height);
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    /// Samples every pixel has received.
+    int samplesPerPixel() const { return samplesPerPixel_; }
+
+    void clear();
+    /// Called by the renderer when a pass has given every pixel `spp` more samples.
+    void finishPass(int spp) { samplesPerPixel_ += spp; }
+
+    void addSample(int pixel, const Color& value) {
+        if (!isFinite(value)) {
+            nonfinite_[pixel] = 1;
+            return;
+        }
+        sum_[pixel] += value;
+        sumSquares_[pixel] += value * value;
+    }
+
+    /// The pixel's estimate: the mean of its samples.
+    Color mean(int pixel) const;
+    /// The sample variance of the pixel's samples (unbiased, per channel).
+    Color variance(int pixel) const;
+    /// The whole image's mean radiance per channel.
+    Color meanRadiance() const;
+    /// Pixels with at least one NaN or infinite sample.
+    int nonfinitePixels() const;
+    /// The mean over pixels of the relative standard error of the pixel means (per channel
+    /// average), a single noise figure: halves when the samples per pixel are quadrupled.
+    float meanRelativeStandardError() const;
+
+    /// The image as linear RGB floats, row-major from the top-left corner.
+    std::vector<float> meanImage() const;
+
+private:
+    int width_, height_;
+    int samplesPerPixel_ = 0;
+    std::vector<Color> sum_;
+    std::vector<Color> sumSquares_;
+    std::vector<uint8_t> nonfinite_;
+};
+
+} // namespace pathlab

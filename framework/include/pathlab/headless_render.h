@@ -1,0 +1,19 @@
+#pragma once
+/// A whole headless render: load, trace, measure. The viewer's -o and the grader share it.
+
+#include "pathlab/accumulation_buffer.h"
+#include "pathlab/render_options.h"
+#include "pathlab/render_stats.h"
+
+namespace pathlab {
+
+struct HeadlessResult {
+    AccumulationBuffer image;
+    RenderStats stats;
+};
+
+/// Renders options.spp samples per pixel of the scene the options name, with the lab and
+/// implementation they choose. Throws InputError for a bad scene.
+HeadlessResult renderHeadless(const RenderOptions& options);
+
+} // namespace pathlab

@@ -1,0 +1,29 @@
+#pragma once
+/// Image files through OpenImageIO: linear radiance in .exr/.pfm/.hdr, sRGB in .png.
+
+#include <string>
+#include <vector>
+
+namespace pathlab {
+
+/// Throws InputError unless `path` has a supported extension and its folder exists and is
+/// writable; called before rendering so a bad -o costs no render time.
+void checkImageOutputPath(const std::string& path, const std::string& option = "-o");
+
+/// Writes linear RGB floats (row-major, top-left first). .png is sRGB-encoded, clamped to [0,1]
+/// and 8-bit; .exr, .pfm and .hdr keep linear floats. Atomic: writes a temporary file in the same
+/// folder, then renames it over `path`, so a reader never sees half an image.
+void writeImage(const std::string& path, int width, int height, const std::vector<float>& rgb);
+
+/// A linear RGB image read from a file (any format OpenImageIO reads; 8-bit files are decoded
+/// from sRGB). Throws InputError if it cannot.
+struct Image {
+    int width = 0, height = 0;
+    std::vector<float> rgb;
+};
+Image readImage(const std::string& path);
+
+/// The sRGB transfer function of a linear value in [0,1].
+float linearToSrgb(float linear);
+
+} // namespace pathlab

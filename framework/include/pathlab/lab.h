@@ -1,0 +1,58 @@
+#pragma once
+/// PathLab's student API: everything a lab file uses, and nothing else.
+///
+/// A lab writes one function,
+///
+///     Color pathTrace(const Ray& ray, int depth, PathContext& ctx);
+///
+/// which returns the radiance arriving along `ray` (from the camera, depth 0, or from a surface
+/// the path bounced off, depth > 0). It has at hand:
+///
+///   Types      Color (linear RGB: + - * /, reduceMax, isBlack), Vec3, Vec2, Ray (origin,
+///              direction, kind), RayKind (Camera, Diffuse, Specular), Hit (found, position,
+///              normal, frontFace, material, emitted), Material (Kd, Ks, Kt, Ni, Ke).
+///   Tracing    ctx.trace(ray) -> Hit; ctx.directLight(hit) -> Color (next-event estimation).
+///   Bounces    diffuseRay(hit, u), mirrorRay(ray, hit), refractionRay(ray, hit);
+///              sampleCosineHemisphere(normal, u) underneath diffuseRay.
+///   Randomness ctx.sampler.get1D() -> float in [0,1), ctx.sampler.get2D() -> Vec2.
+///   Parameters ctx.maxDepth (default 3), ctx.continueProb (default 0.1).
+///   Bookkeeping PATHLAB_TODO("lab1.2") marks a step not written yet: it warns once, naming the
+///              file and line, and the program runs on.
+///
+/// The handouts (handouts/01-branching.md ...) explain the estimators each lab builds.
+
+#include "pathlab/color.h"
+#include "pathlab/constants.h"
+#include "pathlab/cosine_hemisphere.h"
+#include "pathlab/hit.h"
+#include "pathlab/material.h"
+#include "pathlab/path_context.h"
+#include "pathlab/ray.h"
+#include "pathlab/sampler.h"
+#include "pathlab/scattering.h"
+#include "pathlab/todo.h"
+#include "pathlab/vec3.h"
+
+// The build compiles the student's labs/ and the reference solutions/ into one viewer, each set
+// with its own PATHLAB_IMPL (student or solution). Declaring the lab namespaces inside an inline
+// namespace of that name makes `namespace pathlab::branching { ... }` in a lab file land in
+// pathlab::student::branching or pathlab::solution::branching, so the two never collide and a
+// lab file needs no macro of its own.
+#ifdef PATHLAB_IMPL
+namespace pathlab {
+inline namespace PATHLAB_IMPL {
+namespace branching {
+Color pathTrace(const Ray& ray, int depth, PathContext& ctx);
+}
+namespace uniform {
+Color pathTrace(const Ray& ray, int depth, PathContext& ctx);
+}
+namespace importance {
+Color pathTrace(const Ray& ray, int depth, PathContext& ctx);
+}
+namespace roulette {
+Color pathTrace(const Ray& ray, int depth, PathContext& ctx);
+}
+} // namespace PATHLAB_IMPL
+} // namespace pathlab
+#endif

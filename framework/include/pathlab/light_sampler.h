@@ -1,0 +1,48 @@
+#pragma once
+/// Picks a light for next-event estimation in proportion to its power, in constant time.
+
+#include "pathlab/color.h"
+#include "pathlab/scene.h"
+#include "pathlab/vec3.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace pathlab {
+
+/// One light of the scene: a point light or an emissive triangle.
+struct LightSource {
+    enum class Type { Point, Triangle } type;
+    uint32_t index; ///< into Scene::pointLights, or the triangle index
+};
+
+/// Walker's alias method over the lights' powers: one table lookup and one comparison per pick.
+class LightSampler {
+public:
+    explicit LightSampler(const Scene& scene);
+
+    bool empty() const { return lights_.empty(); }
+    size_t size() const { return lights_.size(); }
+
+    /// A light chosen with probability proportional to its power (u, v uniform in [0,1)).
+    /// `pmf` is that probability.
+    const LightSource& pick(float u, float v, float& pmf) const {
+        const size_t slot = std::min(static_cast<size_t>(u * lights_.size()), lights_.size() - 1);
+        const size_t chosen = v < threshold_[slot] ? slot : alias_[slot];
+        pmf = pmf_[chosen];
+        return lights_[chosen];
+    }
+
+    /// The probability pick() returns light i.
+    float pmf(size_t i) const { return pmf_[i]; }
+    const LightSource& light(size_t i) const { return lights_[i]; }
+
+private:
+    std::vector<LightSource> lights_;
+    std::vector<float> pmf_;
+    std::vector<float> threshold_;
+    std::vector<uint32_t> alias_;
+};
+
+} // namespace pathlab

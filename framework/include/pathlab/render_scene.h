@@ -1,0 +1,40 @@
+#pragma once
+/// The scene ready to trace: Embree's acceleration structure, the triangles' data and the lights.
+
+#include "pathlab/hit.h"
+#include "pathlab/light_sampler.h"
+#include "pathlab/ray.h"
+#include "pathlab/scene.h"
+
+#include <memory>
+
+namespace pathlab {
+
+/// Owns the Embree device and scene built from a Scene. Tracing is thread-safe.
+class RenderScene {
+public:
+    explicit RenderScene(Scene scene);
+    ~RenderScene();
+    RenderScene(const RenderScene&) = delete;
+    RenderScene& operator=(const RenderScene&) = delete;
+
+    /// The closest surface along `ray`.
+    Hit intersect(const Ray& ray) const;
+    /// Whether anything lies between `from` and `to` (both excluded).
+    bool occluded(const Vec3& from, const Vec3& to) const;
+
+    const Scene& scene() const { return scene_; }
+    const LightSampler& lights() const { return lights_; }
+
+private:
+    struct Embree;
+    Scene scene_;
+    LightSampler lights_;
+    std::unique_ptr<Embree> embree_;
+};
+
+/// A point just off the surface at `hit`, on the side `direction` leaves by, so a ray started
+/// there does not find the surface it left again.
+Vec3 offsetRayOrigin(const Hit& hit, const Vec3& direction);
+
+} // namespace pathlab

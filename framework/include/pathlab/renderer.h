@@ -1,0 +1,44 @@
+#pragma once
+/// The tile-parallel render loop: camera rays in, pathTrace per sample, sums into the buffer.
+
+#include "pathlab/accumulation_buffer.h"
+#include "pathlab/camera.h"
+#include "pathlab/lab_parameters.h"
+#include "pathlab/lab_registry.h"
+#include "pathlab/ray_counters.h"
+#include "pathlab/render_scene.h"
+
+#include <cstdint>
+#include <memory>
+
+namespace pathlab {
+
+/// Renders passes of samples into an AccumulationBuffer with TBB over square tiles. Each sample
+/// draws its random numbers from a stream keyed by (seed, pixel, sample index), so the image does
+/// not depend on the number of threads or the order tiles run in.
+class Renderer {
+public:
+    /// `threads` = 0 uses every core.
+    Renderer(const RenderScene& scene, int threads);
+    ~Renderer();
+
+    /// Adds `spp` samples to every pixel of `buffer`, traced with `pathTrace`.
+    void renderPass(AccumulationBuffer& buffer, const Camera& camera, PathTraceFunction pathTrace,
+                    const LabParameters& parameters, uint64_t seed, int spp);
+
+    /// Rays traced by all passes since construction (or the last resetRayCounters()).
+    RayCounters rayCounters() const { return counters_; }
+    void resetRayCounters() { counters_ = {}; }
+    int threads() const { return threads_; }
+
+    static constexpr int TileSize = 16; ///< pixels per tile side
+
+private:
+    struct Arena;
+    const RenderScene& scene_;
+    int threads_;
+    std::unique_ptr<Arena> arena_;
+    RayCounters counters_;
+};
+
+} // namespace pathlab

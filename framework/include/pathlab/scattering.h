@@ -1,0 +1,22 @@
+#pragma once
+/// The three rays a surface can send on: diffuse, mirror and refracted.
+
+#include "pathlab/hit.h"
+#include "pathlab/ray.h"
+#include "pathlab/vec3.h"
+
+namespace pathlab {
+
+/// A cosine-weighted diffuse bounce from `hit`, on the side the incoming ray came from.
+/// Its contribution is weighted by Kd alone: cos θ / π of the integrand cancels against the
+/// pdf cos θ / π (handout 01).
+Ray diffuseRay(const Hit& hit, Vec2 u);
+
+/// The perfect mirror reflection of `ray` at `hit`.
+Ray mirrorRay(const Ray& ray, const Hit& hit);
+
+/// The refraction of `ray` into (or out of) the surface at `hit`, using the material's Ni;
+/// under total internal reflection it is the mirror ray instead, so no energy is lost.
+Ray refractionRay(const Ray& ray, const Hit& hit);
+
+} // namespace pathlab

@@ -1,0 +1,27 @@
+#include "pathlab/camera.h"
+
+#include "pathlab/constants.h"
+
+#include <cmath>
+
+namespace pathlab {
+
+Camera::Camera(const CameraSettings& settings, int width, int height) : settings_(settings) {
+    forward_ = normalize(settings.lookAt - settings.position);
+    // cross(forward, up) rather than cross(up, forward): with +y up and +z forward, +x lands on
+    // the image's left, which is how Embree's tutorials (and its cornell_box.ecs) see the scene.
+    right_ = normalize(cross(forward_, settings.up));
+    up_ = cross(right_, forward_);
+    halfHeight_ = std::tan(0.5f * settings.fovDegrees * Pi / 180.0f);
+    halfWidth_ = halfHeight_ * static_cast<float>(width) / static_cast<float>(height);
+    invWidth_ = 1.0f / static_cast<float>(width);
+    invHeight_ = 1.0f / static_cast<float>(height);
+}
+
+Ray Camera::generateRay(float x, float y) const {
+    const float sx = (2.0f * x * invWidth_ - 1.0f) * halfWidth_;
+    const float sy = (1.0f - 2.0f * y * invHeight_) * halfHeight_;
+    return {settings_.position, normalize(forward_ + right_ * sx + up_ * sy), RayKind::Camera};
+}
+
+} // namespace pathlab

@@ -1,0 +1,260 @@
+#include "pathlab/render_options.h"
+
+#include "pathlab/input_error.h"
+#include "pathlab/obj_loader.h"
+#include "pathlab/scene_script.h"
+
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+
+namespace pathlab {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Walks the tokens, expanding -c files in place, and reports errors where a token came from.
+class OptionReader {
+public:
+    explicit OptionReader(std::vector<Token> tokens) : tokens_(std::move(tokens)) {}
+
+    bool done() const { return next_ >= tokens_.size(); }
+    const Token& take() { return tokens_[next_++]; }
+
+    /// Inserts a scene script's tokens right after the -c that named it.
+    void includeScript(const std::string& path, int depth) {
+        if (depth > 8) fail(current(), "scene scripts include each other more than 8 deep");
+        std::vector<Token> script = readSceneScript(path);
+        tokens_.insert(tokens_.begin() + static_cast<std::ptrdiff_t>(next_), script.begin(),
+                       script.end());
+    }
+
+    /// The value after the current option, or an error naming the option.
+    const Token& value(const Token& option, const char* what) {
+        // In a scene script an option's values sit on its line, so a short one is caught there.
+        const bool missing = done() || (!option.file.empty() &&
+                                        (tokens_[next_].line != option.line ||
+                                         tokens_[next_].file != option.file));
+        if (missing)
+            fail(option, "option " + option.text + " needs " + what);
+        return take();
+    }
+
+    float number(const Token& option, const char* what = "a number") {
+        const Token& t = value(option, what);
+        float v = 0;
+        const char* end = t.text.data() + t.text.size();
+        auto [ptr, ec] = std::from_chars(t.text.data(), end, v);
+        if (ec != std::errc() || ptr != end || !std::isfinite(v))
+            fail(option, "option " + option.text + " expects " + what + ", got '" + t.text + "'");
+        return v;
+    }
+
+    long long integer(const Token& option, const char* what = "an integer") {
+        const Token& t = value(option, what);
+        long long v = 0;
+        const char* end = t.text.data() + t.text.size();
+        auto [ptr, ec] = std::from_chars(t.text.data(), end, v);
+        if (ec != std::errc() || ptr != end)
+            fail(option, "option " + option.text + " expects " + what + ", got '" + t.text + "'");
+        return v;
+    }
+
+    Vec3 vec3(const Token& option) {
+        const float x = number(option, "three numbers x y z");
+        const float y = number(option, "three numbers x y z");
+        const float z = number(option, "three numbers x y z");
+        return {x, y, z};
+    }
+
+    /// A path given after `option`: relative to the scene script that gave it, or as typed.
+    std::string path(const Token& option) {
+        const Token& t = value(option, "a file name");
+        if (t.file.empty() || fs::path(t.text).is_absolute()) return t.text;
+        return (fs::path(t.file).parent_path() / t.text).lexically_normal().string();
+    }
+
+    [[noreturn]] static void fail(const Token& where, const std::string& message) {
+        if (where.file.empty()) throw InputError(message);
+        throw inputErrorAt(where.file, where.line, message);
+    }
+
+    const Token& current() const { return tokens_[next_ - 1]; }
+
+private:
+    std::vector<Token> tokens_;
+    size_t next_ = 0;
+};
+
+/// "--max-depth", "-max-depth" -> "max-depth": Embree's scene scripts use one dash, GNU style two.
+std::string optionName(const std::string& text) {
+    if (text.size() >= 2 && text[0] == '-' && text[1] == '-') return text.substr(2);
+    if (text.size() >= 2 && text[0] == '-') return text.substr(1);
+    return {};
+}
+
+int positive(OptionReader& in, const Token& option, const char* what, long long max) {
+    const long long v = in.integer(option, what);
+    if (v < 1 || v > max)
+        OptionReader::fail(option, "option " + option.text + " expects " + what + " (1.." +
+                                       std::to_string(max) + "), got " + std::to_string(v));
+    return static_cast<int>(v);
+}
+
+} // namespace
+
+RenderOptions parseRenderOptions(int argc, const char* const* argv) {
+    RenderOptions o;
+    OptionReader in(commandLineTokens(argc, argv));
+    int scriptDepth = 0;
+    using Handler = std::function<void(const Token&)>;
+    const std::map<std::string, Handler> handlers = {
+        {"c",
+         [&](const Token& t) {
+             const std::string path = in.path(t);
+             if (o.sceneName.empty()) o.sceneName = fs::path(path).stem().string();
+             in.includeScript(path, ++scriptDepth);
+         }},
+        {"i",
+         [&](const Token& t) {
+             const std::string path = in.path(t);
+             if (o.sceneName.empty()) o.sceneName = fs::path(path).stem().string();
+             o.objFiles.push_back(path);
+         }},
+        {"vp", [&](const Token& t) { o.camera.position = in.vec3(t), o.cameraSet = true; }},
+        {"vi", [&](const Token& t) { o.camera.lookAt = in.vec3(t), o.cameraSet = true; }},
+        {"vu", [&](const Token& t) { o.camera.up = in.vec3(t), o.cameraSet = true; }},
+        {"fov",
+         [&](const Token& t) {
+             const float fov = in.number(t, "an angle in degrees");
+             if (!(fov > 0 && fov < 180))
+                 OptionReader::fail(t, "option " + t.text + " expects an angle in (0, 180) degrees");
+             o.camera.fovDegrees = fov, o.cameraSet = true;
+         }},
+        {"pointlight",
+         [&](const Token& t) {
+             PointLight light;
+             light.position = in.vec3(t);
+             const Vec3 i = in.vec3(t);
+             if (i.x < 0 || i.y < 0 || i.z < 0)
+                 OptionReader::fail(t, "option " + t.text + ": a light intensity cannot be negative");
+             light.intensity = {i.x, i.y, i.z};
+             o.pointLights.push_back(light);
+         }},
+        {"size",
+         [&](const Token& t) {
+             o.width = positive(in, t, "a width in pixels", 16384);
+             o.height = positive(in, t, "a height in pixels", 16384);
+         }},
+        {"lab",
+         [&](const Token& t) {
+             const Token& name = in.value(t, "a lab name");
+             const std::optional<Lab> lab = labFromName(name.text);
+             if (!lab)
+                 OptionReader::fail(t, "option --lab expects branching, uniform, importance or "
+                                       "roulette, got '" + name.text + "'");
+             o.lab = *lab;
+         }},
+        {"solution", [&](const Token&) { o.implementation = Implementation::Solution; }},
+        {"student", [&](const Token&) { o.implementation = Implementation::Student; }},
+        {"max-depth",
+         [&](const Token& t) {
+             const long long d = in.integer(t, "a depth (0 or more)");
+             if (d < 0 || d > 1000)
+                 OptionReader::fail(t, "option " + t.text + " expects a depth from 0 to 1000, got " +
+                                           std::to_string(d));
+             o.parameters.maxDepth = static_cast<int>(d);
+         }},
+        {"continue-prob",
+         [&](const Token& t) {
+             const float p = in.number(t, "a probability");
+             if (!(p > 0 && p < 1))
+                 OptionReader::fail(t, "option " + t.text +
+                                           " expects a probability strictly between 0 and 1 "
+                                           "(0 never continues, 1 never ends), got " + std::to_string(p));
+             o.parameters.continueProb = p;
+         }},
+        {"seed",
+         [&](const Token& t) {
+             const long long s = in.integer(t, "a seed (0 or more)");
+             if (s < 0) OptionReader::fail(t, "option " + t.text + " expects a seed of 0 or more");
+             o.seed = static_cast<uint64_t>(s);
+         }},
+        {"threads", [&](const Token& t) { o.threads = positive(in, t, "a thread count", 1024); }},
+        {"o", [&](const Token& t) { o.outputImage = in.value(t, "an image file name").text; }},
+        {"spp", [&](const Token& t) { o.spp = positive(in, t, "samples per pixel", 1 << 24); }},
+        {"stats", [&](const Token& t) { o.statsFile = in.value(t, "a .json file name").text; }},
+        {"spp-per-frame",
+         [&](const Token& t) { o.sppPerFrame = positive(in, t, "samples per pixel", 4096); }},
+        {"print-frame-rate", [&](const Token&) { o.printFrameRate = true; }},
+        {"frames", [&](const Token& t) { o.frames = positive(in, t, "a frame count", 1 << 24); }},
+        {"screenshot",
+         [&](const Token& t) { o.screenshot = in.value(t, "an image file name").text; }},
+        {"reference",
+         [&](const Token& t) { o.referenceImage = in.value(t, "an image file name").text; }},
+        {"help", [&](const Token&) { o.help = true; }},
+        {"h", [&](const Token&) { o.help = true; }},
+    };
+
+    while (!in.done()) {
+        const Token& token = in.take();
+        const auto handler = handlers.find(optionName(token.text));
+        if (handler == handlers.end()) {
+            const std::string what = optionName(token.text).empty() ? "unexpected argument '"
+                                                                    : "unknown option '";
+            OptionReader::fail(token, what + token.text + "' (viewer --help lists the options)");
+        }
+        const Token option = token; // `token` may move when a -c script is inserted
+        handler->second(option);
+    }
+    if (!o.screenshot.empty() && o.frames == 0) o.frames = 16;
+    return o;
+}
+
+Scene loadScene(const RenderOptions& options) {
+    if (options.objFiles.empty())
+        throw InputError("no scene given: use -c FILE.ecs or -i FILE.obj");
+    Scene scene;
+    for (const std::string& obj : options.objFiles) loadObj(obj, scene);
+    for (const PointLight& light : options.pointLights) scene.pointLights.push_back(light);
+    if (options.cameraSet) scene.camera = options.camera;
+    return scene;
+}
+
+const char* renderOptionsHelp() {
+    return R"(usage: viewer -c SCENE.ecs [options]
+
+scene
+  -c FILE.ecs            read options from an Embree scene script (paths relative to it)
+  -i FILE.obj            add an OBJ mesh (and the .mtl files it names)
+  --vp X Y Z --vi X Y Z --vu X Y Z --fov DEG
+                         camera position, look-at point, up vector, vertical field of view
+  --pointlight X Y Z R G B
+                         a point light at (X,Y,Z) with intensity (R,G,B) in W/sr
+  --size W H             image size in pixels (default 512 512)
+estimator
+  --lab NAME             branching | uniform | importance | roulette (default branching)
+  --solution             run the reference solution instead of your labs/ code
+  --max-depth N          labs 1-3: bounces after the primary hit (default 3)
+  --continue-prob P      lab 4: Russian-roulette continuation probability, 0<P<1 (default 0.1)
+  --seed S               random seed (default 0); the image depends only on it
+  --threads N            worker threads (default: all cores)
+headless
+  -o FILE                render --spp samples per pixel and write FILE (.exr .pfm .hdr: linear
+                         radiance; .png: sRGB, clamped), no window
+  --spp N                samples per pixel for -o (default 16)
+  --stats FILE.json      write what was measured (time, rays, mean radiance)
+window
+  --spp-per-frame N      samples per pixel added each frame (default 1)
+  --print-frame-rate     print frame rate, spp and rays/s every frame
+  --frames N --screenshot FILE
+                         run N frames, save the image (FILE and its .exr), quit
+  --reference FILE.exr   image for the difference view
+Single-dash spellings (-vp, -size, ...) work too, as in .ecs files.
+)";
+}
+
+} // namespace pathlab

@@ -1,0 +1,151 @@
+#include "pathlab/render_scene.h"
+
+#include "pathlab/embree_api.h"
+#include "pathlab/input_error.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace pathlab {
+
+namespace {
+
+void reportEmbreeError(void*, RTCError code, const char* message) {
+    if (code != RTC_ERROR_NONE)
+        throw std::runtime_error(std::string("Embree error: ") + (message ? message : "unknown"));
+}
+
+} // namespace
+
+struct RenderScene::Embree {
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+    ~Embree() {
+        if (scene) rtcReleaseScene(scene);
+        if (device) rtcReleaseDevice(device);
+    }
+};
+
+RenderScene::RenderScene(Scene scene)
+    : scene_(std::move(scene)), lights_(scene_), embree_(std::make_unique<Embree>()) {
+    if (scene_.triangles.empty()) throw InputError("the scene has no triangles to render");
+    embree_->device = rtcNewDevice(nullptr);
+    if (!embree_->device) throw std::runtime_error("Embree could not create a device");
+    rtcSetDeviceErrorFunction(embree_->device, reportEmbreeError, nullptr);
+
+    embree_->scene = rtcNewScene(embree_->device);
+    // Robust traversal: no ray slips through the shared edge of two triangles, which in a closed
+    // furnace would let a path escape and darken the image.
+    rtcSetSceneFlags(embree_->scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(embree_->scene, RTC_BUILD_QUALITY_HIGH);
+
+    RTCGeometry mesh = rtcNewGeometry(embree_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Embree reads vertex buffers with 16-byte loads, so the buffer it allocates is padded; ours
+    // (Vec3 arrays) are copied in rather than shared.
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+        mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+        scene_.positions.size()));
+    for (size_t i = 0; i < scene_.positions.size(); ++i) {
+        vertices[3 * i + 0] = scene_.positions[i].x;
+        vertices[3 * i + 1] = scene_.positions[i].y;
+        vertices[3 * i + 2] = scene_.positions[i].z;
+    }
+    auto* indices = static_cast<uint32_t*>(
+        rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(uint32_t), scene_.triangles.size()));
+    for (size_t i = 0; i < scene_.triangles.size(); ++i)
+        for (int k = 0; k < 3; ++k) indices[3 * i + k] = scene_.triangles[i][k];
+    rtcCommitGeometry(mesh);
+    rtcAttachGeometry(embree_->scene, mesh);
+    rtcReleaseGeometry(mesh);
+    rtcCommitScene(embree_->scene);
+}
+
+RenderScene::~RenderScene() = default;
+
+Hit RenderScene::intersect(const Ray& ray) const {
+    RTCRayHit rayHit;
+    rayHit.ray.org_x = ray.origin.x;
+    rayHit.ray.org_y = ray.origin.y;
+    rayHit.ray.org_z = ray.origin.z;
+    rayHit.ray.dir_x = ray.direction.x;
+    rayHit.ray.dir_y = ray.direction.y;
+    rayHit.ray.dir_z = ray.direction.z;
+    rayHit.ray.tnear = 0.0f;
+    rayHit.ray.tfar = std::numeric_limits<float>::infinity();
+    rayHit.ray.time = 0.0f;
+    rayHit.ray.mask = 0xFFFFFFFFu;
+    rayHit.ray.id = 0;
+    rayHit.ray.flags = 0;
+    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    embree::intersect1(embree_->scene, rayHit, ray.kind == RayKind::Camera);
+
+    Hit hit;
+    if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
+    const uint32_t prim = rayHit.hit.primID;
+    const auto& tri = scene_.triangles[prim];
+    const Vec3& a = scene_.positions[tri[0]];
+    const Vec3& b = scene_.positions[tri[1]];
+    const Vec3& c = scene_.positions[tri[2]];
+    const float u = rayHit.hit.u, v = rayHit.hit.v, w = 1.0f - u - v;
+
+    hit.found = true;
+    hit.distance = rayHit.ray.tfar;
+    // From the barycentrics rather than origin + t·direction: exactly on the triangle's plane
+    // up to rounding, whatever the distance travelled.
+    hit.position = a * w + b * u + c * v;
+    // Our own counter-clockwise normal, not Embree's Ng, whose orientation convention differs
+    // between versions and builds.
+    Vec3 geometric = normalize(cross(b - a, c - a));
+    hit.frontFace = dot(geometric, ray.direction) < 0;
+    const float side = hit.frontFace ? 1.0f : -1.0f;
+    hit.geometricNormal = geometric * side;
+
+    const Vec3 na = scene_.vertexNormals[tri[0]];
+    const Vec3 nb = scene_.vertexNormals[tri[1]];
+    const Vec3 nc = scene_.vertexNormals[tri[2]];
+    Vec3 shading = na * w + nb * u + nc * v;
+    if (dot(shading, shading) > 0) {
+        shading = normalize(shading);
+        // Keep the shading normal on the geometric normal's side so both face the ray together.
+        if (dot(shading, geometric) < 0) shading = -shading;
+        hit.normal = shading * side;
+    } else {
+        hit.normal = hit.geometricNormal;
+    }
+
+    hit.material = scene_.materials[scene_.triangleMaterials[prim]];
+    if (hit.frontFace) hit.emitted = hit.material.Ke;
+    return hit;
+}
+
+bool RenderScene::occluded(const Vec3& from, const Vec3& to) const {
+    const Vec3 d = to - from;
+    RTCRay ray;
+    ray.org_x = from.x;
+    ray.org_y = from.y;
+    ray.org_z = from.z;
+    ray.dir_x = d.x;
+    ray.dir_y = d.y;
+    ray.dir_z = d.z;
+    ray.tnear = 0.0f;
+    // Stop just short of the light's own surface (the direction is not normalised: t = 1 is it).
+    ray.tfar = 1.0f - 1e-4f;
+    ray.time = 0.0f;
+    ray.mask = 0xFFFFFFFFu;
+    ray.id = 0;
+    ray.flags = 0;
+    return embree::occluded1(embree_->scene, ray);
+}
+
+Vec3 offsetRayOrigin(const Hit& hit, const Vec3& direction) {
+    // Float positions carry a relative error near 1e-7; a step of a few hundred ulps along the
+    // geometric normal clears it at any scene scale.
+    const float epsilon = 2e-5f * (1.0f + maxAbsComponent(hit.position));
+    const float side = dot(direction, hit.geometricNormal) >= 0 ? 1.0f : -1.0f;
+    return hit.position + hit.geometricNormal * (side * epsilon);
+}
+
+} // namespace pathlab

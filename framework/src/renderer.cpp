@@ -1,0 +1,79 @@
+#include "pathlab/renderer.h"
+
+#include "pathlab/path_context.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <atomic>
+#include <thread>
+
+namespace pathlab {
+
+struct Renderer::Arena {
+    tbb::task_arena arena;
+    explicit Arena(int threads) : arena(threads) {}
+};
+
+namespace {
+
+/// pathTrace recurses once per bounce; Russian roulette with a high continueProb in a bright
+/// furnace can go hundreds deep, more than TBB's default worker stack allows.
+void ensureDeepStacks() {
+    static tbb::global_control stack(tbb::global_control::thread_stack_size, 16u << 20);
+}
+
+} // namespace
+
+Renderer::Renderer(const RenderScene& scene, int threads)
+    : scene_(scene),
+      threads_(threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))),
+      arena_(std::make_unique<Arena>(threads_)) {
+    ensureDeepStacks();
+}
+
+Renderer::~Renderer() = default;
+
+void Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
+                          PathTraceFunction pathTrace, const LabParameters& parameters,
+                          uint64_t seed, int spp) {
+    const int width = buffer.width(), height = buffer.height();
+    const int tilesX = (width + TileSize - 1) / TileSize;
+    const int tilesY = (height + TileSize - 1) / TileSize;
+    const uint64_t firstSample = static_cast<uint64_t>(buffer.samplesPerPixel());
+    std::atomic<uint64_t> intersect{0}, occluded{0};
+
+    arena_->arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY, 1),
+                          [&](const tbb::blocked_range<int>& tiles) {
+            for (int tile = tiles.begin(); tile != tiles.end(); ++tile) {
+                PathContext ctx(scene_, parameters);
+                const int x0 = (tile % tilesX) * TileSize, y0 = (tile / tilesX) * TileSize;
+                const int x1 = std::min(x0 + TileSize, width), y1 = std::min(y0 + TileSize, height);
+                for (int y = y0; y < y1; ++y) {
+                    for (int x = x0; x < x1; ++x) {
+                        const int pixel = y * width + x;
+                        for (int s = 0; s < spp; ++s) {
+                            ctx.sampler.startSample(seed, static_cast<uint64_t>(pixel),
+                                                    firstSample + static_cast<uint64_t>(s));
+                            const Vec2 jitter = ctx.sampler.get2D();
+                            const Ray ray = camera.generateRay(static_cast<float>(x) + jitter.x,
+                                                               static_cast<float>(y) + jitter.y);
+                            buffer.addSample(pixel, pathTrace(ray, 0, ctx));
+                        }
+                    }
+                }
+                // Counted per tile in the context, summed here once: nothing shared per ray.
+                intersect.fetch_add(ctx.rayCounters().intersect, std::memory_order_relaxed);
+                occluded.fetch_add(ctx.rayCounters().occluded, std::memory_order_relaxed);
+            }
+        });
+    });
+    buffer.finishPass(spp);
+    counters_ += RayCounters{intersect.load(), occluded.load()};
+}
+
+} // namespace pathlab

@@ -1,0 +1,28 @@
+#include "pathlab/scattering.h"
+
+#include "pathlab/cosine_hemisphere.h"
+#include "pathlab/render_scene.h"
+#include "pathlab/specular.h"
+
+namespace pathlab {
+
+Ray diffuseRay(const Hit& hit, Vec2 u) {
+    const Vec3 direction = sampleCosineHemisphere(hit.normal, u);
+    return {offsetRayOrigin(hit, direction), direction, RayKind::Diffuse};
+}
+
+Ray mirrorRay(const Ray& ray, const Hit& hit) {
+    const Vec3 direction = normalize(reflect(ray.direction, hit.normal));
+    return {offsetRayOrigin(hit, direction), direction, RayKind::Specular};
+}
+
+Ray refractionRay(const Ray& ray, const Hit& hit) {
+    // hit.normal faces the incoming side: entering through the front face goes from air (1) into
+    // the material (Ni), leaving through the back goes from Ni into air.
+    const float eta = hit.frontFace ? 1.0f / hit.material.Ni : hit.material.Ni;
+    const std::optional<Vec3> transmitted = refract(ray.direction, hit.normal, eta);
+    if (!transmitted) return mirrorRay(ray, hit);
+    return {offsetRayOrigin(hit, *transmitted), *transmitted, RayKind::Specular};
+}
+
+} // namespace pathlab
