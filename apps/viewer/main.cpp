@@ -50,6 +50,8 @@ int main(int argc, char** argv) {
             std::fputs(renderOptionsHelp(), stdout);
             return 0;
         }
+        if (options.objFiles.empty())
+            throw InputError("no scene given: use -c FILE.ecs or -i FILE.obj (viewer --help)");
         checkOutputs(options);
         if (!options.outputImage.empty()) return renderToFile(options);
         return runViewerWindow(options);

@@ -25,6 +25,11 @@ struct OrthonormalBasis {
     Vec3 toWorld(const Vec3& local) const {
         return tangent * local.x + bitangent * local.y + normal * local.z;
     }
+
+    /// World space to local (x, y, z), z along the normal.
+    Vec3 toLocal(const Vec3& world) const {
+        return {dot(world, tangent), dot(world, bitangent), dot(world, normal)};
+    }
 };
 
 } // namespace pathlab

@@ -1,0 +1,9 @@
+#pragma once
+// Catch2 v2 (Debian 12) and v3 (Ubuntu 24.04, Homebrew) behind one include.
+#if __has_include(<catch2/catch_test_macros.hpp>)
+#include <catch2/catch_approx.hpp>
+#include <catch2/catch_test_macros.hpp>
+using Catch::Approx;
+#else
+#include <catch2/catch.hpp>
+#endif

@@ -1,0 +1,52 @@
+#include "test_support.h"
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace pathlab::test {
+
+std::string modelPath(const std::string& name) { return std::string(PATHLAB_MODELS_DIR) + "/" + name; }
+
+std::string temporaryFolder(const std::string& name) {
+    namespace fs = std::filesystem;
+    const fs::path folder =
+        fs::temp_directory_path() / ("pathlab-test-" + std::to_string(::getpid()) + "-" + name);
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    return folder.string();
+}
+
+HeadlessResult render(const std::vector<std::string>& arguments) {
+    std::vector<const char*> argv = {"viewer"};
+    for (const std::string& a : arguments) argv.push_back(a.c_str());
+    return renderHeadless(parseRenderOptions(static_cast<int>(argv.size()), argv.data()));
+}
+
+Estimate estimateOf(const HeadlessResult& result) {
+    const RenderStats& s = result.stats;
+    const double n = static_cast<double>(s.width) * s.height * s.spp;
+    Estimate e;
+    e.mean = s.meanRadiance;
+    e.standardError = {static_cast<float>(std::sqrt(s.meanVariance.r / n)),
+                       static_cast<float>(std::sqrt(s.meanVariance.g / n)),
+                       static_cast<float>(std::sqrt(s.meanVariance.b / n))};
+    return e;
+}
+
+ProcessResult runViewer(const std::string& arguments) {
+    const std::string command = std::string(PATHLAB_VIEWER) + " " + arguments + " 2>&1";
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (!pipe) return {-1, "popen failed"};
+    std::string output;
+    std::array<char, 4096> buffer;
+    for (size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0;)
+        output.append(buffer.data(), n);
+    const int status = ::pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), output};
+}
+
+} // namespace pathlab::test

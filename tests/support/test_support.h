@@ -1,0 +1,36 @@
+#pragma once
+/// Shared by the tests: where the models are, rendering in-process, running the viewer.
+
+#include "pathlab/headless_render.h"
+
+#include <string>
+#include <vector>
+
+namespace pathlab::test {
+
+/// models/NAME in the source tree.
+std::string modelPath(const std::string& name);
+
+/// A fresh empty folder under the system's temporary folder, for files a test writes.
+std::string temporaryFolder(const std::string& name);
+
+/// Renders in-process with viewer-style arguments, e.g. {"-c", modelPath(...), "--spp", "4"}.
+HeadlessResult render(const std::vector<std::string>& arguments);
+
+/// The image mean and its standard error, averaged over the three channels or per channel:
+/// SE² = mean pixel variance / (pixels × spp), since pixels are independent.
+struct Estimate {
+    Color mean;
+    Color standardError;
+};
+Estimate estimateOf(const HeadlessResult& result);
+
+/// Runs the built viewer with `arguments` (a shell-quoted string); returns its exit status and
+/// what it printed on stdout and stderr together.
+struct ProcessResult {
+    int exitStatus;
+    std::string output;
+};
+ProcessResult runViewer(const std::string& arguments);
+
+} // namespace pathlab::test
