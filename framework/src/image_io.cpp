@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <unistd.h>
 
@@ -29,6 +30,29 @@ std::string temporaryNameFor(const std::string& path) {
     const std::string name = "." + p.stem().string() + ".tmp" + std::to_string(::getpid()) +
                              p.extension().string();
     return (p.parent_path() / name).string();
+}
+
+void moveIntoPlace(const std::string& temporary, const std::string& path) {
+    std::error_code error;
+    fs::rename(temporary, path, error);
+    if (error) {
+        fs::remove(temporary, error);
+        throw InputError(path + ": cannot move the finished image into place");
+    }
+}
+
+/// Portable float map, written by hand only where OpenImageIO has no PFM writer (before 2.5 its
+/// PNM plugin reads PFM but writes 8-bit P6). Little-endian floats (scale -1), rows bottom-up.
+bool writePfm(const std::string& path, int width, int height, const std::vector<float>& rgb) {
+    std::FILE* file = std::fopen(path.c_str(), "wb");
+    if (!file) return false;
+    std::fprintf(file, "PF\n%d %d\n-1.0\n", width, height);
+    static_assert(sizeof(float) == 4, "PFM stores 32-bit floats");
+    bool ok = true;
+    for (int y = height - 1; y >= 0 && ok; --y)
+        ok = std::fwrite(&rgb[3 * static_cast<size_t>(y) * width], sizeof(float),
+                         3 * static_cast<size_t>(width), file) == 3 * static_cast<size_t>(width);
+    return std::fclose(file) == 0 && ok;
 }
 
 } // namespace
@@ -58,6 +82,15 @@ void writeImage(const std::string& path, int width, int height, const std::vecto
     checkImageOutputPath(path);
     const std::string temporary = temporaryNameFor(path);
     auto out = OIIO::ImageOutput::create(temporary);
+    if (!out && lowerExtension(path) == ".pfm") {
+        if (!writePfm(temporary, width, height, rgb)) {
+            std::error_code ignored;
+            fs::remove(temporary, ignored);
+            throw InputError(path + ": cannot write the image");
+        }
+        moveIntoPlace(temporary, path);
+        return;
+    }
     if (!out) throw InputError(path + ": OpenImageIO cannot write this format");
 
     const bool png = lowerExtension(path) == ".png";
@@ -82,12 +115,7 @@ void writeImage(const std::string& path, int width, int height, const std::vecto
         fs::remove(temporary, ignored);
         throw InputError(path + ": cannot write the image: " + why);
     }
-    std::error_code error;
-    fs::rename(temporary, path, error);
-    if (error) {
-        fs::remove(temporary, error);
-        throw InputError(path + ": cannot move the finished image into place");
-    }
+    moveIntoPlace(temporary, path);
 }
 
 Image readImage(const std::string& path) {

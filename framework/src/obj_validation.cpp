@@ -108,10 +108,8 @@ std::vector<std::string> validateMtl(const std::string& mtlPath) {
         } else if (key == "Kd" || key == "Ks" || key == "Kt" || key == "Tf" || key == "Ke") {
             if (materials.empty())
                 throw inputErrorAt(mtlPath, line.number, "'" + key + "' comes before any 'newmtl'");
-            std::vector<float> c = numbers(mtlPath, line, 1, 3);
-            if (c.size() == 2)
-                throw inputErrorAt(mtlPath, line.number, "'" + key + "' expects 1 or 3 numbers");
-            if (c.size() == 1) c = {c[0], c[0], c[0]};
+            // Three numbers, r g b: tinyobjloader would read a lone "Kd 0.5" as (0.5, 0, 0).
+            const std::vector<float> c = numbers(mtlPath, line, 3, 3);
             if (*std::min_element(c.begin(), c.end()) < 0)
                 throw inputErrorAt(mtlPath, line.number, "'" + key + "' cannot be negative");
             Energy& m = materials.back();

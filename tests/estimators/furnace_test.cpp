@@ -10,8 +10,12 @@
 // from depths below maxDepth, and add no emission (next-event estimation counted it). So
 //     L_maxDepth = Le + Σ_{d=0}^{maxDepth} a^(d+1)·Le = Le·Σ_{k=0}^{maxDepth+1} a^k
 //                = Le·(1 − a^(maxDepth+2)) / (1 − a).
-// Russian roulette is unbiased: Le / (1 − a). Its variance is finite only when a²/continueProb
-// < 1 (each continuation multiplies the second moment by a²/q), hence q = 0.5 or 0.9 here.
+// Russian roulette is unbiased: Le / (1 − a). Its variance is finite only when each cycle of
+// continuations shrinks the second moment: a diffuse continuation multiplies it by a²/q, a
+// specular one (weight 1) by 1/q. In the plain furnace q = 0.5 suffices (a²/q = 0.5); a path
+// through the glass sphere takes two specular hits per diffuse one, so there q = 0.9
+// (0.25/0.9 · 1.23 ≈ 0.35 per cycle). At q = 0.5 the glass furnace's sample mean sits 2% low
+// with an underestimated standard error: the signature of a heavy tail, not of a bias.
 //
 // The enclosure is a tessellated sphere: on it, next-event estimation has almost no variance,
 // and the answer holds exactly for any closed polyhedron.
@@ -78,8 +82,8 @@ TEST_CASE("lab 4 Russian roulette: furnace at Le/(1-a), z-test alpha 1e-5", "[la
 
 TEST_CASE("lab 4 Russian roulette: a mirror or glass sphere in the furnace changes nothing",
           "[lab4]") {
-    expectFurnace("furnace_mirror.ecs", Lab::Roulette, 2.0, {"--continue-prob", "0.5"});
-    expectFurnace("furnace_glass.ecs", Lab::Roulette, 2.0, {"--continue-prob", "0.5"});
+    expectFurnace("furnace_mirror.ecs", Lab::Roulette, 2.0, {"--continue-prob", "0.9"});
+    expectFurnace("furnace_glass.ecs", Lab::Roulette, 2.0, {"--continue-prob", "0.9"});
 }
 
 TEST_CASE("the furnace test catches a wrong estimator (the test can fail)", "[lab1]") {

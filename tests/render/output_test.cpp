@@ -22,7 +22,8 @@ TEST_CASE("EXR, PFM and HDR keep linear radiance; PNG is sRGB-encoded and clampe
         REQUIRE(back.width == 2);
         REQUIRE(back.height == 1);
         for (size_t i = 0; i < rgb.size(); ++i)
-            CHECK(back.rgb[i] == Approx(rgb[i]).epsilon(0.01).margin(1e-3)); // .hdr is RGBE
+            // .hdr is RGBE: 8 bits of mantissa shared by the pixel, so up to max/256 off.
+            CHECK(back.rgb[i] == Approx(rgb[i]).epsilon(0.01).margin(0.008));
     }
     writeImage(dir + "/image.png", 2, 1, rgb);
     const Image png = readImage(dir + "/image.png"); // decoded back to linear

@@ -69,6 +69,7 @@ TEST_CASE("malformed MTL lines are named by file and line", "[scene][bad-input]"
     expectRejected("m.mtl", "Kd 1 1 1\nnewmtl white\n", "m.mtl:1: 'Kd' comes before any 'newmtl'");
     expectRejected("m.mtl", "newmtl white\nKd -1 0 0\n", "m.mtl:2: 'Kd' cannot be negative");
     expectRejected("m.mtl", "newmtl white\nshininess 4\n", "m.mtl:2: unknown material keyword");
+    expectRejected("m.mtl", "newmtl white\nKd 0.5\n", "m.mtl:2: 'Kd' expects 3 numbers, found 1");
 }
 
 TEST_CASE("malformed scene scripts are named by file and line", "[scene][bad-input]") {

@@ -87,7 +87,7 @@ TEST_CASE("OBJ features: quads, negative indices, normals, Kt/Tf, Ni, Ke, defaul
           "[scene]") {
     const std::string dir = test::temporaryFolder("obj-features");
     writeFile(dir + "/m.mtl", "newmtl glass\nKt 0.9 0.8 0.7\nNi 1.33\n"
-                              "newmtl filter\nTf 0.5\n"
+                              "newmtl filter\nTf 0.5 0.5 0.5\n"
                               "newmtl lamp\nKe 2 3 4\n");
     writeFile(dir + "/a.obj", "mtllib m.mtl\n"
                               "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\n"

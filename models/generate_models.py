@@ -1,0 +1,261 @@
+#!/usr/bin/env python3
+"""Writes PathLab's scenes (.obj, .mtl, .ecs) next to this script. Deterministic: running it
+again gives the same files. Run: python3 models/generate_models.py
+
+Conventions the renderer relies on: a triangle's front side is where its vertices run
+counter-clockwise; enclosures (the Cornell box, the furnace spheres) face inward, objects face
+outward; Ke is emitted from the front side only.
+"""
+import math
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+# Cornell box colours (Kd), close to the published reflectances averaged into RGB.
+WHITE = (0.725, 0.71, 0.68)
+RED = (0.63, 0.065, 0.05)
+GREEN = (0.14, 0.45, 0.091)
+
+# Coordinates of Embree's cornell_box.obj (Cornell's measurements, in millimetres).
+FLOOR = [(552.8, 0.0, 0.0), (0.0, 0.0, 0.0), (0.0, 0.0, 559.2), (549.6, 0.0, 559.2)]
+CEILING = [(556.0, 548.8, 0.0), (556.0, 548.8, 559.2), (0.0, 548.8, 559.2), (0.0, 548.8, 0.0)]
+BACK = [(549.6, 0.0, 559.2), (0.0, 0.0, 559.2), (0.0, 548.8, 559.2), (556.0, 548.8, 559.2)]
+GREEN_WALL = [(0.0, 0.0, 559.2), (0.0, 0.0, 0.0), (0.0, 548.8, 0.0), (0.0, 548.8, 559.2)]
+RED_WALL = [(552.8, 0.0, 0.0), (549.6, 0.0, 559.2), (556.0, 548.8, 559.2), (556.0, 548.8, 0.0)]
+BOX_CENTRE = (278.0, 274.4, 279.6)
+TALL_BLOCK = ([(423.0, 247.0), (265.0, 296.0), (314.0, 456.0), (472.0, 406.0)], 330.0)
+SHORT_BLOCK = ([(130.0, 65.0), (82.0, 225.0), (240.0, 272.0), (290.0, 114.0)], 165.0)
+CAMERA = "-vp 278 273 -800\n-vi 278 273 0\n-vu 0 1 0\n-fov 37\n"
+
+
+def sub(a, b):
+    return tuple(x - y for x, y in zip(a, b))
+
+
+def cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def normal_of(a, b, c):
+    return cross(sub(b, a), sub(c, a))
+
+
+class Mesh:
+    """Triangles grouped by material, with optional per-vertex normals."""
+
+    def __init__(self):
+        self.vertices = []
+        self.normals = []
+        self.groups = []  # (name, material, [faces]); a face is [(v, vn or None), ...]
+
+    def vertex(self, p):
+        self.vertices.append(tuple(float(x) for x in p))
+        return len(self.vertices)
+
+    def normal(self, n):
+        self.normals.append(tuple(float(x) for x in n))
+        return len(self.normals)
+
+    def group(self, name, material):
+        self.groups.append((name, material, []))
+        return self.groups[-1][2]
+
+    def polygon(self, faces, points, facing):
+        """A planar convex polygon, turned so its front side faces toward `facing`(point)
+        when `facing` is given as ('toward', p) or away from it as ('away', p)."""
+        mode, p = facing
+        n = normal_of(*points[:3])
+        toward = dot(n, sub(p, points[0])) > 0
+        if toward != (mode == "toward"):
+            points = list(reversed(points))
+        ids = [self.vertex(q) for q in points]
+        for k in range(1, len(ids) - 1):  # a fan: the polygons here are convex
+            faces.append([(ids[0], None), (ids[k], None), (ids[k + 1], None)])
+
+    def sphere(self, faces, centre, radius, segments, rings, outward, smooth):
+        """A UV sphere; triangles at the poles so none has zero area."""
+        def point(ring, seg):
+            theta = math.pi * ring / rings
+            phi = 2 * math.pi * seg / segments
+            return (math.sin(theta) * math.cos(phi), math.cos(theta), math.sin(theta) * math.sin(phi))
+
+        ids = {}
+        for ring in range(rings + 1):
+            for seg in range(segments if 0 < ring < rings else 1):
+                d = point(ring, seg)
+                v = self.vertex(tuple(c + radius * x for c, x in zip(centre, d)))
+                n = self.normal(d if outward else tuple(-x for x in d)) if smooth else None
+                ids[(ring, seg)] = (v, n)
+
+        def at(ring, seg):
+            return ids[(ring, 0)] if ring in (0, rings) else ids[(ring, seg % segments)]
+
+        for ring in range(rings):
+            for seg in range(segments):
+                a, b = at(ring, seg), at(ring, seg + 1)
+                c, d = at(ring + 1, seg), at(ring + 1, seg + 1)
+                tris = []
+                if ring > 0:
+                    tris.append([a, b, d])
+                if ring < rings - 1:
+                    tris.append([a, d, c])
+                for tri in tris:
+                    # Orient by geometry: front side away from (outward) or toward the centre.
+                    p = [self.vertices[v - 1] for v, _ in tri]
+                    away = dot(normal_of(*p), sub(p[0], centre)) > 0
+                    faces.append(tri if away == outward else list(reversed(tri)))
+
+    def write(self, path, mtllib):
+        lines = ["# Written by generate_models.py; edit that script, not this file.",
+                 f"mtllib {mtllib}"]
+        lines += [f"v {x:.6g} {y:.6g} {z:.6g}" for x, y, z in self.vertices]
+        lines += [f"vn {x:.6g} {y:.6g} {z:.6g}" for x, y, z in self.normals]
+        triangles = 0
+        for name, material, faces in self.groups:
+            lines += [f"o {name}", f"usemtl {material}"]
+            for face in faces:
+                lines.append("f " + " ".join(f"{v}//{n}" if n else f"{v}" for v, n in face))
+                triangles += 1
+        with open(path, "w") as f:
+            f.write("\n".join(lines) + "\n")
+        return triangles
+
+
+def write_mtl(path, materials):
+    lines = ["# Written by generate_models.py; edit that script, not this file."]
+    for name, keys in materials:
+        lines.append(f"newmtl {name}")
+        for key, value in keys:
+            if isinstance(value, tuple):
+                lines.append(f"{key} {value[0]:.6g} {value[1]:.6g} {value[2]:.6g}")
+            else:
+                lines.append(f"{key} {value:.6g}")
+        for c in range(3):  # the loader warns otherwise
+            total = sum(v[c] if isinstance(v, tuple) else 0 for k, v in keys if k in ("Kd", "Ks", "Kt"))
+            assert total <= 1.0 + 1e-9, f"{name} is not energy conserving"
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def write_ecs(path, comment, body):
+    with open(path, "w") as f:
+        f.write("# " + comment.replace("\n", "\n# ") + "\n" + body)
+
+
+def check(mesh, name):
+    """Every face index in range, no triangle without area."""
+    for _, _, faces in mesh.groups:
+        for face in faces:
+            for v, n in face:
+                assert 1 <= v <= len(mesh.vertices), name
+                assert n is None or 1 <= n <= len(mesh.normals), name
+            p = [mesh.vertices[v - 1] for v, _ in face]
+            assert dot(normal_of(*p), normal_of(*p)) > 0, f"{name}: zero-area triangle"
+
+
+def box_walls(mesh, floor_material):
+    inside = ("toward", BOX_CENTRE)
+    mesh.polygon(mesh.group("floor", floor_material), FLOOR, inside)
+    mesh.polygon(mesh.group("ceiling", "white"), CEILING, inside)
+    mesh.polygon(mesh.group("back_wall", "white"), BACK, inside)
+    # Seen from Embree's camera (at z = -800 looking down +z), x = 552 is on the image's left.
+    mesh.polygon(mesh.group("red_wall", "red"), RED_WALL, inside)
+    mesh.polygon(mesh.group("green_wall", "green"), GREEN_WALL, inside)
+
+
+def block(mesh, name, material, footprint_and_height):
+    footprint, height = footprint_and_height
+    faces = mesh.group(name, material)
+    centre = (sum(x for x, _ in footprint) / 4, height / 2, sum(z for _, z in footprint) / 4)
+    outside = ("away", centre)
+    mesh.polygon(faces, [(x, height, z) for x, z in footprint], outside)
+    for k in range(4):
+        (x0, z0), (x1, z1) = footprint[k], footprint[(k + 1) % 4]
+        mesh.polygon(faces, [(x0, 0, z0), (x1, 0, z1), (x1, height, z1), (x0, height, z0)], outside)
+
+
+def cornell_box_vi2():
+    mesh = Mesh()
+    box_walls(mesh, "floor")
+    block(mesh, "tall_block", "mirror", TALL_BLOCK)
+    mesh.sphere(mesh.group("glass_sphere", "glass"), (186.0, 82.5, 169.0), 82.5, 48, 24,
+                outward=True, smooth=True)
+    # Just under the ceiling, facing down.
+    light = [(343.0, 548.0, 227.0), (343.0, 548.0, 332.0), (213.0, 548.0, 332.0), (213.0, 548.0, 227.0)]
+    mesh.polygon(mesh.group("light", "light"), light, ("toward", (278.0, 0.0, 279.5)))
+    check(mesh, "VI2")
+    n = mesh.write(os.path.join(HERE, "cornell_box_VI2_Specular.obj"), "cornell_box_VI2_Specular.mtl")
+    write_mtl(os.path.join(HERE, "cornell_box_VI2_Specular.mtl"), [
+        ("white", [("Kd", WHITE)]),
+        ("red", [("Kd", RED)]),
+        ("green", [("Kd", GREEN)]),
+        # A little mirror in the floor, so the branching lab traces two rays there.
+        ("floor", [("Kd", tuple(0.8 * c for c in WHITE)), ("Ks", (0.15, 0.15, 0.15))]),
+        ("mirror", [("Ks", (0.9, 0.9, 0.9))]),
+        ("glass", [("Ks", (0.1, 0.1, 0.1)), ("Kt", (0.9, 0.9, 0.9)), ("Ni", 1.5)]),
+        ("light", [("Ke", (24.0, 18.0, 10.0))]),
+    ])
+    write_ecs(os.path.join(HERE, "cornell_box_VI2_Specular.ecs"),
+              "The Cornell box with a mirror block, a glass sphere and an area light.\n"
+              "Camera of Embree's cornell_box.ecs.",
+              "-i cornell_box_VI2_Specular.obj\n" + CAMERA)
+    return n
+
+
+def cornell_box_diffuse():
+    mesh = Mesh()
+    box_walls(mesh, "white")
+    block(mesh, "tall_block", "white", TALL_BLOCK)
+    block(mesh, "short_block", "white", SHORT_BLOCK)
+    check(mesh, "diffuse")
+    n = mesh.write(os.path.join(HERE, "cornell_box_diffuse.obj"), "cornell_box_diffuse.mtl")
+    write_mtl(os.path.join(HERE, "cornell_box_diffuse.mtl"), [
+        ("white", [("Kd", WHITE)]), ("red", [("Kd", RED)]), ("green", [("Kd", GREEN)])])
+    # The floor straight below the light, 540 mm away, reflects Kd/π·I/r² ≈ 0.72/π·I/291600 of
+    # radiance directly: I = 150000 gives ≈ 0.12 there; with the walls nearer the light and the
+    # interreflections the mean pixel value is about 0.3, far from clipping in a PNG.
+    write_ecs(os.path.join(HERE, "cornell_box_diffuse.ecs"),
+              "The diffuse Cornell box (both blocks), lit by one point light under the ceiling.",
+              "-i cornell_box_diffuse.obj\n" + CAMERA + "-pointlight 278 540 279.5 150000 150000 150000\n")
+    return n
+
+
+def furnace(name, albedo, inner=None):
+    mesh = Mesh()
+    mesh.sphere(mesh.group("enclosure", "wall"), (0.0, 0.0, 0.0), 1.0, 64, 32, outward=False, smooth=False)
+    materials = [("wall", [("Kd", (albedo,) * 3), ("Ke", (1.0, 1.0, 1.0))])]
+    description = f"Furnace: a closed sphere of diffuse albedo {albedo} emitting Le = 1; " \
+                  f"radiance everywhere 1/(1-a) = {1 / (1 - albedo):g}."
+    if inner:
+        material, keys = inner
+        mesh.sphere(mesh.group("inner_sphere", material), (0.0, 0.0, 0.0), 0.3, 32, 16,
+                    outward=True, smooth=False)
+        materials.append((material, keys))
+        description += f"\nInside it a {material} sphere (radius 0.3), which changes nothing."
+    check(mesh, name)
+    n = mesh.write(os.path.join(HERE, name + ".obj"), name + ".mtl")
+    write_mtl(os.path.join(HERE, name + ".mtl"), materials)
+    write_ecs(os.path.join(HERE, name + ".ecs"), description,
+              f"-i {name}.obj\n-vp 0 0 -0.7\n-vi 0 0 0\n-vu 0 1 0\n-fov 90\n")
+    return n
+
+
+def main():
+    counts = {
+        "cornell_box_VI2_Specular": cornell_box_vi2(),
+        "cornell_box_diffuse": cornell_box_diffuse(),
+        "furnace": furnace("furnace", 0.5),
+        "furnace_a08": furnace("furnace_a08", 0.8),
+        "furnace_mirror": furnace("furnace_mirror", 0.5, ("mirror", [("Ks", (1.0, 1.0, 1.0))])),
+        "furnace_glass": furnace("furnace_glass", 0.5, ("glass", [("Kt", (1.0, 1.0, 1.0)), ("Ni", 1.5)])),
+    }
+    for name, triangles in counts.items():
+        print(f"{name}: {triangles} triangles")
+
+
+if __name__ == "__main__":
+    main()
