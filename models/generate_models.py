@@ -197,7 +197,7 @@ def cornell_box_vi2():
         ("floor", [("Kd", tuple(0.8 * c for c in WHITE)), ("Ks", (0.15, 0.15, 0.15))]),
         ("mirror", [("Ks", (0.9, 0.9, 0.9))]),
         ("glass", [("Ks", (0.1, 0.1, 0.1)), ("Kt", (0.9, 0.9, 0.9)), ("Ni", 1.5)]),
-        ("light", [("Ke", (24.0, 18.0, 10.0))]),
+        ("light", [("Ke", (21.0, 18.0, 14.0))]),
     ])
     write_ecs(os.path.join(HERE, "cornell_box_VI2_Specular.ecs"),
               "The Cornell box with a mirror block, a glass sphere and an area light.\n"
