@@ -37,9 +37,9 @@ Renderer::Renderer(const RenderScene& scene, int threads)
 
 Renderer::~Renderer() = default;
 
-void Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
+bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
                           PathTraceFunction pathTrace, const LabParameters& parameters,
-                          uint64_t seed, int spp) {
+                          uint64_t seed, int spp, const std::atomic<bool>* cancel) {
     const int width = buffer.width(), height = buffer.height();
     const int tilesX = (width + TileSize - 1) / TileSize;
     const int tilesY = (height + TileSize - 1) / TileSize;
@@ -50,6 +50,7 @@ void Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
         tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY, 1),
                           [&](const tbb::blocked_range<int>& tiles) {
             for (int tile = tiles.begin(); tile != tiles.end(); ++tile) {
+                if (cancel && cancel->load(std::memory_order_relaxed)) return;
                 PathContext ctx(scene_, parameters);
                 const int x0 = (tile % tilesX) * TileSize, y0 = (tile / tilesX) * TileSize;
                 const int x1 = std::min(x0 + TileSize, width), y1 = std::min(y0 + TileSize, height);
@@ -72,8 +73,10 @@ void Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
             }
         });
     });
-    buffer.finishPass(spp);
     counters_ += RayCounters{intersect.load(), occluded.load()};
+    if (cancel && cancel->load()) return false;
+    buffer.finishPass(spp);
+    return true;
 }
 
 } // namespace pathlab

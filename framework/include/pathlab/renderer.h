@@ -8,6 +8,7 @@
 #include "pathlab/ray_counters.h"
 #include "pathlab/render_scene.h"
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 
@@ -22,9 +23,12 @@ public:
     Renderer(const RenderScene& scene, int threads);
     ~Renderer();
 
-    /// Adds `spp` samples to every pixel of `buffer`, traced with `pathTrace`.
-    void renderPass(AccumulationBuffer& buffer, const Camera& camera, PathTraceFunction pathTrace,
-                    const LabParameters& parameters, uint64_t seed, int spp);
+    /// Adds `spp` samples to every pixel of `buffer`, traced with `pathTrace`. If `cancel` is
+    /// given and becomes true, the remaining tiles are skipped and false is returned: the buffer
+    /// then holds part of a pass and must be cleared before it is shown.
+    bool renderPass(AccumulationBuffer& buffer, const Camera& camera, PathTraceFunction pathTrace,
+                    const LabParameters& parameters, uint64_t seed, int spp,
+                    const std::atomic<bool>* cancel = nullptr);
 
     /// Rays traced by all passes since construction (or the last resetRayCounters()).
     RayCounters rayCounters() const { return counters_; }

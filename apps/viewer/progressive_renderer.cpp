@@ -1,0 +1,130 @@
+#include "progressive_renderer.h"
+
+#include "pathlab/renderer.h"
+
+#include <chrono>
+
+namespace pathlab::viewer {
+
+bool ViewSettings::operator==(const ViewSettings& o) const {
+    const auto same = [](const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
+    return lab == o.lab && implementation == o.implementation &&
+           parameters.maxDepth == o.parameters.maxDepth &&
+           parameters.continueProb == o.parameters.continueProb &&
+           same(camera.position, o.camera.position) && same(camera.lookAt, o.camera.lookAt) &&
+           same(camera.up, o.camera.up) && camera.fovDegrees == o.camera.fovDegrees &&
+           width == o.width && height == o.height && sppPerFrame == o.sppPerFrame &&
+           seed == o.seed && split == o.split;
+}
+
+ProgressiveRenderer::ProgressiveRenderer(const RenderScene& scene, int threads,
+                                         const ViewSettings& settings,
+                                         std::function<void(const Frame&)> onFrame, int frameLimit)
+    : scene_(scene), threads_(threads), onFrame_(std::move(onFrame)), frameLimit_(frameLimit),
+      settings_(settings) {
+    thread_ = std::thread([this] { run(); });
+}
+
+ProgressiveRenderer::~ProgressiveRenderer() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        stopping_ = true;
+    }
+    cancel_ = true;
+    wake_.notify_all();
+    thread_.join();
+}
+
+void ProgressiveRenderer::update(const ViewSettings& settings) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (settings == settings_) return;
+    settings_ = settings;
+    ++generation_;
+    cancel_ = true;
+    wake_.notify_all();
+}
+
+void ProgressiveRenderer::restart() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++generation_;
+    cancel_ = true;
+    wake_.notify_all();
+}
+
+bool ProgressiveRenderer::takeFrame(Frame& frame, uint64_t& generation) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (latestGeneration_ == 0) return false;
+    if (latestGeneration_ == generation && latest_.number == frame.number) return false;
+    frame = latest_;
+    generation = latestGeneration_;
+    return true;
+}
+
+void ProgressiveRenderer::run() {
+    Renderer renderer(scene_, threads_);
+    uint64_t generation = 0;
+    ViewSettings settings;
+    AccumulationBuffer buffers[2] = {AccumulationBuffer(1, 1), AccumulationBuffer(1, 1)};
+    double seconds[2] = {0, 0};
+    int frames = 0;
+    while (true) {
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            // After --frames frames, idle until something restarts accumulation.
+            wake_.wait(lock, [&] {
+                return stopping_ || generation != generation_ || frameLimit_ == 0 ||
+                       frames < frameLimit_;
+            });
+            if (stopping_) return;
+            if (generation != generation_) { // restart: fresh buffers for the new settings
+                generation = generation_;
+                settings = settings_;
+                cancel_ = false;
+                for (auto& b : buffers) b = AccumulationBuffer(settings.width, settings.height);
+                seconds[0] = seconds[1] = 0;
+                frames = 0;
+            }
+        }
+        // In the split view both implementations get equal render time: the one behind goes next.
+        const int which = settings.split && seconds[1] < seconds[0] ? 1 : 0;
+        const Implementation impl =
+            which == 0 ? settings.implementation
+                       : (settings.implementation == Implementation::Student ? Implementation::Solution
+                                                                             : Implementation::Student);
+        const Camera camera(settings.camera, settings.width, settings.height);
+        const RayCounters before = renderer.rayCounters();
+        const auto start = std::chrono::steady_clock::now();
+        const bool finished = renderer.renderPass(buffers[which], camera,
+                                                  findPathTrace(settings.lab, impl),
+                                                  settings.parameters, settings.seed,
+                                                  settings.sppPerFrame, &cancel_);
+        const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+        if (!finished) continue; // restarted mid-pass: the partial pass is thrown away
+        seconds[which] += elapsed.count();
+        ++frames;
+        framesFinished_.fetch_add(1);
+
+        Frame frame;
+        frame.settings = settings;
+        frame.number = frames;
+        frame.image = buffers[0].meanImage();
+        frame.spp = buffers[0].samplesPerPixel();
+        if (settings.split) {
+            frame.otherImage = buffers[1].meanImage();
+            frame.otherSpp = buffers[1].samplesPerPixel();
+        }
+        frame.frameSeconds = elapsed.count();
+        frame.raysPerSecond =
+            static_cast<double>(renderer.rayCounters().total() - before.total()) / elapsed.count();
+        frame.noise = buffers[0].meanRelativeStandardError();
+        frame.nonfinitePixels = buffers[0].nonfinitePixels();
+        if (onFrame_) onFrame_(frame);
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (generation == generation_) {
+            latest_ = std::move(frame);
+            latestGeneration_ = generation;
+        }
+    }
+}
+
+} // namespace pathlab::viewer

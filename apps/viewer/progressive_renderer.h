@@ -1,0 +1,85 @@
+#pragma once
+/// Renders frame after frame on a thread of its own, so the window never waits for a frame.
+
+#include "pathlab/accumulation_buffer.h"
+#include "pathlab/camera.h"
+#include "pathlab/lab_parameters.h"
+#include "pathlab/lab_registry.h"
+#include "pathlab/render_scene.h"
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace pathlab::viewer {
+
+/// What the window asks to be rendered. Any change restarts accumulation.
+struct ViewSettings {
+    Lab lab = Lab::Branching;
+    Implementation implementation = Implementation::Student;
+    LabParameters parameters;
+    CameraSettings camera;
+    int width = 512, height = 512;
+    int sppPerFrame = 1;
+    uint64_t seed = 0;
+    bool split = false; ///< also render the other implementation, for the split view
+
+    bool operator==(const ViewSettings& o) const;
+    bool operator!=(const ViewSettings& o) const { return !(*this == o); }
+};
+
+/// One finished frame: the accumulated image (never a partial pass) and what it cost.
+struct Frame {
+    ViewSettings settings;
+    int number = 0;                  ///< frames finished since the last restart
+    std::vector<float> image;        ///< mean radiance, linear RGB, top row first
+    std::vector<float> otherImage;   ///< split view: the other implementation's image
+    int spp = 0, otherSpp = 0;
+    double frameSeconds = 0;         ///< wall time of the last pass
+    double raysPerSecond = 0;        ///< of the last pass
+    float noise = 0;                 ///< mean relative standard error of the pixel estimates
+    int nonfinitePixels = 0;
+};
+
+class ProgressiveRenderer {
+public:
+    /// `onFrame` is called on the render thread after every finished frame; with `frameLimit`
+    /// > 0 the renderer idles after that many frames until the next restart.
+    ProgressiveRenderer(const RenderScene& scene, int threads, const ViewSettings& settings,
+                        std::function<void(const Frame&)> onFrame = {}, int frameLimit = 0);
+    ~ProgressiveRenderer();
+
+    /// Restarts accumulation with new settings (a pass in flight is abandoned).
+    void update(const ViewSettings& settings);
+    /// Restarts accumulation with the same settings.
+    void restart();
+    /// Copies the newest finished frame into `frame` if it is newer than `frame.number` after
+    /// the last restart; returns whether it did.
+    bool takeFrame(Frame& frame, uint64_t& generation);
+    /// Frames finished since the renderer started, over all restarts.
+    int framesFinished() const { return framesFinished_.load(); }
+
+private:
+    void run();
+
+    const RenderScene& scene_;
+    const int threads_;
+    const std::function<void(const Frame&)> onFrame_;
+    const int frameLimit_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    ViewSettings settings_;
+    uint64_t generation_ = 1;        ///< bumped by every restart
+    bool stopping_ = false;
+    std::atomic<bool> cancel_{false};
+    std::atomic<int> framesFinished_{0};
+    Frame latest_;
+    uint64_t latestGeneration_ = 0;
+    std::thread thread_;
+};
+
+} // namespace pathlab::viewer

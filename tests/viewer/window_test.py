@@ -1,0 +1,156 @@
+#!/usr/bin/env python3
+"""The viewer's window under a virtual X server (Xvfb), driven by simulated keys (xdotool).
+
+Usage: window_test.py VIEWER MODELS_DIR. Starts its own Xvfb; each check prints PASS/FAIL and
+the script exits non-zero if any failed.
+
+Statistical check: the screenshot's mean radiance against a headless render of the same scene,
+spp and seed, per channel, z-test at alpha = 1e-4 (|z| < 3.89) with the headless render's
+standard error. (The two are in fact bit-identical: the same sample streams.)
+"""
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+VIEWER, MODELS = sys.argv[1], sys.argv[2]
+SCENE = os.path.join(MODELS, "cornell_box_VI2_Specular.ecs")
+failures = []
+
+
+def check(condition, what):
+    print(("PASS " if condition else "FAIL ") + what, flush=True)
+    if not condition:
+        failures.append(what)
+
+
+def start_xvfb():
+    """An X server on a free display number, which Xvfb reports on the pipe."""
+    read, write = os.pipe()
+    server = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", "800x600x24",
+                               "-nolisten", "tcp"], pass_fds=[write], stderr=subprocess.DEVNULL)
+    os.close(write)
+    number = b""
+    while not number.endswith(b"\n"):
+        chunk = os.read(read, 16)
+        if not chunk:
+            raise RuntimeError("Xvfb did not start")
+        number += chunk
+    return server, ":" + number.decode().strip()
+
+
+def image_means(path):
+    """Per-channel averages of an image, from OpenImageIO's oiiotool."""
+    out = subprocess.run(["oiiotool", path, "--printstats"], capture_output=True, text=True).stdout
+    line = next(l for l in out.splitlines() if "Stats Avg" in l)
+    return [float(x) for x in re.findall(r"[-\d.e+]+", line.split(":")[1])[:3]]
+
+
+def screenshot_matches_headless(env, tmp):
+    shot = os.path.join(tmp, "window.exr")
+    common = ["-c", SCENE, "--size", "96", "72", "--lab", "importance", "--solution", "--seed", "4"]
+    run = subprocess.run([VIEWER, *common, "--frames", "6", "--screenshot", shot],
+                         env=env, capture_output=True, text=True, timeout=120)
+    check(run.returncode == 0, f"--frames 6 --screenshot exits 0 ({run.stderr.strip()})")
+    check(os.path.exists(shot), "the screenshot was written")
+    if not os.path.exists(shot):
+        return
+    window = image_means(shot)
+    check(sum(window) / 3 > 0.01, f"the screenshot is not black (mean {window})")
+    stats = os.path.join(tmp, "headless.json")
+    subprocess.run([VIEWER, *common, "--spp", "6", "-o", os.path.join(tmp, "headless.exr"),
+                    "--stats", stats], check=True, capture_output=True)
+    s = json.load(open(stats))
+    n = s["width"] * s["height"] * s["spp"]
+    for c in range(3):
+        se = max((s["mean_variance"][c] / n) ** 0.5, 1e-9)
+        z = (window[c] - s["mean_radiance"][c]) / se
+        check(abs(z) < 3.89, f"channel {c}: window {window[c]:.5f} vs headless "
+                             f"{s['mean_radiance'][c]:.5f}, z = {z:.2f}")
+
+
+class Viewer:
+    """A viewer process whose --print-frame-rate lines can be awaited."""
+
+    def __init__(self, env, args):
+        self.process = subprocess.Popen([VIEWER, *args], env=env, stdout=subprocess.PIPE,
+                                        stderr=subprocess.STDOUT, text=True, bufsize=1)
+        self.lines = []
+
+    def wait_for(self, pattern, timeout=60):
+        deadline = time.time() + timeout
+        while time.time() < deadline:
+            line = self.process.stdout.readline()
+            if not line:
+                return None
+            self.lines.append(line)
+            if re.search(pattern, line):
+                return line
+        return None
+
+
+def keys_change_what_the_viewer_reports(env):
+    viewer = Viewer(env, ["-c", SCENE, "--size", "160", "120", "--print-frame-rate", "--solution"])
+    first = viewer.wait_for(r"^frame \d+:")
+    check(first is not None and "lab branching" in first, "the window renders frames")
+    window = subprocess.run(["xdotool", "search", "--sync", "--onlyvisible", "--pid",
+                             str(viewer.process.pid)], env=env, capture_output=True, text=True,
+                            timeout=30).stdout.split()
+    check(bool(window), "xdotool finds the window")
+    if not window:
+        viewer.process.kill()
+        return
+    xdo = ["xdotool"]
+
+    def key(name):
+        subprocess.run(xdo + ["windowfocus", "--sync", window[0]], env=env, timeout=10)
+        subprocess.run(xdo + ["key", name], env=env, timeout=10)
+
+    key("2")
+    check(viewer.wait_for(r"lab uniform") is not None, "key 2 switches to the uniform lab")
+    key("Tab")
+    check(viewer.wait_for(r"impl student") is not None, "Tab switches to the student's code")
+    key("bracketright")
+    check(viewer.wait_for(r"max-depth 4") is not None, "] raises maxDepth")
+    key("f")
+    check(viewer.wait_for(r"size 800x600") is not None, "f makes the window fullscreen (800x600)")
+    key("f")
+    check(viewer.wait_for(r"size 160x120") is not None, "f again restores the window")
+    key("q")
+    try:
+        code = viewer.process.wait(timeout=30)
+    except subprocess.TimeoutExpired:
+        viewer.process.kill()
+        code = None
+    check(code == 0, f"q quits cleanly (exit status {code})")
+
+
+def no_display_is_explained():
+    env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
+    run = subprocess.run([VIEWER, "-c", SCENE], env=env, capture_output=True, text=True, timeout=30)
+    check(run.returncode == 2, f"without a display the viewer exits 2 (got {run.returncode})")
+    check("no display" in run.stderr and "-o" in run.stderr and run.stderr.count("\n") == 1,
+          f"and says so in one line pointing to -o: {run.stderr.strip()!r}")
+
+
+def main():
+    no_display_is_explained()
+    server, display = start_xvfb()
+    try:
+        env = dict(os.environ, DISPLAY=display)
+        with tempfile.TemporaryDirectory() as tmp:
+            screenshot_matches_headless(env, tmp)
+        keys_change_what_the_viewer_reports(env)
+    finally:
+        server.terminate()
+        server.wait()
+    if failures:
+        print(f"{len(failures)} check(s) failed", flush=True)
+        sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()
