@@ -18,6 +18,8 @@ using namespace pathlab;
 void checkOutputs(const RenderOptions& options) {
     if (!options.outputImage.empty()) checkImageOutputPath(options.outputImage, "-o");
     if (!options.screenshot.empty()) checkImageOutputPath(options.screenshot, "--screenshot");
+    if (!options.windowCapture.empty())
+        checkImageOutputPath(options.windowCapture, "--capture-window");
     if (!options.statsFile.empty()) {
         namespace fs = std::filesystem;
         fs::path folder = fs::path(options.statsFile).parent_path();

@@ -193,7 +193,7 @@ private:
         uploadImage();
         if (options_.frames > 0 && frame_.number >= options_.frames && s == settings_) {
             if (!options_.screenshot.empty()) screenshot(options_.screenshot);
-            done_ = true;
+            finishing_ = true; // the next draw captures the window if asked, then the loop ends
         }
     }
 
@@ -241,7 +241,28 @@ private:
             glDisable(GL_TEXTURE_2D);
         }
         drawPanel();
+        if (finishing_) {
+            if (!options_.windowCapture.empty()) captureWindow(width, height);
+            done_ = true;
+        }
         glfwSwapBuffers(window_);
+    }
+
+    void captureWindow(int width, int height) {
+        std::vector<unsigned char> bottomUp(3 * static_cast<size_t>(width) * height), rgb(bottomUp.size());
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadBuffer(GL_BACK);
+        glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bottomUp.data());
+        const size_t row = 3 * static_cast<size_t>(width);
+        for (int y = 0; y < height; ++y) // OpenGL's rows start at the bottom
+            std::copy_n(&bottomUp[(height - 1 - y) * row], row, &rgb[y * row]);
+        try {
+            writeDisplayImage(options_.windowCapture, width, height, rgb);
+            std::printf("window capture %s\n", options_.windowCapture.c_str());
+        } catch (const InputError& error) {
+            std::fprintf(stderr, "viewer: %s\n", error.what());
+            status_ = 2;
+        }
     }
 
     void drawPanel() {
@@ -314,7 +335,7 @@ private:
     FrameRate frameRate_;
     std::vector<unsigned char> rgba_;
     unsigned texture_ = 0;
-    bool hasImage_ = false, showHelp_ = false, done_ = false, dragging_ = false;
+    bool hasImage_ = false, showHelp_ = false, finishing_ = false, done_ = false, dragging_ = false;
     ViewMode mode_ = ViewMode::Image;
     float medianDifference_ = 0;
     double lastX_ = 0, lastY_ = 0;

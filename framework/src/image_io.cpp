@@ -118,6 +118,24 @@ void writeImage(const std::string& path, int width, int height, const std::vecto
     moveIntoPlace(temporary, path);
 }
 
+void writeDisplayImage(const std::string& path, int width, int height,
+                       const std::vector<unsigned char>& rgb8) {
+    checkImageOutputPath(path);
+    const std::string temporary = temporaryNameFor(path);
+    auto out = OIIO::ImageOutput::create(temporary);
+    if (!out) throw InputError(path + ": OpenImageIO cannot write this format");
+    OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    bool ok = out->open(temporary, spec) && out->write_image(OIIO::TypeDesc::UINT8, rgb8.data());
+    ok = out->close() && ok;
+    if (!ok) {
+        std::error_code ignored;
+        fs::remove(temporary, ignored);
+        throw InputError(path + ": cannot write the image: " + out->geterror());
+    }
+    moveIntoPlace(temporary, path);
+}
+
 Image readImage(const std::string& path) {
     auto in = OIIO::ImageInput::open(path);
     if (!in) throw InputError(path + ": cannot read the image: " + OIIO::geterror());

@@ -193,6 +193,8 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv) {
         {"frames", [&](const Token& t) { o.frames = positive(in, t, "a frame count", 1 << 24); }},
         {"screenshot",
          [&](const Token& t) { o.screenshot = in.value(t, "an image file name").text; }},
+        {"capture-window",
+         [&](const Token& t) { o.windowCapture = in.value(t, "a .png file name").text; }},
         {"reference",
          [&](const Token& t) { o.referenceImage = in.value(t, "an image file name").text; }},
         {"help", [&](const Token&) { o.help = true; }},
@@ -210,7 +212,7 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv) {
         const Token option = token; // `token` may move when a -c script is inserted
         handler->second(option);
     }
-    if (!o.screenshot.empty() && o.frames == 0) o.frames = 16;
+    if ((!o.screenshot.empty() || !o.windowCapture.empty()) && o.frames == 0) o.frames = 16;
     return o;
 }
 
@@ -251,7 +253,9 @@ window
   --spp-per-frame N      samples per pixel added each frame (default 1)
   --print-frame-rate     print frame rate, spp and rays/s every frame
   --frames N --screenshot FILE
-                         run N frames, save the image (FILE and its .exr), quit
+                         run N frames, save the image, quit
+  --capture-window FILE.png
+                         with --frames: also save the window as shown, panel included
   --reference FILE.exr   image for the difference view
 Single-dash spellings (-vp, -size, ...) work too, as in .ecs files.
 )";

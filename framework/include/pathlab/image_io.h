@@ -15,6 +15,11 @@ void checkImageOutputPath(const std::string& path, const std::string& option = "
 /// folder, then renames it over `path`, so a reader never sees half an image.
 void writeImage(const std::string& path, int width, int height, const std::vector<float>& rgb);
 
+/// Writes display-ready 8-bit sRGB RGB bytes (row-major, top-left first) as they are, e.g. a
+/// capture of the viewer's window. Atomic like writeImage.
+void writeDisplayImage(const std::string& path, int width, int height,
+                       const std::vector<unsigned char>& rgb8);
+
 /// A linear RGB image read from a file (any format OpenImageIO reads; 8-bit files are decoded
 /// from sRGB). Throws InputError if it cannot.
 struct Image {

@@ -39,6 +39,7 @@ struct RenderOptions {
     bool printFrameRate = false;   ///< --print-frame-rate
     int frames = 0;                ///< --frames: quit after this many (0 = run until closed)
     std::string screenshot;        ///< --screenshot: save after --frames, then quit
+    std::string windowCapture;     ///< --capture-window: the window as shown, panel included
     std::string referenceImage;    ///< --reference: image for the difference view
 
     bool help = false;             ///< --help
