@@ -244,6 +244,28 @@ def furnace(name, albedo, inner=None):
     return n
 
 
+def refraction_check():
+    """A glass sphere before a wall whose left half glows red and right half green: refraction
+    turns the view through the sphere upside down and left-right, so a lab that sends the
+    transmitted ray on unbent (or loses it) shows the wrong colours there."""
+    mesh = Mesh()
+    front = ("toward", (0.0, 0.0, -3.0))
+    mesh.polygon(mesh.group("red_half", "red_glow"), [(-4.0, -4.0, 2.0), (0.0, -4.0, 2.0), (0.0, 4.0, 2.0), (-4.0, 4.0, 2.0)], front)
+    mesh.polygon(mesh.group("green_half", "green_glow"), [(0.0, -4.0, 2.0), (4.0, -4.0, 2.0), (4.0, 4.0, 2.0), (0.0, 4.0, 2.0)], front)
+    mesh.sphere(mesh.group("glass_sphere", "glass"), (0.0, 0.0, 0.0), 0.8, 48, 24, outward=True, smooth=True)
+    check(mesh, "refraction_check")
+    n = mesh.write(os.path.join(HERE, "refraction_check.obj"), "refraction_check.mtl")
+    write_mtl(os.path.join(HERE, "refraction_check.mtl"), [
+        ("red_glow", [("Ke", (1.0, 0.2, 0.2))]),
+        ("green_glow", [("Ke", (0.2, 1.0, 0.2))]),
+        ("glass", [("Kt", (1.0, 1.0, 1.0)), ("Ni", 1.5)]),
+    ])
+    write_ecs(os.path.join(HERE, "refraction_check.ecs"),
+              "A glass sphere before a red|green glowing wall: the grader's check of refraction.",
+              "-i refraction_check.obj\n-vp 0 0 -3\n-vi 0 0 0\n-vu 0 1 0\n-fov 40\n")
+    return n
+
+
 def main():
     counts = {
         "cornell_box_VI2_Specular": cornell_box_vi2(),
@@ -251,6 +273,7 @@ def main():
         "furnace": furnace("furnace", 0.5),
         "furnace_a08": furnace("furnace_a08", 0.8),
         "furnace_mirror": furnace("furnace_mirror", 0.5, ("mirror", [("Ks", (1.0, 1.0, 1.0))])),
+        "refraction_check": refraction_check(),
         "furnace_glass": furnace("furnace_glass", 0.5, ("glass", [("Kt", (1.0, 1.0, 1.0)), ("Ni", 1.5)])),
     }
     for name, triangles in counts.items():

@@ -3,7 +3,7 @@
 #include "viewer_window.h"
 
 #include "camera_controller.h"
-#include "false_colour.h"
+#include "pathlab/false_colour.h"
 #include "frame_rate.h"
 #include "progressive_renderer.h"
 

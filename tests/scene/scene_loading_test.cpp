@@ -57,7 +57,7 @@ TEST_CASE("the VI2 Cornell box loads with its camera, glass, mirror and area lig
 TEST_CASE("PathLab's scenes load without notes or warnings", "[scene]") {
     for (const char* scene : {"cornell_box_VI2_Specular.ecs", "cornell_box_diffuse.ecs",
                               "furnace.ecs", "furnace_a08.ecs", "furnace_mirror.ecs",
-                              "furnace_glass.ecs"}) {
+                              "furnace_glass.ecs", "refraction_check.ecs"}) {
         const std::string image = test::temporaryFolder("quiet") + "/out.png";
         const auto run = test::runViewer("-c " + modelPath(scene) + " --size 8 8 --spp 1 --lab "
                                          "importance --solution -o " + image);

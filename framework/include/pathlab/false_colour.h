@@ -3,7 +3,7 @@
 
 #include <vector>
 
-namespace pathlab::viewer {
+namespace pathlab {
 
 /// Per pixel |a − b| / max(b, 0.01) (channel average), mapped black→blue→green→yellow→red over
 /// [0, scale]; RGBA8 out. Returns the median relative difference.
@@ -13,4 +13,4 @@ float relativeDifferenceImage(const std::vector<float>& a, const std::vector<flo
 /// Linear RGB floats to sRGB RGBA8 for display.
 void toDisplay(const std::vector<float>& rgb, std::vector<unsigned char>& rgba);
 
-} // namespace pathlab::viewer
+} // namespace pathlab

@@ -1,11 +1,11 @@
-#include "false_colour.h"
+#include "pathlab/false_colour.h"
 
 #include "pathlab/image_io.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace pathlab::viewer {
+namespace pathlab {
 
 namespace {
 void heat(float t, unsigned char* out) {
@@ -47,4 +47,4 @@ void toDisplay(const std::vector<float>& rgb, std::vector<unsigned char>& rgba) 
     }
 }
 
-} // namespace pathlab::viewer
+} // namespace pathlab

@@ -1,0 +1,161 @@
+#include "expectation.h"
+
+#include "statistics.h"
+
+#include "pathlab/image_io.h"
+#include "pathlab/input_error.h"
+#include "pathlab/render_stats.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+namespace pathlab::grader {
+
+namespace {
+
+Expectation measure(const std::string& viewer, const std::string& scene, Lab lab,
+                    const Rubric& rubric, int seeds, int spp, const std::string& scratch,
+                    const std::function<void()>& step) {
+    Expectation e;
+    e.solution = std::string(labName(lab));
+    e.seeds = seeds;
+    e.spp = spp;
+    std::vector<std::vector<double>> perRegion;
+    std::vector<double> imageSum;
+    for (int s = 0; s < seeds; ++s) {
+        RenderRequest r{viewer, scene, lab, Implementation::Solution, rubric.width, rubric.height,
+                        spp, rubric.maxDepth, rubric.continueProb,
+                        static_cast<uint64_t>(1000000 + s), 0, scratch};
+        const RenderResult result = renderLab(r, {rubric.secondsPerRun * 20, rubric.memoryBytes});
+        if (!result.ok)
+            throw std::runtime_error("the reference solution of " + e.solution + " failed on " +
+                                     scene + ": " + result.failure);
+        const std::vector<double> means = regionMeans(result.image, result.width, result.height, rubric.tiles);
+        if (perRegion.empty()) perRegion.resize(means.size()), imageSum.assign(result.image.size(), 0.0);
+        for (size_t i = 0; i < means.size(); ++i) perRegion[i].push_back(means[i]);
+        for (size_t i = 0; i < result.image.size(); ++i) imageSum[i] += result.image[i];
+        step();
+    }
+    for (const auto& values : perRegion) {
+        const MeanEstimate m = batchMean(values);
+        e.mean.push_back(m.mean);
+        e.standardError.push_back(m.standardError);
+    }
+    for (double v : imageSum) e.image.push_back(static_cast<float>(v / seeds));
+    return e;
+}
+
+nlohmann::json toJson(const Expectation& e, const std::string& imageFile) {
+    return {{"solution", e.solution}, {"seeds", e.seeds}, {"spp", e.spp}, {"mean", e.mean},
+            {"standard_error", e.standardError}, {"image", imageFile}};
+}
+
+Expectation fromJson(const nlohmann::json& j, const std::string& folder, int width, int height) {
+    Expectation e;
+    e.solution = j.at("solution");
+    e.seeds = j.at("seeds");
+    e.spp = j.at("spp");
+    e.mean = j.at("mean").get<std::vector<double>>();
+    e.standardError = j.at("standard_error").get<std::vector<double>>();
+    const Image image = readImage(folder + "/" + j.at("image").get<std::string>());
+    if (image.width != width || image.height != height)
+        throw InputError(folder + "/" + j.at("image").get<std::string>() + ": wrong size");
+    e.image = image.rgb;
+    return e;
+}
+
+} // namespace
+
+SceneReference measureReference(const std::string& viewer, const std::string& scenePath,
+                                const Rubric& rubric, int seeds, int sppFactor,
+                                const std::string& scratch, const Progress& progress) {
+    SceneReference ref;
+    ref.scene = std::filesystem::path(scenePath).stem().string();
+    ref.kitVersion = PATHLAB_VERSION;
+    ref.width = rubric.width;
+    ref.height = rubric.height;
+    ref.tiles = rubric.tiles;
+    ref.maxDepth = rubric.maxDepth;
+    ref.continueProb = rubric.continueProb;
+    const int varianceSeeds = 16; // per-sample variance has heavy tails: measure it well
+    const int total = 2 * seeds + 4 * varianceSeeds;
+    int done = 0;
+    auto step = [&] { if (progress) progress(++done, total); };
+    const int spp = rubric.correctnessSpp[static_cast<int>(Lab::Importance)] * sppFactor;
+    // Importance and roulette: the fastest to converge of the depth-limited and unbiased labs.
+    ref.depthLimited = measure(viewer, scenePath, Lab::Importance, rubric, seeds, spp, scratch, step);
+    ref.unbiased = measure(viewer, scenePath, Lab::Roulette, rubric, seeds, spp, scratch, step);
+    for (Lab lab : AllLabs) {
+        std::array<double, 3> sum{};
+        for (int s = 0; s < varianceSeeds; ++s) {
+            RenderRequest r{viewer, scenePath, lab, Implementation::Solution, rubric.width,
+                            rubric.height, rubric.correctnessSpp[static_cast<int>(lab)],
+                            rubric.maxDepth, rubric.continueProb, static_cast<uint64_t>(2000000 + s),
+                            0, scratch};
+            const RenderResult result = renderLab(r, {rubric.secondsPerRun * 20, rubric.memoryBytes});
+            if (!result.ok)
+                throw std::runtime_error("the reference solution failed: " + result.failure);
+            for (int c = 0; c < 3; ++c) sum[c] += result.meanVariance[c] / varianceSeeds;
+            step();
+        }
+        ref.variance[static_cast<int>(lab)] = sum;
+    }
+    return ref;
+}
+
+void saveReference(const std::string& folder, const SceneReference& ref) {
+    const std::string depthImage = ref.scene + ".depth_limited.exr";
+    const std::string unbiasedImage = ref.scene + ".unbiased.exr";
+    writeImage(folder + "/" + depthImage, ref.width, ref.height, ref.depthLimited.image);
+    writeImage(folder + "/" + unbiasedImage, ref.width, ref.height, ref.unbiased.image);
+    nlohmann::json variance;
+    for (Lab lab : AllLabs) variance[std::string(labName(lab))] = ref.variance[static_cast<int>(lab)];
+    const nlohmann::json j = {
+        {"scene", ref.scene},
+        {"made_by", "grader make-references"},
+        {"kit_version", ref.kitVersion},
+        {"width", ref.width},
+        {"height", ref.height},
+        {"tiles", ref.tiles},
+        {"max_depth", ref.maxDepth},
+        {"continue_prob", ref.continueProb},
+        {"depth_limited", toJson(ref.depthLimited, depthImage)},
+        {"unbiased", toJson(ref.unbiased, unbiasedImage)},
+        {"variance", variance},
+    };
+    writeFileAtomically(folder + "/" + ref.scene + ".json", j.dump(1) + "\n");
+}
+
+SceneReference loadReference(const std::string& folder, const std::string& scene,
+                             const Rubric& rubric) {
+    const std::string path = folder + "/" + scene + ".json";
+    std::ifstream in(path);
+    if (!in) throw InputError(path + ": no stored reference (run: grader make-references)");
+    SceneReference ref;
+    try {
+        const nlohmann::json j = nlohmann::json::parse(in);
+        ref.scene = j.at("scene");
+        ref.kitVersion = j.at("kit_version");
+        ref.width = j.at("width");
+        ref.height = j.at("height");
+        ref.tiles = j.at("tiles");
+        ref.maxDepth = j.at("max_depth");
+        ref.continueProb = j.at("continue_prob");
+        if (ref.width != rubric.width || ref.height != rubric.height || ref.tiles != rubric.tiles ||
+            ref.maxDepth != rubric.maxDepth || ref.continueProb != rubric.continueProb)
+            throw InputError(path + ": made for other sizes or parameters than the rubric's "
+                                    "(run: grader make-references)");
+        ref.depthLimited = fromJson(j.at("depth_limited"), folder, ref.width, ref.height);
+        ref.unbiased = fromJson(j.at("unbiased"), folder, ref.width, ref.height);
+        for (Lab lab : AllLabs)
+            ref.variance[static_cast<int>(lab)] =
+                j.at("variance").at(std::string(labName(lab))).get<std::array<double, 3>>();
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(path + ": " + e.what());
+    }
+    return ref;
+}
+
+} // namespace pathlab::grader

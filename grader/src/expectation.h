@@ -1,0 +1,49 @@
+#pragma once
+/// What a correct lab's image should average to, region by region, and how noisy a correct lab
+/// is: measured from the reference solutions, stored in grader/references/ or made on the fly.
+
+#include "render_run.h"
+#include "rubric.h"
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace pathlab::grader {
+
+/// The expected region means (flat [region][channel], see regionMeans) and their standard errors.
+struct Expectation {
+    std::string solution;          ///< which reference solution measured it
+    int seeds = 0, spp = 0;
+    std::vector<double> mean, standardError;
+    std::vector<float> image;      ///< the mean image, for the reports' pictures
+};
+
+/// Everything the grader compares one scene with.
+struct SceneReference {
+    std::string scene;             ///< name, e.g. "furnace"
+    std::string kitVersion;
+    int width = 0, height = 0, tiles = 0, maxDepth = 0;
+    float continueProb = 0;
+    Expectation depthLimited;      ///< labs 1-3, at maxDepth
+    Expectation unbiased;          ///< lab 4
+    std::array<std::array<double, 3>, 4> variance{}; ///< per-sample variance of each lab's solution
+
+    const Expectation& forLab(Lab lab) const { return isDepthLimited(lab) ? depthLimited : unbiased; }
+};
+
+/// Called with (done, total) as reference renders finish, for a progress bar.
+using Progress = std::function<void(int, int)>;
+
+/// Measures a scene's reference with the solutions in `viewer` (run with --solution).
+SceneReference measureReference(const std::string& viewer, const std::string& scenePath,
+                                const Rubric& rubric, int seeds, int sppFactor,
+                                const std::string& scratch, const Progress& progress);
+
+/// references/NAME.json (+ NAME.depth_limited.exr, NAME.unbiased.exr). Atomic writes.
+void saveReference(const std::string& folder, const SceneReference& reference);
+/// Throws InputError if missing or made for other sizes or parameters than `rubric`'s.
+SceneReference loadReference(const std::string& folder, const std::string& scene, const Rubric& rubric);
+
+} // namespace pathlab::grader

@@ -1,0 +1,332 @@
+#include "grading.h"
+
+#include "diagnosis.h"
+#include "statistics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace pathlab::grader {
+
+double LabGrade::score() const {
+    double s = 0;
+    for (const CheckResult& c : checks) s += c.score;
+    return s;
+}
+
+double LabGrade::maxScore() const {
+    double s = 0;
+    for (const CheckResult& c : checks) s += c.maxScore;
+    return s;
+}
+
+namespace {
+
+std::string format(const char* pattern, double a, double b = 0, double c = 0, double d = 0) {
+    char text[256];
+    std::snprintf(text, sizeof text, pattern, a, b, c, d);
+    return text;
+}
+
+ProcessLimits limitsOf(const Rubric& r) { return {r.secondsPerRun, r.memoryBytes}; }
+
+/// k independent renders of one lab on one scene.
+struct SceneRuns {
+    std::vector<std::vector<double>> regionValues; ///< [statistic][seed]
+    std::vector<double> imageSum;
+    std::array<double, 3> meanVariance{};
+    int runs = 0;
+    std::string failure;
+};
+
+SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab lab, uint64_t seedBase) {
+    const Rubric& r = setup.rubric;
+    SceneRuns runs;
+    for (int s = 0; s < r.seeds; ++s) {
+        RenderRequest request{setup.studentViewer, scene.path, lab, Implementation::Student,
+                              r.width, r.height, r.correctnessSpp[static_cast<int>(lab)],
+                              r.maxDepth, r.continueProb, seedBase + static_cast<uint64_t>(s),
+                              setup.threads, setup.scratch};
+        const RenderResult result = renderLab(request, limitsOf(r));
+        if (!result.ok) {
+            runs.failure = result.failure;
+            return runs;
+        }
+        const std::vector<double> means = regionMeans(result.image, result.width, result.height, r.tiles);
+        if (runs.regionValues.empty()) {
+            runs.regionValues.resize(means.size());
+            runs.imageSum.assign(result.image.size(), 0.0);
+        }
+        for (size_t i = 0; i < means.size(); ++i) runs.regionValues[i].push_back(means[i]);
+        for (size_t i = 0; i < result.image.size(); ++i) runs.imageSum[i] += result.image[i];
+        for (int c = 0; c < 3; ++c) runs.meanVariance[c] += result.meanVariance[c] / r.seeds;
+        ++runs.runs;
+    }
+    return runs;
+}
+
+struct Comparison {
+    std::vector<double> t, p;
+    std::vector<MeanEstimate> observed;
+};
+
+/// Relative size of the float rounding between two renders of the same expectation at different
+/// spp; see compare().
+constexpr double floatRoundingFloor = 1e-5;
+
+Comparison compare(const SceneRuns& runs, const Expectation& expected, int seeds) {
+    Comparison c;
+    for (size_t i = 0; i < runs.regionValues.size(); ++i) {
+        const MeanEstimate m = batchMean(runs.regionValues[i]);
+        // A region that every path sees alike (the blue of the refraction check, 0.2 through
+        // the glass wherever it leads) has no sampling noise at all; there the means still
+        // differ by float rounding, which grows with spp. That rounding, a few parts in 1e7
+        // of a float accumulation, is bounded by a relative floor far below any bug's effect.
+        const double rounding = floatRoundingFloor * std::fabs(expected.mean[i]);
+        const double se = std::sqrt(m.standardError * m.standardError +
+                                    expected.standardError[i] * expected.standardError[i] +
+                                    rounding * rounding);
+        const double t = se > 0 ? (m.mean - expected.mean[i]) / se
+                                : (m.mean == expected.mean[i] ? 0.0 : INFINITY);
+        c.t.push_back(t);
+        c.p.push_back(studentTwoSidedP(t, seeds - 1));
+        c.observed.push_back(m);
+    }
+    return c;
+}
+
+/// One attempt of the correctness check over all scenes; fills `details` on rejection.
+bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, LabGrade& grade,
+                        std::vector<std::string>& details, std::string& failure,
+                        std::array<double, 3>& noiseVariance) {
+    const Rubric& r = setup.rubric;
+    std::vector<Comparison> comparisons;
+    std::vector<double> allP;
+    grade.pictures.clear();
+    for (const GradingScene& scene : setup.scenes) {
+        const SceneRuns runs = renderSeeds(setup, scene, lab, seedBase);
+        if (!runs.failure.empty()) {
+            failure = "on " + scene.reference.scene + " the lab " + runs.failure;
+            return false;
+        }
+        if (scene.reference.scene == r.noiseScene || noiseVariance[0] < 0) noiseVariance = runs.meanVariance;
+        comparisons.push_back(compare(runs, scene.reference.forLab(lab), r.seeds));
+        allP.insert(allP.end(), comparisons.back().p.begin(), comparisons.back().p.end());
+        LabGrade::Pictures pictures{scene.reference.scene, r.width, r.height, {}, scene.reference.forLab(lab).image};
+        for (double v : runs.imageSum) pictures.student.push_back(static_cast<float>(v / runs.runs));
+        grade.pictures.push_back(std::move(pictures));
+    }
+    const std::vector<bool> rejected = holmRejections(allP, r.alpha);
+    if (std::none_of(rejected.begin(), rejected.end(), [](bool b) { return b; })) return true;
+
+    // Explain: per scene, the whole image's observed/expected per channel with a confidence
+    // interval, the tiles that differ, and a likely cause where the furnace can tell.
+    size_t offset = 0;
+    const double critical = studentCritical(r.alpha, r.seeds - 1);
+    const char* channel[3] = {"red", "green", "blue"};
+    for (size_t s = 0; s < setup.scenes.size(); ++s) {
+        const GradingScene& scene = setup.scenes[s];
+        const Comparison& c = comparisons[s];
+        const Expectation& e = scene.reference.forLab(lab);
+        const bool sceneRejected =
+            std::any_of(rejected.begin() + offset, rejected.begin() + offset + c.p.size(), [](bool b) { return b; });
+        if (sceneRejected) {
+            std::string line = scene.reference.scene + ": observed/expected";
+            for (int ch = 0; ch < 3; ++ch) {
+                const double ratio = c.observed[ch].mean / e.mean[ch];
+                const double half = critical * std::hypot(c.observed[ch].standardError, e.standardError[ch]) / e.mean[ch];
+                line += std::string(" ") + channel[ch] + format(" %.3f [%.3f, %.3f]", ratio, ratio - half, ratio + half);
+            }
+            details.push_back(line);
+            std::string tiles;
+            int tileCount = 0;
+            for (size_t i = 3; i < c.p.size(); i += 3) {
+                bool any = false;
+                for (int ch = 0; ch < 3; ++ch) any = any || rejected[offset + i + ch];
+                if (!any) continue;
+                const int tile = static_cast<int>(i / 3) - 1;
+                ++tileCount;
+                tiles += " (" + std::to_string(tile % r.tiles) + "," + std::to_string(tile / r.tiles) + ")";
+            }
+            if (tileCount > 0)
+                details.push_back(scene.reference.scene + ": " + std::to_string(tileCount) + " of " +
+                                  std::to_string(r.tiles * r.tiles) + " tiles differ (column,row from the top left):" + tiles);
+            if (scene.reference.scene == "refraction_check")
+                details.push_back("likely cause: the view through the glass sphere is wrong: the Kt "
+                                  "component must trace refractionRay(ray, hit), which bends the ray "
+                                  "by Ni and turns into a mirror ray under total internal reflection "
+                                  "(TODO lab1.5)");
+            if (scene.isFurnace) {
+                const double observed = (c.observed[0].mean + c.observed[1].mean + c.observed[2].mean) / 3;
+                const double se = c.observed[0].standardError;
+                const FurnaceModel model{scene.furnaceAlbedo, r.maxDepth, r.continueProb};
+                details.push_back(scene.reference.scene + format(": %.4f, where a correct lab gives %.4f",
+                                                                 observed, correctFurnaceValue(lab, model)));
+                const std::string cause = diagnoseFurnace(lab, model, observed, se);
+                if (!cause.empty()) details.push_back("likely cause: " + cause);
+            }
+        }
+        offset += c.p.size();
+    }
+    return false;
+}
+
+CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade,
+                             std::array<double, 3>& noiseVariance) {
+    CheckResult check;
+    check.name = "correctness";
+    check.maxScore = setup.rubric.points[static_cast<int>(lab)].correctness;
+    std::vector<std::string> details;
+    std::string failure;
+    if (correctnessAttempt(setup, lab, setup.seedBase * 1000, grade, details, failure, noiseVariance)) {
+        check.passed = true;
+    } else if (failure.empty()) {
+        // A rejection at alpha happens to correct labs too, rarely: only a second rejection on
+        // fresh seeds counts.
+        std::vector<std::string> retryDetails;
+        if (correctnessAttempt(setup, lab, setup.seedBase * 1000 + 500, grade, retryDetails, failure,
+                               noiseVariance))
+            check.passed = true;
+        else if (failure.empty())
+            details = retryDetails;
+    }
+    check.score = check.passed ? check.maxScore : 0;
+    const std::string expected = isDepthLimited(lab)
+                                     ? "the depth-limited image (maxDepth " + std::to_string(setup.rubric.maxDepth) + ")"
+                                     : "the unbiased image";
+    if (check.passed) {
+        check.summary = "mean radiance matches " + expected;
+    } else if (!failure.empty()) {
+        check.summary = "could not be checked: " + failure;
+    } else {
+        check.summary = "mean radiance differs from " + expected + " (twice, on fresh seeds)";
+    }
+    check.details = details;
+    return check;
+}
+
+/// The noise of the correctness runs on the noise scene against the reference solution's. Like
+/// speed, it counts only for a correct lab: a lab that renders too little light is also quiet.
+CheckResult checkNoise(const GraderSetup& setup, Lab lab, bool correct,
+                       const std::array<double, 3>& variance) {
+    const Rubric& r = setup.rubric;
+    CheckResult check;
+    check.name = "noise";
+    check.maxScore = r.points[static_cast<int>(lab)].noise;
+    if (variance[0] < 0) {
+        check.summary = "could not be measured: the lab did not finish its renders";
+        return check;
+    }
+    const auto scene = std::find_if(setup.scenes.begin(), setup.scenes.end(), [&](const GradingScene& s) {
+        return s.reference.scene == r.noiseScene;
+    });
+    const GradingScene& noiseScene = scene != setup.scenes.end() ? *scene : setup.scenes.front();
+    const auto& reference = noiseScene.reference.variance[static_cast<int>(lab)];
+    const double student = (variance[0] + variance[1] + variance[2]) / 3;
+    const double solution = (reference[0] + reference[1] + reference[2]) / 3;
+    const double ratio = student / solution;
+    check.summary = format("per-sample variance %.3g times the reference solution's (at most %.2g) on ", ratio, r.maxNoiseRatio) +
+                    noiseScene.reference.scene;
+    if (!correct) {
+        check.summary += "; noise counts only for a correct lab";
+        return check;
+    }
+    check.passed = ratio <= r.maxNoiseRatio;
+    check.score = check.passed ? check.maxScore : 0;
+    if (!check.passed) {
+        check.details.push_back(format("variance per sample: yours %.4g, the reference's %.4g", student, solution));
+        if (lab == Lab::Importance)
+            check.details.push_back("an importance pick that picks uniformly, or that picks components "
+                                    "whose reflectance is zero, is this noisy; the probabilities "
+                                    "should follow reduceMax(Kd), reduceMax(Ks), reduceMax(Kt)");
+        else if (lab == Lab::Roulette)
+            check.details.push_back("Russian roulette should pick the component by importance, as in lab 3");
+        else
+            check.details.push_back("more noise than the reference at the same mean: is a component "
+                                    "sampled with the wrong probability, or a random number reused?");
+    }
+    return check;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0 : v[v.size() / 2];
+}
+
+/// The fixed cost of a run (start-up, loading, building Embree's BVH), measured by rendering one
+/// pixel, so that samples/s counts rendering alone and cannot be reported by the lab itself.
+double startupSeconds(const GraderSetup& setup, const std::string& scene) {
+    static std::map<std::string, double> measured; // per scene, once per grading
+    if (const auto known = measured.find(scene); known != measured.end()) return known->second;
+    std::vector<double> seconds;
+    for (int i = 0; i < 3; ++i) {
+        RenderRequest request{setup.solutionViewer, scene, Lab::Uniform, Implementation::Solution,
+                              1, 1, 1, setup.rubric.maxDepth, setup.rubric.continueProb, 1,
+                              setup.threads, setup.scratch};
+        const RenderResult r = renderLab(request, limitsOf(setup.rubric));
+        if (r.ok) seconds.push_back(r.process.seconds);
+    }
+    return measured[scene] = median(seconds);
+}
+
+CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade& grade) {
+    const Rubric& r = setup.rubric;
+    CheckResult check;
+    check.name = "speed";
+    check.maxScore = r.points[static_cast<int>(lab)].speed;
+    const auto scene = std::find_if(setup.scenes.begin(), setup.scenes.end(), [&](const GradingScene& s) {
+        return s.reference.scene == r.speedScene;
+    });
+    const std::string path = scene != setup.scenes.end() ? scene->path : setup.scenes.front().path;
+    const double startup = startupSeconds(setup, path);
+    const double samples = static_cast<double>(r.speedWidth) * r.speedHeight * r.speedSpp[static_cast<int>(lab)];
+    std::vector<double> student, solution;
+    for (int run = 0; run < r.speedRuns; ++run) {
+        // Interleaved A B A B: a slow spell of a shared machine hits both alike.
+        for (Implementation impl : {Implementation::Student, Implementation::Solution}) {
+            RenderRequest request{impl == Implementation::Student ? setup.studentViewer : setup.solutionViewer,
+                                  path, lab, impl, r.speedWidth, r.speedHeight,
+                                  r.speedSpp[static_cast<int>(lab)], r.maxDepth, r.continueProb,
+                                  static_cast<uint64_t>(77 + run), setup.threads, setup.scratch};
+            const RenderResult result = renderLab(request, limitsOf(r));
+            if (!result.ok) {
+                check.summary = std::string(impl == Implementation::Student ? "the lab " : "the reference ") +
+                                result.failure + " in a timed run";
+                return check;
+            }
+            const double seconds = std::max(result.process.seconds - startup, 1e-3);
+            (impl == Implementation::Student ? student : solution).push_back(samples / seconds);
+        }
+    }
+    grade.studentSamplesPerSecond = median(student);
+    grade.solutionSamplesPerSecond = median(solution);
+    const double ratio = grade.studentSamplesPerSecond / grade.solutionSamplesPerSecond;
+    check.summary = format("%.3g samples/s, %.2f times the reference solution's %.3g (at least %.2f)",
+                           grade.studentSamplesPerSecond, ratio, grade.solutionSamplesPerSecond,
+                           r.minSpeedRatio);
+    if (!correct) {
+        check.summary += "; speed counts only for a correct lab";
+        return check;
+    }
+    check.passed = ratio >= r.minSpeedRatio;
+    check.score = check.passed ? check.maxScore : 0;
+    if (!check.passed)
+        check.details.push_back("slower than the reference at the same image: extra rays (e.g. a "
+                                "shadow ray or bounce that is not needed), or work repeated per sample");
+    return check;
+}
+
+} // namespace
+
+LabGrade gradeLab(const GraderSetup& setup, Lab lab) {
+    LabGrade grade{lab, {}, 0, 0, {}};
+    std::array<double, 3> noiseVariance{-1, -1, -1};
+    grade.checks.push_back(checkCorrectness(setup, lab, grade, noiseVariance));
+    grade.checks.push_back(checkNoise(setup, lab, grade.checks[0].passed, noiseVariance));
+    if (setup.measureSpeed) grade.checks.push_back(checkSpeed(setup, lab, grade.checks[0].passed, grade));
+    return grade;
+}
+
+} // namespace pathlab::grader

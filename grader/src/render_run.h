@@ -1,0 +1,45 @@
+#pragma once
+/// One render of one lab through a viewer process: the grader never runs lab code in its own
+/// process, so a crash, a hang or a runaway allocation costs one run, not the grading.
+
+#include "process_runner.h"
+
+#include "pathlab/lab_registry.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pathlab::grader {
+
+struct RenderRequest {
+    std::string viewer;            ///< the viewer binary holding the labs to grade
+    std::string scene;             ///< .ecs path
+    Lab lab = Lab::Branching;
+    Implementation implementation = Implementation::Student;
+    int width = 64, height = 64, spp = 16;
+    int maxDepth = 3;
+    float continueProb = 0.8f;
+    uint64_t seed = 0;
+    int threads = 0;
+    std::string scratch;           ///< a folder for the image and stats
+};
+
+struct RenderResult {
+    bool ok = false;
+    std::string failure;           ///< why not ok, in words for the student
+    ProcessOutcome process;
+    std::vector<float> image;      ///< linear RGB, top row first
+    int width = 0, height = 0;
+    std::array<double, 3> meanVariance{}; ///< per-sample variance, averaged over pixels
+    int nonfinitePixels = 0;
+};
+
+RenderResult renderLab(const RenderRequest& request, const ProcessLimits& limits);
+
+/// Means of the image and of its tiles × tiles regions, per channel: region 0 is the whole
+/// image, then the tiles row by row. Returned flat: [region][channel].
+std::vector<double> regionMeans(const std::vector<float>& image, int width, int height, int tiles);
+
+} // namespace pathlab::grader

@@ -1,0 +1,242 @@
+#include "reports.h"
+
+#include "pathlab/false_colour.h"
+#include "pathlab/image_io.h"
+#include "pathlab/render_stats.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace pathlab::grader {
+
+double GradeReport::score() const {
+    double s = 0;
+    for (const LabGrade& l : labs) s += l.score();
+    return s;
+}
+
+double GradeReport::maxScore() const {
+    double s = 0;
+    for (const LabGrade& l : labs) s += l.maxScore();
+    return s;
+}
+
+namespace {
+
+std::string escapeXml(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
+std::string checkText(const CheckResult& c) {
+    std::string text = c.summary;
+    for (const std::string& d : c.details) text += "\n  " + d;
+    return text;
+}
+
+std::string base64(const std::string& bytes) {
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    size_t i = 0;
+    for (; i + 2 < bytes.size(); i += 3) {
+        const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
+                           (static_cast<unsigned char>(bytes[i + 1]) << 8) |
+                           static_cast<unsigned char>(bytes[i + 2]);
+        for (int k = 3; k >= 0; --k) out += table[(v >> (6 * k)) & 63];
+    }
+    if (i < bytes.size()) {
+        unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
+        if (i + 1 < bytes.size()) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+        out += table[(v >> 18) & 63];
+        out += table[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
+        out += '=';
+    }
+    return out;
+}
+
+std::string readBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+} // namespace
+
+std::vector<LabRatio> labRatios(const GradeReport& report) {
+    auto rate = [&](Lab lab, bool student) {
+        for (const LabGrade& l : report.labs)
+            if (l.lab == lab) return student ? l.studentSamplesPerSecond : l.solutionSamplesPerSecond;
+        return 0.0;
+    };
+    std::vector<LabRatio> ratios;
+    const std::pair<Lab, Lab> pairs[] = {{Lab::Uniform, Lab::Branching},
+                                         {Lab::Importance, Lab::Uniform},
+                                         {Lab::Roulette, Lab::Importance}};
+    for (auto [a, b] : pairs) {
+        if (rate(a, true) > 0 && rate(b, true) > 0)
+            ratios.push_back({std::string(labName(a)) + "/" + std::string(labName(b)),
+                              rate(a, true) / rate(b, true), rate(a, false) / rate(b, false)});
+    }
+    return ratios;
+}
+
+std::string terminalReport(const GradeReport& report, bool colour) {
+    const char* green = colour ? "\033[32m" : "";
+    const char* red = colour ? "\033[31m" : "";
+    const char* reset = colour ? "\033[0m" : "";
+    std::ostringstream out;
+    char line[512];
+    std::snprintf(line, sizeof line, "%-11s %-12s %-12s %-12s %s\n", "lab", "correctness", "noise", "speed", "score");
+    out << line;
+    for (const LabGrade& lab : report.labs) {
+        out << std::string(labName(lab.lab)) << std::string(12 - labName(lab.lab).size(), ' ');
+        for (const CheckResult& c : lab.checks) {
+            std::snprintf(line, sizeof line, "%s %g/%g", c.passed ? "pass" : "FAIL", c.score, c.maxScore);
+            std::string cell = line;
+            cell.resize(std::max<size_t>(cell.size() + 1, 13), ' ');
+            out << (c.passed ? green : red) << cell << reset;
+        }
+        std::snprintf(line, sizeof line, "%g/%g\n", lab.score(), lab.maxScore());
+        out << line;
+    }
+    std::snprintf(line, sizeof line, "total %g/%g in %.0f s\n", report.score(), report.maxScore(), report.seconds);
+    out << line;
+    for (const LabGrade& lab : report.labs)
+        for (const CheckResult& c : lab.checks)
+            out << "\n" << labName(lab.lab) << " " << c.name << ": " << (c.passed ? "" : red)
+                << checkText(c) << reset;
+    out << "\n";
+    const auto ratios = labRatios(report);
+    if (!ratios.empty()) {
+        out << "\nspeed ratios (samples/s)      yours   reference\n";
+        for (const LabRatio& r : ratios) {
+            std::snprintf(line, sizeof line, "  %-26s %6.2f   %6.2f\n", r.name.c_str(), r.student, r.reference);
+            out << line;
+        }
+    }
+    for (const std::string& note : report.notes) out << "note: " << note << "\n";
+    return out.str();
+}
+
+std::string jsonReport(const GradeReport& report) {
+    nlohmann::json labs = nlohmann::json::array();
+    for (const LabGrade& lab : report.labs) {
+        nlohmann::json checks = nlohmann::json::array();
+        for (const CheckResult& c : lab.checks)
+            checks.push_back({{"name", c.name}, {"score", c.score}, {"max_score", c.maxScore},
+                              {"passed", c.passed}, {"summary", c.summary}, {"details", c.details}});
+        labs.push_back({{"lab", labName(lab.lab)}, {"score", lab.score()}, {"max_score", lab.maxScore()},
+                        {"checks", checks},
+                        {"samples_per_second", {{"student", lab.studentSamplesPerSecond},
+                                                {"solution", lab.solutionSamplesPerSecond}}}});
+    }
+    nlohmann::json ratios = nlohmann::json::object();
+    for (const LabRatio& r : labRatios(report))
+        ratios[r.name] = {{"student", r.student}, {"reference", r.reference}};
+    const nlohmann::json j = {{"kit_version", PATHLAB_VERSION}, {"score", report.score()},
+                              {"max_score", report.maxScore()}, {"seconds", report.seconds},
+                              {"labs", labs}, {"speed_ratios", ratios}, {"notes", report.notes}};
+    return j.dump(2) + "\n";
+}
+
+std::string junitReport(const GradeReport& report) {
+    int tests = 0, failures = 0;
+    for (const LabGrade& lab : report.labs)
+        for (const CheckResult& c : lab.checks) ++tests, failures += !c.passed;
+    std::ostringstream out;
+    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        << "<testsuites tests=\"" << tests << "\" failures=\"" << failures << "\" time=\"" << report.seconds << "\">\n"
+        << "  <testsuite name=\"pathlab-grader\" tests=\"" << tests << "\" failures=\"" << failures << "\">\n";
+    for (const LabGrade& lab : report.labs) {
+        for (const CheckResult& c : lab.checks) {
+            out << "    <testcase classname=\"" << labName(lab.lab) << "\" name=\"" << escapeXml(c.name) << "\">\n";
+            if (!c.passed)
+                out << "      <failure message=\"" << escapeXml(c.summary) << "\">" << escapeXml(checkText(c)) << "</failure>\n";
+            else
+                out << "      <system-out>" << escapeXml(checkText(c)) << "</system-out>\n";
+            out << "    </testcase>\n";
+        }
+    }
+    out << "  </testsuite>\n</testsuites>\n";
+    return out.str();
+}
+
+std::string gradescopeReport(const GradeReport& report) {
+    nlohmann::json tests = nlohmann::json::array();
+    for (const LabGrade& lab : report.labs)
+        for (const CheckResult& c : lab.checks)
+            tests.push_back({{"name", std::string(labName(lab.lab)) + ": " + c.name},
+                             {"score", c.score},
+                             {"max_score", c.maxScore},
+                             {"status", c.passed ? "passed" : "failed"},
+                             {"output", checkText(c)},
+                             {"visibility", "visible"}});
+    const nlohmann::json j = {{"score", report.score()},
+                              {"execution_time", static_cast<int>(report.seconds + 0.5)},
+                              {"output", terminalReport(report, false)},
+                              {"tests", tests}};
+    return j.dump(2) + "\n";
+}
+
+void writeHtmlReport(const GradeReport& report, const std::string& folder) {
+    namespace fs = std::filesystem;
+    fs::create_directories(folder);
+    auto png = [&](int w, int h, const std::vector<float>& rgb) {
+        const std::string path = folder + "/.picture.png";
+        writeImage(path, w, h, rgb);
+        const std::string data = base64(readBytes(path));
+        fs::remove(path);
+        return "<img src=\"data:image/png;base64," + data + "\" width=\"" + std::to_string(2 * w) + "\">";
+    };
+    auto heat = [&](int w, int h, const std::vector<float>& a, const std::vector<float>& b) {
+        std::vector<unsigned char> rgba, rgb;
+        relativeDifferenceImage(a, b, 0.5f, rgba);
+        for (size_t i = 0; i < rgba.size(); i += 4) rgb.insert(rgb.end(), {rgba[i], rgba[i + 1], rgba[i + 2]});
+        const std::string path = folder + "/.heat.png";
+        writeDisplayImage(path, w, h, rgb);
+        const std::string data = base64(readBytes(path));
+        fs::remove(path);
+        return "<img src=\"data:image/png;base64," + data + "\" width=\"" + std::to_string(2 * w) + "\">";
+    };
+    std::ostringstream html;
+    html << "<!doctype html><html><head><meta charset=\"utf-8\"><title>PathLab grade</title><style>"
+            "body{font-family:sans-serif;max-width:1100px;margin:auto}td,th{padding:4px 10px;text-align:left}"
+            ".pass{color:#080}.fail{color:#b00}pre{background:#f4f4f4;padding:8px;white-space:pre-wrap}"
+            "</style></head><body>\n<h1>PathLab grade: " << report.score() << " / " << report.maxScore() << "</h1>\n"
+         << "<table><tr><th>lab</th><th>check</th><th>score</th><th>result</th></tr>\n";
+    for (const LabGrade& lab : report.labs)
+        for (const CheckResult& c : lab.checks)
+            html << "<tr><td>" << labName(lab.lab) << "</td><td>" << c.name << "</td><td>" << c.score << " / "
+                 << c.maxScore << "</td><td class=\"" << (c.passed ? "pass\">pass" : "fail\">FAIL") << "</td></tr>\n";
+    html << "</table>\n";
+    for (const LabGrade& lab : report.labs) {
+        html << "<h2>" << labName(lab.lab) << "</h2>\n";
+        for (const CheckResult& c : lab.checks) html << "<h3>" << c.name << "</h3><pre>" << escapeXml(checkText(c)) << "</pre>\n";
+        for (const auto& p : lab.pictures) {
+            if (p.student.empty() || p.reference.size() != p.student.size()) continue;
+            html << "<p>" << p.scene << ": yours, the reference, |yours − reference| / reference "
+                 << "(black 0, blue 0.125, green 0.25, yellow 0.375, red ≥ 0.5)</p><p>"
+                 << png(p.width, p.height, p.student) << " " << png(p.width, p.height, p.reference) << " "
+                 << heat(p.width, p.height, p.student, p.reference) << "</p>\n";
+        }
+    }
+    html << "</body></html>\n";
+    writeFileAtomically(folder + "/index.html", html.str());
+}
+
+} // namespace pathlab::grader

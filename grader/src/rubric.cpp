@@ -1,0 +1,51 @@
+#include "rubric.h"
+
+#include "pathlab/input_error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+namespace pathlab::grader {
+
+Rubric loadRubric(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw InputError(path + ": cannot open the rubric");
+    Rubric r;
+    try {
+        const nlohmann::json j = nlohmann::json::parse(in);
+        for (Lab lab : AllLabs) {
+            const auto& p = j.at("points").at(std::string(labName(lab)));
+            r.points[static_cast<int>(lab)] = {p.at("correctness"), p.at("noise"), p.at("speed")};
+            r.correctnessSpp[static_cast<int>(lab)] = j.at("correctness").at("spp").at(std::string(labName(lab)));
+            r.speedSpp[static_cast<int>(lab)] = j.at("speed").at("spp").at(std::string(labName(lab)));
+        }
+        r.maxDepth = j.at("parameters").at("max_depth");
+        r.continueProb = j.at("parameters").at("continue_prob");
+        const auto& c = j.at("correctness");
+        r.alpha = c.at("alpha");
+        r.seeds = c.at("seeds");
+        r.width = c.at("width");
+        r.height = c.at("height");
+        r.tiles = c.at("tiles");
+        r.scenes = c.at("scenes").get<std::vector<std::string>>();
+        r.maxNoiseRatio = j.at("noise").at("max_ratio");
+        r.noiseScene = j.at("noise").at("scene");
+        const auto& s = j.at("speed");
+        r.minSpeedRatio = s.at("min_ratio");
+        r.speedRuns = s.at("runs");
+        r.speedScene = s.at("scene");
+        r.speedWidth = s.at("width");
+        r.speedHeight = s.at("height");
+        r.secondsPerRun = j.at("limits").at("seconds_per_run");
+        r.memoryBytes = static_cast<long long>(j.at("limits").at("memory_mb").get<double>()) << 20;
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(path + ": " + e.what());
+    }
+    if (r.seeds < 2 || r.width < r.tiles || r.height < r.tiles || r.tiles < 1 ||
+        !(r.continueProb > 0 && r.continueProb < 1) || r.maxDepth < 0 || r.speedRuns < 1)
+        throw InputError(path + ": seeds must be >= 2, tiles fit the image, 0 < continue_prob < 1");
+    return r;
+}
+
+} // namespace pathlab::grader

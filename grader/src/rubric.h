@@ -1,0 +1,39 @@
+#pragma once
+/// The instructor-editable rubric (grader/rubric.json): points, thresholds, render sizes.
+
+#include "pathlab/lab_registry.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace pathlab::grader {
+
+struct LabPoints {
+    double correctness = 0, noise = 0, speed = 0;
+};
+
+struct Rubric {
+    std::array<LabPoints, 4> points;       ///< by Lab
+    int maxDepth = 3;
+    float continueProb = 0.8f;             ///< lab 4 is graded here: finite variance on VI2
+    double alpha = 1e-3;                   ///< family-wise false-fail rate of one correctness check
+    int seeds = 10;
+    int width = 64, height = 64, tiles = 4;
+    std::array<int, 4> correctnessSpp{};
+    std::vector<std::string> scenes;       ///< public scenes, by name in models/
+    double maxNoiseRatio = 1.5;
+    std::string noiseScene;
+    double minSpeedRatio = 0.75;
+    int speedRuns = 5;
+    std::string speedScene;
+    int speedWidth = 256, speedHeight = 256;
+    std::array<int, 4> speedSpp{};
+    double secondsPerRun = 30;
+    long long memoryBytes = 4LL << 30;
+};
+
+/// Reads a rubric; throws InputError naming the file and the missing or wrong entry.
+Rubric loadRubric(const std::string& path);
+
+} // namespace pathlab::grader

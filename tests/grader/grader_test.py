@@ -1,0 +1,139 @@
+#!/usr/bin/env python3
+"""The grader against known answers: the reference solutions submitted as a student's labs
+pass every check; the lab stubs fail with a diagnosis; every mutant in mutants.json fails by
+the intended check with the intended words; the report formats are well formed.
+
+--slow adds the mutants that need the frame-rate check and a false-fail validation: 200
+gradings of the solutions' correctness and noise with distinct seeds, which should all pass
+(each correctness check has a family-wise false-fail rate <= 1e-3 before its retry on fresh
+seeds, so about 1e-6 after it).
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--build", required=True)
+parser.add_argument("--source", required=True)
+parser.add_argument("--slow", action="store_true")
+args = parser.parse_args()
+GRADER = os.path.join(args.build, "grader")
+failures = []
+
+
+def check(condition, what):
+    print(("PASS " if condition else "FAIL ") + what, flush=True)
+    if not condition:
+        failures.append(what)
+
+
+def grade(viewer, extra, tmp, name):
+    report = os.path.join(tmp, name + ".json")
+    run = subprocess.run([GRADER, "--viewer", viewer, "--json", report, *extra],
+                         capture_output=True, text=True, timeout=1800)
+    if not os.path.exists(report):
+        return run, None
+    return run, json.load(open(report))
+
+
+def fast_rubric(tmp):
+    """The public rubric with a short per-run time limit, so the endless-loop mutant is quick."""
+    rubric = json.load(open(os.path.join(args.source, "grader", "rubric.json")))
+    rubric["limits"]["seconds_per_run"] = 10
+    rubric["limits"]["memory_mb"] = 2048
+    path = os.path.join(tmp, "rubric.json")
+    json.dump(rubric, open(path, "w"))
+    return path
+
+
+def solutions_pass(tmp):
+    out = {k: os.path.join(tmp, "solutions." + k) for k in ("xml", "gradescope.json", "html")}
+    run, report = grade(os.path.join(args.build, "viewer_solutions_as_student"),
+                        ["--junit", out["xml"], "--gradescope", out["gradescope.json"], "--html", out["html"]],
+                        tmp, "solutions")
+    print(run.stdout)
+    check(run.returncode == 0 and report is not None, "the solutions, graded as a student's labs, pass (exit 0)")
+    if report:
+        for lab in report["labs"]:
+            for c in lab["checks"]:
+                check(c["passed"], f"solution {lab['lab']}: {c['name']} passes ({c['summary']})")
+        check(set(report["speed_ratios"]) == {"uniform/branching", "importance/uniform", "roulette/importance"},
+              "the speed ratios between labs are reported")
+    # Gradescope's results.json: the fields and types its specification asks for.
+    g = json.load(open(out["gradescope.json"]))
+    check(isinstance(g["score"], (int, float)) and isinstance(g["execution_time"], int)
+          and isinstance(g["output"], str) and isinstance(g["tests"], list) and len(g["tests"]) == 12,
+          "Gradescope results.json has score, execution_time, output and 12 tests")
+    check(all(isinstance(t["name"], str) and isinstance(t["score"], (int, float))
+              and isinstance(t["max_score"], (int, float)) and t["status"] in ("passed", "failed")
+              and isinstance(t["output"], str) and t["visibility"] in ("visible", "hidden", "after_due_date", "after_published")
+              for t in g["tests"]), "every Gradescope test has name, score, max_score, status, output, visibility")
+    suites = ET.parse(out["xml"]).getroot()
+    check(suites.tag == "testsuites" and len(suites.findall(".//testcase")) == 12
+          and not suites.findall(".//failure"), "the JUnit XML parses: 12 test cases, no failures")
+    html = open(os.path.join(out["html"], "index.html")).read()
+    check(html.count("data:image/png;base64,") >= 12, "the HTML report embeds its images")
+
+
+def stubs_fail(tmp):
+    for lab in ("branching", "roulette"):
+        run, report = grade(os.path.join(args.build, "viewer"), ["--lab", lab, "--no-speed"], tmp, "stub-" + lab)
+        correctness = report["labs"][0]["checks"][0] if report else None
+        text = json.dumps(correctness)
+        check(run.returncode == 1 and correctness and not correctness["passed"]
+              and "direct light only" in text, f"the {lab} stub fails correctness, diagnosed as direct light only")
+
+
+def mutants(tmp, slow):
+    table = json.load(open(os.path.join(args.source, "tests", "grader", "mutants.json")))["mutants"]
+    rubric = fast_rubric(tmp)
+    rows = []
+    for name, m in sorted(table.items()):
+        if m.get("slow", False) != slow:
+            continue
+        extra = ["--lab", m["lab"], "--rubric", rubric]
+        if m["fails"] != "speed":
+            extra.append("--no-speed")
+        run, report = grade(os.path.join(args.build, "mutants", name), extra, tmp, name)
+        checks = {c["name"]: c for c in report["labs"][0]["checks"]} if report else {}
+        target = checks.get(m["fails"])
+        text = json.dumps(target) if target else ""
+        verdict = "failed" if target and not target["passed"] else "NOT FAILED"
+        diagnosis = next((d for d in (target or {}).get("details", []) if d.startswith("likely cause")),
+                         (target or {}).get("summary", ""))
+        rows.append(f"| {name} | {m['lab']} | {m['fails']}: {verdict} | {diagnosis[:110]} |")
+        check(report is not None and target is not None and not target["passed"] and m["says"] in text,
+              f"mutant {name}: {m['fails']} fails and says '{m['says']}'")
+    print("\n| mutant | lab | verdict | diagnosis |\n|---|---|---|---|\n" + "\n".join(rows) + "\n")
+
+
+def false_fail_validation(tmp, gradings=200):
+    labs = ["branching", "uniform", "importance", "roulette"]
+    fails = 0
+    for i in range(gradings):
+        lab = labs[i % 4]
+        run, report = grade(os.path.join(args.build, "viewer_solutions_as_student"),
+                            ["--lab", lab, "--no-speed", "--seed", str(1000 + i)], tmp, "validation")
+        passed = report is not None and all(c["passed"] for c in report["labs"][0]["checks"])
+        fails += not passed
+        if not passed:
+            print(f"false fail: {lab} seed {1000 + i}: {run.stdout}", flush=True)
+    print(f"false-fail validation: {fails} of {gradings} gradings of correct labs failed", flush=True)
+    check(fails == 0, "no correct lab failed in the validation")
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    if args.slow:
+        mutants(tmp, slow=True)
+        false_fail_validation(tmp)
+    else:
+        solutions_pass(tmp)
+        stubs_fail(tmp)
+        mutants(tmp, slow=False)
+if failures:
+    print(f"{len(failures)} check(s) failed")
+    sys.exit(1)

@@ -1,0 +1,44 @@
+// Mutant 'importance_uniform_pick': picks a component uniformly in the importance lab (right mean, more noise)
+// A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
+// Lab 3: importance selection of one component (handouts/03-importance-pick.md).
+// 
+#include "pathlab/lab.h"
+
+#include <algorithm>
+
+namespace pathlab::importance {
+
+Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
+    const Hit hit = ctx.trace(ray);
+    if (!hit) return Color();
+    Color radiance;
+
+    // Emission, where next-event estimation could not have counted it (TODO lab3.1).
+    if (ray.kind != RayKind::Diffuse) radiance += hit.emitted;
+
+    // Direct light at diffuse surfaces: next-event estimation.
+    radiance += ctx.directLight(hit);
+
+    // The depth limit (TODO lab3.2).
+    if (depth >= ctx.maxDepth) return radiance;
+
+    // Probabilities proportional to each component's strength; stop on a near-black surface
+    // (TODO lab3.3).
+    const Material& m = hit.material;
+    const float diffuse = reduceMax(m.Kd), mirror = reduceMax(m.Ks), transmit = reduceMax(m.Kt);
+    const float total = diffuse + mirror + transmit;
+    if (total < 0.01f) return radiance;
+
+    // Trace the chosen component and divide by its probability (TODO lab3.4).
+    // Picks uniformly (correctly weighted) instead of by importance.
+    const int component = std::min(static_cast<int>(ctx.sampler.get1D() * 3.0f), 2);
+    if (component == 0 && diffuse > 0)
+        radiance += m.Kd * pathTrace(diffuseRay(hit, ctx.sampler.get2D()), depth + 1, ctx) * 3.0f;
+    if (component == 1 && mirror > 0)
+        radiance += m.Ks * pathTrace(mirrorRay(ray, hit), depth + 1, ctx) * 3.0f;
+    if (component == 2 && transmit > 0)
+        radiance += m.Kt * pathTrace(refractionRay(ray, hit), depth + 1, ctx) * 3.0f;
+    return radiance;
+}
+
+} // namespace pathlab::importance
