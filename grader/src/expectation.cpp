@@ -1,6 +1,6 @@
 #include "expectation.h"
 
-#include "statistics.h"
+#include "hypothesis_tests.h"
 
 #include "pathlab/image_io.h"
 #include "pathlab/input_error.h"

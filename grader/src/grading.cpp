@@ -1,7 +1,7 @@
 #include "grading.h"
 
 #include "diagnosis.h"
-#include "statistics.h"
+#include "hypothesis_tests.h"
 
 #include <algorithm>
 #include <cmath>
@@ -250,6 +250,13 @@ CheckResult checkNoise(const GraderSetup& setup, Lab lab, bool correct,
     return check;
 }
 
+/// The mean of an image's pixels over all channels.
+double imageMean(const std::vector<float>& image) {
+    double sum = 0;
+    for (float v : image) sum += v;
+    return image.empty() ? 0 : sum / static_cast<double>(image.size());
+}
+
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v.empty() ? 0 : v[v.size() / 2];
@@ -283,6 +290,7 @@ CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade
     const double startup = startupSeconds(setup, path);
     const double samples = static_cast<double>(r.speedWidth) * r.speedHeight * r.speedSpp[static_cast<int>(lab)];
     std::vector<double> student, solution;
+    std::vector<double> studentMeans, solutionMeans; // whole-image radiance of each timed run
     for (int run = 0; run < r.speedRuns; ++run) {
         // Interleaved A B A B: a slow spell of a shared machine hits both alike.
         for (Implementation impl : {Implementation::Student, Implementation::Solution}) {
@@ -298,6 +306,8 @@ CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade
             }
             const double seconds = std::max(result.process.seconds - startup, 1e-3);
             (impl == Implementation::Student ? student : solution).push_back(samples / seconds);
+            (impl == Implementation::Student ? studentMeans : solutionMeans)
+                .push_back(imageMean(result.image));
         }
     }
     grade.studentSamplesPerSecond = median(student);
@@ -308,6 +318,17 @@ CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade
                            r.minSpeedRatio);
     if (!correct) {
         check.summary += "; speed counts only for a correct lab";
+        return check;
+    }
+    // The timed runs must render the same image as the reference's too: a lab that is correct
+    // in the correctness runs but cuts corners when it runs longer earns no speed points.
+    const double floor = floatRoundingFloor * median(solutionMeans);
+    if (r.speedRuns >= 2 && welchTwoSidedP(studentMeans, solutionMeans, floor) < r.alpha) {
+        check.summary += "; the timed runs' mean radiance differs from the reference's, and "
+                         "speed counts only for a correct timed run";
+        check.details.push_back(format("mean radiance of the timed runs: yours %.4g, the "
+                                       "reference's %.4g", median(studentMeans),
+                                       median(solutionMeans)));
         return check;
     }
     check.passed = ratio >= r.minSpeedRatio;

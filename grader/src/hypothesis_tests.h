@@ -1,5 +1,6 @@
 #pragma once
-/// The grader's statistics: Student's t, batch means, and Holm's step-down correction.
+/// The grader's hypothesis tests: Student's t, batch means, Welch's test and Holm's step-down
+/// correction.
 
 #include <vector>
 
@@ -18,6 +19,12 @@ struct MeanEstimate {
 
 /// Mean and standard error of independent batch values (one per seed).
 MeanEstimate batchMean(const std::vector<double>& values);
+
+/// Two-sided p-value of Welch's t-test that samples `a` and `b` (at least 2 values each) share
+/// their mean. `standardErrorFloor` is added to the difference's standard error in quadrature,
+/// for values that differ by rounding alone.
+double welchTwoSidedP(const std::vector<double>& a, const std::vector<double>& b,
+                      double standardErrorFloor = 0);
 
 /// Holm's method: which of the hypotheses with p-values `p` are rejected, keeping the
 /// family-wise error rate at `alpha`.

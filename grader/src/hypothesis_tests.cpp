@@ -1,4 +1,4 @@
-#include "statistics.h"
+#include "hypothesis_tests.h"
 
 #include <algorithm>
 #include <cmath>
@@ -67,6 +67,19 @@ MeanEstimate batchMean(const std::vector<double>& values) {
     for (double v : values) squares += (v - e.mean) * (v - e.mean);
     e.standardError = std::sqrt(squares / (n - 1) / n);
     return e;
+}
+
+double welchTwoSidedP(const std::vector<double>& a, const std::vector<double>& b,
+                      double standardErrorFloor) {
+    const MeanEstimate ma = batchMean(a), mb = batchMean(b);
+    const double va = ma.standardError * ma.standardError, vb = mb.standardError * mb.standardError;
+    const double se = std::sqrt(va + vb + standardErrorFloor * standardErrorFloor);
+    if (se == 0) return ma.mean == mb.mean ? 1.0 : 0.0;
+    // Welch–Satterthwaite degrees of freedom; the floor, which has no sampling noise, is left out.
+    const double na = static_cast<double>(a.size()), nb = static_cast<double>(b.size());
+    const double denominator = va * va / (na - 1) + vb * vb / (nb - 1);
+    const double dof = denominator > 0 ? (va + vb) * (va + vb) / denominator : na + nb - 2;
+    return studentTwoSidedP((ma.mean - mb.mean) / se, dof);
 }
 
 std::vector<bool> holmRejections(const std::vector<double>& p, double alpha) {

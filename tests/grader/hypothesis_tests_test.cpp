@@ -1,0 +1,66 @@
+// The grader's statistics and diagnoses against values computed independently: Student's t
+// quantiles from printed tables, a Welch test worked by hand (and by numerical integration of
+// the t density), Holm's step-down on a small example, and the furnace series.
+#include "catch.h"
+
+#include "diagnosis.h"
+#include "hypothesis_tests.h"
+
+#include <cmath>
+
+using namespace pathlab;
+using namespace pathlab::grader;
+
+TEST_CASE("Student's t p-values and critical values match the tables", "[grader]") {
+    CHECK(studentTwoSidedP(2.228139, 10) == Approx(0.05).epsilon(1e-5));
+    CHECK(studentTwoSidedP(-2.228139, 10) == Approx(0.05).epsilon(1e-5));
+    CHECK(studentTwoSidedP(12.7062, 1) == Approx(0.05).epsilon(1e-4));
+    CHECK(studentTwoSidedP(1.959964, 1e7) == Approx(0.05).epsilon(1e-5));
+    CHECK(studentTwoSidedP(0, 9) == Approx(1.0));
+    CHECK(studentTwoSidedP(INFINITY, 9) == 0);
+    // The grader's own threshold: 10 seeds, alpha 1e-3.
+    CHECK(studentCritical(1e-3, 9) == Approx(4.780913).epsilon(1e-5));
+}
+
+TEST_CASE("Welch's test gives the hand-worked p-value", "[grader]") {
+    // Means 3 and 4.5, standard errors² 0.5 and 0.5833: t = -1.4412 on 8.989 degrees of freedom.
+    CHECK(welchTwoSidedP({1, 2, 3, 4, 5}, {2, 3, 4, 5, 6, 7}) == Approx(0.18345).epsilon(1e-3));
+    // Identical constant samples agree; constant samples that differ by rounding agree only
+    // with a floor, and differ without one.
+    CHECK(welchTwoSidedP({0.2, 0.2}, {0.2, 0.2}) == 1.0);
+    CHECK(welchTwoSidedP({0.2000002, 0.2000002}, {0.2, 0.2}) == 0.0);
+    CHECK(welchTwoSidedP({0.2000002, 0.2000002}, {0.2, 0.2}, 0.2 * 1e-5) > 0.5);
+}
+
+TEST_CASE("batch means give the mean and its standard error", "[grader]") {
+    const MeanEstimate m = batchMean({1, 2, 3, 4});
+    CHECK(m.mean == Approx(2.5));
+    CHECK(m.standardError == Approx(std::sqrt(1.6666667 / 4)));
+}
+
+TEST_CASE("Holm's method steps down and stops at the first acceptance", "[grader]") {
+    // Sorted: 0.005 <= 0.05/4, 0.01 <= 0.05/3, 0.03 > 0.05/2: stop; 0.04 is not rejected either
+    // although it is below alpha.
+    const std::vector<bool> rejected = holmRejections({0.01, 0.04, 0.03, 0.005}, 0.05);
+    CHECK(rejected == std::vector<bool>{true, false, false, true});
+    CHECK(holmRejections({0.5, 0.9}, 0.05) == std::vector<bool>{false, false});
+}
+
+TEST_CASE("the furnace values of correct labs and of known bugs", "[grader]") {
+    const FurnaceModel model{0.5, 3, 0.8};
+    // Le·(1 − a^(maxDepth+2))/(1 − a) for labs 1–3; Le/(1 − a) for lab 4 (Le = 1).
+    CHECK(correctFurnaceValue(Lab::Branching, model) == Approx(1.9375));
+    CHECK(correctFurnaceValue(Lab::Roulette, model) == Approx(2.0).epsilon(1e-6));
+    CHECK(diagnoseFurnace(Lab::Uniform, model, 1.9375, 0.002).empty());
+    // Forgetting the 1/3: each bounce weighs a/3, so 1.5 + 0.5/6 + 0.5/36 + 0.5/216.
+    CHECK(diagnoseFurnace(Lab::Uniform, model, 1.5995, 0.002).find("pick probability 1/3") !=
+          std::string::npos);
+    // One bounce too many: the series runs to a^(maxDepth+2).
+    CHECK(diagnoseFurnace(Lab::Branching, model, 1.96875, 0.002).find("one bounce too many") !=
+          std::string::npos);
+    // Without the roulette weight each continuation weighs a·q = 0.4 instead of a: the camera
+    // ray's Le plus next-event estimation's a at every vertex, 1 + 0.5/(1 − 0.4).
+    const double noWeight = 1 + 0.5 / (1 - 0.4);
+    CHECK(diagnoseFurnace(Lab::Roulette, model, noWeight, 0.002).find("Russian-roulette weight") !=
+          std::string::npos);
+}
