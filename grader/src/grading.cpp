@@ -35,10 +35,24 @@ ProcessLimits limitsOf(const Rubric& r) { return {r.secondsPerRun, r.memoryBytes
 /// k independent renders of one lab on one scene.
 struct SceneRuns {
     std::vector<std::vector<double>> regionValues; ///< [statistic][seed]
-    std::vector<double> imageSum;
-    std::array<double, 3> meanVariance{};
+    std::vector<double> imageSum, imageSumSquares; ///< per pixel and channel, over seeds
     int runs = 0;
     std::string failure;
+
+    /// Per-sample variance per channel, averaged over pixels, measured from how the seeds'
+    /// images differ: the variance of a pixel's k means times spp. The grader measures it from
+    /// the images alone, so a lab cannot report a smaller one than it has.
+    std::array<double, 3> perSampleVariance(int spp) const {
+        std::array<double, 3> variance{};
+        const size_t pixels = imageSum.size() / 3;
+        const double k = runs;
+        for (size_t i = 0; i < imageSum.size(); ++i) {
+            const double mean = imageSum[i] / k;
+            const double spread = (imageSumSquares[i] / k - mean * mean) * k / (k - 1);
+            variance[i % 3] += std::max(spread, 0.0) * spp / static_cast<double>(pixels);
+        }
+        return variance;
+    }
 };
 
 SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab lab, uint64_t seedBase) {
@@ -58,10 +72,13 @@ SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab l
         if (runs.regionValues.empty()) {
             runs.regionValues.resize(means.size());
             runs.imageSum.assign(result.image.size(), 0.0);
+            runs.imageSumSquares.assign(result.image.size(), 0.0);
         }
         for (size_t i = 0; i < means.size(); ++i) runs.regionValues[i].push_back(means[i]);
-        for (size_t i = 0; i < result.image.size(); ++i) runs.imageSum[i] += result.image[i];
-        for (int c = 0; c < 3; ++c) runs.meanVariance[c] += result.meanVariance[c] / r.seeds;
+        for (size_t i = 0; i < result.image.size(); ++i) {
+            runs.imageSum[i] += result.image[i];
+            runs.imageSumSquares[i] += static_cast<double>(result.image[i]) * result.image[i];
+        }
         ++runs.runs;
     }
     return runs;
@@ -111,7 +128,8 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
             failure = "on " + scene.reference.scene + " the lab " + runs.failure;
             return false;
         }
-        if (scene.reference.scene == r.noiseScene || noiseVariance[0] < 0) noiseVariance = runs.meanVariance;
+        if (scene.reference.scene == r.noiseScene || noiseVariance[0] < 0)
+            noiseVariance = runs.perSampleVariance(r.correctnessSpp[static_cast<int>(lab)]);
         comparisons.push_back(compare(runs, scene.reference.forLab(lab), r.seeds));
         allP.insert(allP.end(), comparisons.back().p.begin(), comparisons.back().p.end());
         LabGrade::Pictures pictures{scene.reference.scene, r.width, r.height, {}, scene.reference.forLab(lab).image};

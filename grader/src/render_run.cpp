@@ -34,6 +34,10 @@ RenderResult renderLab(const RenderRequest& r, const ProcessLimits& limits) {
         result.nonfinitePixels = s.at("nonfinite_pixels");
         for (int c = 0; c < 3; ++c) result.meanVariance[c] = s.at("mean_variance").at(c);
         const Image read = readImage(image);
+        // The lab runs in the process that writes this file: what it holds is checked, not trusted.
+        if (read.width != r.width || read.height != r.height)
+            throw std::runtime_error("the image is " + std::to_string(read.width) + "x" +
+                                     std::to_string(read.height) + ", not the size asked for");
         result.image = read.rgb;
         result.width = read.width;
         result.height = read.height;
