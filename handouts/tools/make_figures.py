@@ -1,0 +1,380 @@
+#!/usr/bin/env python3
+"""Makes the handouts' figures, and the numbers behind them, from the reference solutions.
+
+Usage: make_figures.py --build BUILD [--quick]
+
+Everything is measured on the VI2 Cornell box with BUILD/viewer: headless renders (-o FILE.pfm
+--stats FILE.json) for images, errors and timings, and the window under a virtual X server
+(Xvfb) for the frame rate and noise figure a student reads off the panel. Writes into
+handouts/figures/ (each plot beside the .csv of its numbers):
+
+  equal_time_LAB.png, equal_time.json   one image per estimator, all given the same render time
+  direct_light_only.png                 what the stubs render: emission and direct light only
+  convergence.png, convergence.csv      RMSE against a high-spp reference versus render time
+  estimators.csv                        samples/s, frame rate, noise and efficiency per estimator
+  roulette_sweep.png, roulette_sweep.csv
+                                        samples/s, RMSE at equal time and efficiency 1/(MSE*time)
+                                        over continueProb
+  references.json, run.json             the two references, and the machine and its load
+
+and rewrites the handouts' generated blocks (between "<!-- BEGIN generated: NAME -->" and
+"<!-- END generated: NAME -->") with the new numbers. Seeds are fixed: apart from timing, a run
+renders the same images. --quick renders tiny versions into a scratch folder, to try the script.
+
+Python 3 standard library, gnuplot and Xvfb only.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import platform
+import re
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pfm import mean_squared_error, read_pfm  # noqa: E402
+from viewer_runs import Viewer, start_xvfb, window_measurement  # noqa: E402
+
+TOOLS = os.path.dirname(os.path.abspath(__file__))
+HANDOUTS = os.path.dirname(TOOLS)
+SOURCE = os.path.dirname(HANDOUTS)
+SCENE = os.path.join(SOURCE, "models", "cornell_box_VI2_Specular.ecs")
+
+
+class Estimator:
+    """One lab's reference solution with its parameters, and the image it converges to."""
+
+    def __init__(self, key, lab, label, reference, continue_prob=None):
+        self.key, self.lab, self.label = key, lab, label
+        self.reference = reference  # "depth_limited" (labs 1-3, maxDepth 3) or "unbiased"
+        self.continue_prob = continue_prob
+
+
+ESTIMATORS = [
+    Estimator("branching", "branching", "branching (lab 1)", "depth_limited"),
+    Estimator("uniform", "uniform", "uniform pick (lab 2)", "depth_limited"),
+    Estimator("importance", "importance", "importance pick (lab 3)", "depth_limited"),
+    Estimator("roulette", "roulette", "roulette, continueProb 0.1 (lab 4's default)", "unbiased",
+              0.1),
+    Estimator("roulette_p08", "roulette", "roulette, continueProb 0.8 (as graded)", "unbiased",
+              0.8),
+]
+
+FULL = {
+    "study_size": 256,           # pixels per side of the convergence study and the sweep
+    "reference_spp": 2048,       # samples per pixel of the two references
+    "budgets": [0.25, 0.5, 1, 2, 4, 8],  # render times of the convergence study, seconds
+    "sweep": [0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9],
+    "sweep_budget": 3.0,         # seconds per sweep render
+    "sweep_seeds": 2,            # independent renders per continueProb, MSE averaged
+    "image_size": 512,           # the equal-time images
+    "image_budget": 8.0,
+    "window_size": 512,          # the frame-rate table: the window as a student sees it
+    "window_frames": 32,
+}
+QUICK = dict(FULL, study_size=32, reference_spp=64, budgets=[0.02, 0.05], sweep_budget=0.05,
+             sweep_seeds=1, image_size=48, image_budget=0.05, window_size=64, window_frames=4)
+
+REFERENCE_Q = 0.8        # continueProb of the unbiased reference: finite variance on this scene
+REFERENCE_SEEDS = {"depth_limited": 900001, "unbiased": 900002}
+
+
+def mean3(values):
+    return sum(values) / len(values)
+
+
+def make_references(viewer, p):
+    """The images labs 1-3 (maxDepth 3) and lab 4 (no depth limit) converge to, each with the
+    variance of its own pixel means, which the error measures subtract."""
+    references = {}
+    for kind, lab, q in [("depth_limited", "importance", None),
+                         ("unbiased", "roulette", REFERENCE_Q)]:
+        stats = viewer.render(f"reference_{kind}", lab, p["reference_spp"], p["study_size"],
+                              REFERENCE_SEEDS[kind], continue_prob=q)
+        stats["pixels"] = read_pfm(stats["image"])
+        stats["variance_of_mean"] = mean3(stats["mean_variance"]) / stats["spp"]
+        references[kind] = stats
+        print(f"reference {kind}: {lab} {stats['spp']} spp, {stats['seconds']:.1f} s", flush=True)
+    return references
+
+
+def error_against(stats, reference):
+    """MSE of an image against a reference, minus the reference's own noise: for independent
+    renders E[(X - R)^2] = E[(X - mu)^2] + Var(R), so this estimates the image's MSE alone."""
+    raw = mean_squared_error(read_pfm(stats["image"]), reference["pixels"])
+    return max(raw - reference["variance_of_mean"], 1e-12), raw
+
+
+def spp_for(budget, samples_per_second, size):
+    return max(1, round(budget * samples_per_second / (size * size)))
+
+
+def convergence_study(viewer, p, references, throughput):
+    rows = []
+    for index, e in enumerate(ESTIMATORS):
+        for step, budget in enumerate(p["budgets"]):
+            spp = spp_for(budget, throughput[e.key], p["study_size"])
+            stats = viewer.render(f"convergence_{e.key}_{step}", e.lab, spp, p["study_size"],
+                                  100 + 10 * index + step, continue_prob=e.continue_prob)
+            mse, raw = error_against(stats, references[e.reference])
+            rows.append({"estimator": e.key, "label": e.label, "reference": e.reference,
+                         "budget_seconds": budget, "spp": spp,
+                         "seconds": round(stats["seconds"], 4),
+                         "samples_per_second": round(stats["samples_per_second"]),
+                         "rays_per_sample": round(rays_per_sample(stats), 3),
+                         "per_sample_variance": round(mean3(stats["mean_variance"]), 5),
+                         "rmse": round(math.sqrt(mse), 6), "rmse_uncorrected": round(math.sqrt(raw), 6),
+                         "efficiency": round(1 / (mse * stats["seconds"]), 2)})
+            print(f"convergence {e.key} {budget} s: {spp} spp, RMSE {math.sqrt(mse):.4f}", flush=True)
+    return rows
+
+
+def rays_per_sample(stats):
+    rays = stats["rays"]["intersect"] + stats["rays"]["occluded"]
+    return rays / (stats["spp"] * stats["width"] * stats["height"])
+
+
+def roulette_sweep(viewer, p, references):
+    rows = []
+    for index, q in enumerate(p["sweep"]):
+        sps = viewer.samples_per_second("roulette", p["study_size"], continue_prob=q)
+        spp = spp_for(p["sweep_budget"], sps, p["study_size"])
+        renders = [viewer.render(f"sweep_{q:g}_{s}", "roulette", spp, p["study_size"],
+                                 200 + 10 * index + s, continue_prob=q)
+                   for s in range(p["sweep_seeds"])]
+        mse = mean3([error_against(r, references["unbiased"])[0] for r in renders])
+        seconds = mean3([r["seconds"] for r in renders])
+        rows.append({"continue_prob": q, "spp": spp, "seconds": round(seconds, 4),
+                     "samples_per_second": round(mean3([r["samples_per_second"] for r in renders])),
+                     "rays_per_sample": round(mean3([rays_per_sample(r) for r in renders]), 3),
+                     "per_sample_variance": round(mean3([mean3(r["mean_variance"]) for r in renders]), 4),
+                     "rmse": round(math.sqrt(mse), 6),
+                     "efficiency": round(1 / (mse * seconds), 2)})
+        print(f"sweep continueProb {q}: {spp} spp, RMSE {math.sqrt(mse):.4f}", flush=True)
+    return rows
+
+
+def window_table(viewer, p):
+    """Frame rate and noise as the window's panel shows them, under a virtual X server."""
+    if not shutil.which("Xvfb"):
+        raise SystemExit("make_figures: Xvfb is needed for the frame-rate table "
+                         "(scripts/install-deps.sh installs it)")
+    server, display = start_xvfb()
+    try:
+        return {e.key: window_measurement(viewer, display, e.lab, p["window_size"],
+                                          p["window_frames"], e.continue_prob)
+                for e in ESTIMATORS}
+    finally:
+        server.terminate()
+        server.wait()
+
+
+def equal_time_images(viewer, p, throughput, figures):
+    images = {}
+    for index, e in enumerate(ESTIMATORS):
+        spp = spp_for(p["image_budget"], throughput[e.key], p["image_size"])
+        stats = viewer.render(f"equal_time_{e.key}", e.lab, spp, p["image_size"], 300 + index,
+                              continue_prob=e.continue_prob, extension="png")
+        shutil.copyfile(stats["image"], os.path.join(figures, f"equal_time_{e.key}.png"))
+        images[e.key] = {"label": e.label, "spp": spp, "seconds": round(stats["seconds"], 3),
+                         "size": p["image_size"], "seed": 300 + index}
+    # The stubs before any TODO is done: emission seen by the camera plus direct light.
+    stats = viewer.render("direct_light_only", "branching", 64, p["image_size"], 399, max_depth=0,
+                          extension="png")
+    shutil.copyfile(stats["image"], os.path.join(figures, "direct_light_only.png"))
+    images["direct_light_only"] = {"label": "--max-depth 0: emission and direct light only",
+                                   "spp": 64, "seconds": round(stats["seconds"], 3),
+                                   "size": p["image_size"], "seed": 399}
+    return images
+
+
+def write_csv(path, rows):
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]), lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+
+
+def write_json(path, value):
+    with open(path, "w") as f:
+        json.dump(value, f, indent=2)
+        f.write("\n")
+
+
+def gnuplot(script, figures, **variables):
+    """Runs TOOLS/SCRIPT in FIGURES with the given variables (strings are quoted)."""
+    definitions = "; ".join(f"{k}='{v}'" if isinstance(v, str) else f"{k}={v}"
+                            for k, v in variables.items())
+    subprocess.run(["gnuplot", "-e", definitions, os.path.join(TOOLS, script)], cwd=figures,
+                   check=True)
+
+
+def depth_limit_bias(references):
+    """RMSE between the depth-limited and the unbiased image, without the references' noise:
+    the error labs 1-3 keep however long they run, if the unbiased image is the goal."""
+    raw = mean_squared_error(references["depth_limited"]["pixels"],
+                             references["unbiased"]["pixels"])
+    noise = sum(r["variance_of_mean"] for r in references.values())
+    return math.sqrt(max(raw - noise, 0.0))
+
+
+def estimator_rows(convergence, window):
+    rows = []
+    for e in ESTIMATORS:
+        mine = [r for r in convergence if r["estimator"] == e.key]
+        rows.append({"estimator": e.key, "label": e.label,
+                     "samples_per_second": round(statistics.median(r["samples_per_second"] for r in mine)),
+                     "rays_per_sample": mine[-1]["rays_per_sample"],
+                     "frame_rate": round(window[e.key]["frame_rate"], 2),
+                     "noise": window[e.key]["noise"], "noise_spp": window[e.key]["spp"],
+                     "per_sample_variance": round(statistics.median(r["per_sample_variance"] for r in mine), 5),
+                     "rmse_longest": mine[-1]["rmse"], "seconds_longest": mine[-1]["seconds"],
+                     "efficiency": round(statistics.median(r["efficiency"] for r in mine), 1)})
+    return rows
+
+
+def fmt(x, digits=3):
+    """A number for a table: DIGITS significant digits, millions as "M"."""
+    if x == 0:
+        return "0"
+    if abs(x) >= 1e6:
+        return fmt(x / 1e6, digits) + " M"
+    return f"{x:.{max(digits - 1 - math.floor(math.log10(abs(x))), 0)}f}"
+
+
+def estimators_block(rows, p):
+    best = max(rows, key=lambda r: r["efficiency"])
+    lines = [
+        f"| estimator | samples/s ({p['study_size']}², {os.cpu_count()} threads) | rays per sample "
+        f"| frame rate ({p['window_size']}² window) | noise after {p['window_frames']} frames "
+        f"| per-sample variance | RMSE after ≈{p['budgets'][-1]:g} s | efficiency 1/(MSE·s) |",
+        "|---|--:|--:|--:|--:|--:|--:|--:|"]
+    for r in rows:
+        lines.append(f"| {r['label']} | {fmt(r['samples_per_second'])} | {fmt(r['rays_per_sample'])} "
+                     f"| {r['frame_rate']:.1f} fps | {r['noise']:.3f} | {fmt(r['per_sample_variance'])} "
+                     f"| {fmt(r['rmse_longest'])} | {fmt(r['efficiency'])} |")
+    lines.append("")
+    lines.append(f"Most efficient in this run: **{best['label']}**. Efficiency is the median over "
+                 "the convergence study's render times; labs 1–3 are measured against the "
+                 "depth-limited image, lab 4 against the unbiased one.")
+    return "\n".join(lines)
+
+
+def sweep_block(rows):
+    best = max(rows, key=lambda r: r["efficiency"])
+    lines = ["| continueProb | samples/s | rays per sample | per-sample variance | spp | RMSE at equal time | efficiency 1/(MSE·s) |",
+             "|--:|--:|--:|--:|--:|--:|--:|"]
+    for r in rows:
+        lines.append(f"| {r['continue_prob']:g} | {fmt(r['samples_per_second'])} | {fmt(r['rays_per_sample'])} "
+                     f"| {fmt(r['per_sample_variance'])} | {r['spp']} | {fmt(r['rmse'])} | {fmt(r['efficiency'])} |")
+    lines.append("")
+    lines.append(f"Most efficient continueProb in this run: **{best['continue_prob']:g}**.")
+    return "\n".join(lines)
+
+
+def equal_time_block(images, p):
+    parts = [f"{images[e.key]['label']}: {images[e.key]['spp']} spp in {images[e.key]['seconds']:.1f} s"
+             for e in ESTIMATORS]
+    return (f"Each render: {p['image_size']}×{p['image_size']} pixels, about {p['image_budget']:g} s "
+            f"of render time on {os.cpu_count()} threads. " + "; ".join(parts) + ".")
+
+
+def convergence_block(rows, bias):
+    return (f"The depth limit's bias, the RMSE between the depth-limited and the unbiased image, "
+            f"is {fmt(bias)} on this scene (the grey line in the plot).")
+
+
+BLOCK = re.compile(r"(<!-- BEGIN generated: ([\w-]+) -->\n).*?(<!-- END generated: \2 -->)", re.S)
+
+
+def update_blocks(blocks):
+    """Replaces every generated block of handouts/*.md whose name is in BLOCKS."""
+    found = set()
+    for name in sorted(os.listdir(HANDOUTS)):
+        if not name.endswith(".md"):
+            continue
+        path = os.path.join(HANDOUTS, name)
+        with open(path) as f:
+            text = f.read()
+
+        def replace(m):
+            if m.group(2) not in blocks:
+                return m.group(0)
+            found.add(m.group(2))
+            return m.group(1) + blocks[m.group(2)] + "\n" + m.group(3)
+
+        updated = BLOCK.sub(replace, text)
+        if updated != text:
+            with open(path, "w") as f:
+                f.write(updated)
+    for name in sorted(set(blocks) - found):
+        print(f"make_figures: no handout has the generated block {name!r}", file=sys.stderr)
+
+
+def cpu_model():
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor()
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--build", required=True, help="the build folder holding viewer")
+    parser.add_argument("--quick", action="store_true",
+                        help="tiny renders into BUILD/handouts-quick, handouts left as they are")
+    args = parser.parse_args()
+    build = os.path.abspath(args.build)
+    p = QUICK if args.quick else FULL
+    figures = os.path.join(build, "handouts-quick") if args.quick else os.path.join(HANDOUTS, "figures")
+    os.makedirs(figures, exist_ok=True)
+    for tool in ["gnuplot"]:
+        if not shutil.which(tool):
+            raise SystemExit(f"make_figures: {tool} is needed (scripts/install-deps.sh installs it)")
+    viewer = Viewer(os.path.join(build, "viewer"), SCENE, os.path.join(build, "handouts-renders"))
+    started = time.time()
+    run = {"cpu": cpu_model(), "cores": os.cpu_count(), "load_average_at_start": os.getloadavg(),
+           "parameters": p, "reference_continue_prob": REFERENCE_Q}
+
+    references = make_references(viewer, p)
+    throughput = {e.key: viewer.samples_per_second(e.lab, p["study_size"], e.continue_prob)
+                  for e in ESTIMATORS}
+    convergence = convergence_study(viewer, p, references, throughput)
+    sweep = roulette_sweep(viewer, p, references)
+    window = window_table(viewer, p)
+    images = equal_time_images(viewer, p, throughput, figures)
+
+    bias = depth_limit_bias(references)
+    estimators = estimator_rows(convergence, window)
+    write_csv(os.path.join(figures, "convergence.csv"), convergence)
+    write_csv(os.path.join(figures, "roulette_sweep.csv"), sweep)
+    write_csv(os.path.join(figures, "estimators.csv"), estimators)
+    write_json(os.path.join(figures, "equal_time.json"), images)
+    write_json(os.path.join(figures, "references.json"), {
+        kind: {k: v for k, v in r.items() if k not in ("pixels", "image")} | {"depth_limit_bias_rmse": bias}
+        for kind, r in references.items()})
+    gnuplot("convergence.gp", figures, data="convergence.csv", out="convergence.png", bias=bias)
+    gnuplot("roulette_sweep.gp", figures, data="roulette_sweep.csv", out="roulette_sweep.png")
+
+    run["load_average_at_end"] = os.getloadavg()
+    run["seconds"] = round(time.time() - started, 1)
+    write_json(os.path.join(figures, "run.json"), run)
+    if not args.quick:
+        update_blocks({"estimators-table": estimators_block(estimators, p),
+                       "sweep-table": sweep_block(sweep),
+                       "equal-time": equal_time_block(images, p),
+                       "depth-limit-bias": convergence_block(convergence, bias)})
+    print(f"make_figures: figures in {figures} ({run['seconds']:.0f} s)")
+
+
+if __name__ == "__main__":
+    main()
