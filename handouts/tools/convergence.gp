@@ -1,19 +1,23 @@
 # The convergence plot: RMSE against the reference versus render time, one curve per estimator.
-# Variables (gnuplot -e): data (convergence.csv), out (PNG), bias (the depth limit's RMSE).
-set terminal pngcairo size 900,600 font "sans,11"
+# Variables (gnuplot -e): data (convergence.csv), out (PNG), bias (the depth limit's RMSE),
+# guide (k of the k/sqrt(t) line).
+set terminal pngcairo size 900,640 font "sans,11"
 set output out
 set datafile separator ","
-set key top right box opaque
+set key inside bottom left opaque box font "sans,10"
 set logscale xy
-set xlabel "render time (s), 256x256 pixels"
+set xrange [0.1:40]
+set yrange [2e-4:5]
+set xlabel "render time (s), 256x256 pixels, 2 threads"
 set ylabel "RMSE against the reference"
 set grid xtics ytics mxtics mytics lc rgb "#dddddd"
-set title "VI2 Cornell box: error versus render time (labs 1-3 against the depth-limited image, lab 4 against the unbiased one)" font "sans,10"
+set title "VI2 Cornell box: error versus render time\n(labs 1-3 against the depth-limited image, lab 4 against the unbiased one)" font "sans,11"
 
-# Rows of one estimator; others become undefined and are skipped.
+# Rows of one estimator; the others become undefined and are skipped.
 row(name, column) = (strcol(1) eq name) ? column(column) : NaN
 
 plot bias with lines dashtype 2 lw 2 lc rgb "#888888" title "bias of maxDepth 3 (labs 1-3 against the unbiased image)", \
+     guide / sqrt(x) with lines dashtype 3 lw 1 lc rgb "#444444" title "slope -1/2: error proportional to 1/sqrt(t)", \
      data using (row("branching", 6)):(row("branching", 10)) with linespoints pt 7 lw 2 lc rgb "#1b9e77" title "branching (lab 1)", \
      data using (row("uniform", 6)):(row("uniform", 10)) with linespoints pt 5 lw 2 lc rgb "#d95f02" title "uniform pick (lab 2)", \
      data using (row("importance", 6)):(row("importance", 10)) with linespoints pt 9 lw 2 lc rgb "#7570b3" title "importance pick (lab 3)", \

@@ -114,11 +114,13 @@ def spp_for(budget, samples_per_second, size):
     return max(1, round(budget * samples_per_second / (size * size)))
 
 
-def convergence_study(viewer, p, references, throughput):
+def convergence_study(viewer, p, references):
+    """Each estimator rendered for each time budget, with spp from its measured samples/s."""
     rows = []
     for index, e in enumerate(ESTIMATORS):
+        throughput = viewer.samples_per_second(e.lab, p["study_size"], e.continue_prob)
         for step, budget in enumerate(p["budgets"]):
-            spp = spp_for(budget, throughput[e.key], p["study_size"])
+            spp = spp_for(budget, throughput, p["study_size"])
             stats = viewer.render(f"convergence_{e.key}_{step}", e.lab, spp, p["study_size"],
                                   100 + 10 * index + step, continue_prob=e.continue_prob)
             mse, raw = error_against(stats, references[e.reference])
@@ -174,10 +176,13 @@ def window_table(viewer, p):
         server.wait()
 
 
-def equal_time_images(viewer, p, throughput, figures):
+def equal_time_images(viewer, p, figures):
+    """One image per estimator, each given the same render time (spp from samples/s measured
+    just before, as the machine's load may change)."""
     images = {}
     for index, e in enumerate(ESTIMATORS):
-        spp = spp_for(p["image_budget"], throughput[e.key], p["image_size"])
+        throughput = viewer.samples_per_second(e.lab, p["image_size"], e.continue_prob)
+        spp = spp_for(p["image_budget"], throughput, p["image_size"])
         stats = viewer.render(f"equal_time_{e.key}", e.lab, spp, p["image_size"], 300 + index,
                               continue_prob=e.continue_prob, extension="png")
         shutil.copyfile(stats["image"], os.path.join(figures, f"equal_time_{e.key}.png"))
@@ -221,6 +226,14 @@ def depth_limit_bias(references):
                              references["unbiased"]["pixels"])
     noise = sum(r["variance_of_mean"] for r in references.values())
     return math.sqrt(max(raw - noise, 0.0))
+
+
+def slope_guide(convergence):
+    """k for the plot's k/sqrt(t) line: half of lab 3's typical RMSE*sqrt(t), so the line runs
+    parallel to, and below, the curves of unbiased estimators with finite variance."""
+    products = [r["rmse"] * math.sqrt(r["seconds"]) for r in convergence
+                if r["estimator"] == "importance"]
+    return 0.5 * statistics.median(products)
 
 
 def estimator_rows(convergence, window):
@@ -346,12 +359,10 @@ def main():
            "parameters": p, "reference_continue_prob": REFERENCE_Q}
 
     references = make_references(viewer, p)
-    throughput = {e.key: viewer.samples_per_second(e.lab, p["study_size"], e.continue_prob)
-                  for e in ESTIMATORS}
-    convergence = convergence_study(viewer, p, references, throughput)
+    convergence = convergence_study(viewer, p, references)
     sweep = roulette_sweep(viewer, p, references)
     window = window_table(viewer, p)
-    images = equal_time_images(viewer, p, throughput, figures)
+    images = equal_time_images(viewer, p, figures)
 
     bias = depth_limit_bias(references)
     estimators = estimator_rows(convergence, window)
@@ -362,7 +373,8 @@ def main():
     write_json(os.path.join(figures, "references.json"), {
         kind: {k: v for k, v in r.items() if k not in ("pixels", "image")} | {"depth_limit_bias_rmse": bias}
         for kind, r in references.items()})
-    gnuplot("convergence.gp", figures, data="convergence.csv", out="convergence.png", bias=bias)
+    gnuplot("convergence.gp", figures, data="convergence.csv", out="convergence.png", bias=bias,
+            guide=slope_guide(convergence))
     gnuplot("roulette_sweep.gp", figures, data="roulette_sweep.csv", out="roulette_sweep.png")
 
     run["load_average_at_end"] = os.getloadavg()
