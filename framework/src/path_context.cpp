@@ -8,6 +8,7 @@ namespace pathlab {
 
 Hit PathContext::trace(const Ray& ray) {
     ++counters_.intersect;
+    if (log_) log_->closestHit.push_back(ray);
     return scene_.intersect(ray);
 }
 
@@ -50,7 +51,9 @@ Color PathContext::directLight(const Hit& hit) {
     const float cosReceiver = dot(hit.normal, toLight);
     if (cosReceiver <= 0) return Color();
     ++counters_.occluded;
-    if (scene_.occluded(offsetRayOrigin(hit, toLight), lightPosition)) return Color();
+    const Vec3 origin = offsetRayOrigin(hit, toLight);
+    if (log_) log_->occlusion.push_back({origin, lightPosition});
+    if (scene_.occluded(origin, lightPosition)) return Color();
     return hit.material.Kd * arriving * (InvPi * cosReceiver / length(toLight) / pickProbability);
 }
 

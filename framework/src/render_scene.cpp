@@ -1,10 +1,9 @@
 #include "pathlab/render_scene.h"
 
-#include "pathlab/embree_api.h"
+#include "pathlab/embree_rays.h"
 #include "pathlab/input_error.h"
 
 #include <cmath>
-#include <limits>
 #include <string>
 
 namespace pathlab {
@@ -65,21 +64,7 @@ RenderScene::RenderScene(Scene scene)
 RenderScene::~RenderScene() = default;
 
 Hit RenderScene::intersect(const Ray& ray) const {
-    RTCRayHit rayHit;
-    rayHit.ray.org_x = ray.origin.x;
-    rayHit.ray.org_y = ray.origin.y;
-    rayHit.ray.org_z = ray.origin.z;
-    rayHit.ray.dir_x = ray.direction.x;
-    rayHit.ray.dir_y = ray.direction.y;
-    rayHit.ray.dir_z = ray.direction.z;
-    rayHit.ray.tnear = 0.0f;
-    rayHit.ray.tfar = std::numeric_limits<float>::infinity();
-    rayHit.ray.time = 0.0f;
-    rayHit.ray.mask = 0xFFFFFFFFu;
-    rayHit.ray.id = 0;
-    rayHit.ray.flags = 0;
-    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    RTCRayHit rayHit = embree::closestHitQuery(ray);
     embree::intersect1(embree_->scene, rayHit, ray.kind == RayKind::Camera);
 
     Hit hit;
@@ -122,22 +107,12 @@ Hit RenderScene::intersect(const Ray& ray) const {
 }
 
 bool RenderScene::occluded(const Vec3& from, const Vec3& to) const {
-    const Vec3 d = to - from;
-    RTCRay ray;
-    ray.org_x = from.x;
-    ray.org_y = from.y;
-    ray.org_z = from.z;
-    ray.dir_x = d.x;
-    ray.dir_y = d.y;
-    ray.dir_z = d.z;
-    ray.tnear = 0.0f;
-    // Stop just short of the light's own surface (the direction is not normalised: t = 1 is it).
-    ray.tfar = 1.0f - 1e-4f;
-    ray.time = 0.0f;
-    ray.mask = 0xFFFFFFFFu;
-    ray.id = 0;
-    ray.flags = 0;
+    RTCRay ray = embree::occlusionQuery(from, to);
     return embree::occluded1(embree_->scene, ray);
+}
+
+RTCSceneTy* RenderScene::embreeScene() const {
+    return embree_->scene;
 }
 
 Vec3 offsetRayOrigin(const Hit& hit, const Vec3& direction) {

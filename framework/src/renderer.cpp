@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <atomic>
 #include <thread>
+#include <vector>
 
 namespace pathlab {
 
@@ -39,12 +40,13 @@ Renderer::~Renderer() = default;
 
 bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
                           PathTraceFunction pathTrace, const LabParameters& parameters,
-                          uint64_t seed, int spp, const std::atomic<bool>* cancel) {
+                          uint64_t seed, int spp, const std::atomic<bool>* cancel, RayLog* log) {
     const int width = buffer.width(), height = buffer.height();
     const int tilesX = (width + TileSize - 1) / TileSize;
     const int tilesY = (height + TileSize - 1) / TileSize;
     const uint64_t firstSample = static_cast<uint64_t>(buffer.samplesPerPixel());
     std::atomic<uint64_t> intersect{0}, occluded{0};
+    std::vector<RayLog> tileLogs(log ? static_cast<size_t>(tilesX) * tilesY : 0);
 
     arena_->arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY, 1),
@@ -52,6 +54,7 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
             for (int tile = tiles.begin(); tile != tiles.end(); ++tile) {
                 if (cancel && cancel->load(std::memory_order_relaxed)) return;
                 PathContext ctx(scene_, parameters);
+                if (log) ctx.recordRaysInto(&tileLogs[static_cast<size_t>(tile)]);
                 const int x0 = (tile % tilesX) * TileSize, y0 = (tile / tilesX) * TileSize;
                 const int x1 = std::min(x0 + TileSize, width), y1 = std::min(y0 + TileSize, height);
                 for (int y = y0; y < y1; ++y) {
@@ -74,6 +77,7 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
         });
     });
     counters_ += RayCounters{intersect.load(), occluded.load()};
+    for (const RayLog& tileLog : tileLogs) log->append(tileLog);
     if (cancel && cancel->load()) return false;
     buffer.finishPass(spp);
     return true;

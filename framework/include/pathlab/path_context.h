@@ -6,6 +6,7 @@
 #include "pathlab/lab_parameters.h"
 #include "pathlab/ray.h"
 #include "pathlab/ray_counters.h"
+#include "pathlab/ray_log.h"
 #include "pathlab/sampler.h"
 
 namespace pathlab {
@@ -34,10 +35,13 @@ public:
 
     /// Rays traced through this context so far.
     const RayCounters& rayCounters() const { return counters_; }
+    /// Also appends every ray traced from now on to `log` (null: stop recording).
+    void recordRaysInto(RayLog* log) { log_ = log; }
 
 private:
     const RenderScene& scene_;
     RayCounters counters_;
+    RayLog* log_ = nullptr;
 };
 
 } // namespace pathlab

@@ -8,6 +8,10 @@
 
 #include <memory>
 
+// Embree's scene handle (RTCScene is RTCSceneTy* in Embree 3 and 4), declared here so this header
+// does not pull in Embree.
+struct RTCSceneTy;
+
 namespace pathlab {
 
 /// Owns the Embree device and scene built from a Scene. Tracing is thread-safe.
@@ -25,6 +29,8 @@ public:
 
     const Scene& scene() const { return scene_; }
     const LightSampler& lights() const { return lights_; }
+    /// Embree's scene, for timing its traversal alone (the benchmark).
+    RTCSceneTy* embreeScene() const;
 
 private:
     struct Embree;

@@ -6,6 +6,7 @@
 #include "pathlab/lab_parameters.h"
 #include "pathlab/lab_registry.h"
 #include "pathlab/ray_counters.h"
+#include "pathlab/ray_log.h"
 #include "pathlab/render_scene.h"
 
 #include <atomic>
@@ -25,10 +26,11 @@ public:
 
     /// Adds `spp` samples to every pixel of `buffer`, traced with `pathTrace`. If `cancel` is
     /// given and becomes true, the remaining tiles are skipped and false is returned: the buffer
-    /// then holds part of a pass and must be cleared before it is shown.
+    /// then holds part of a pass and must be cleared before it is shown. If `log` is given, the
+    /// pass's rays are appended to it in tile order.
     bool renderPass(AccumulationBuffer& buffer, const Camera& camera, PathTraceFunction pathTrace,
                     const LabParameters& parameters, uint64_t seed, int spp,
-                    const std::atomic<bool>* cancel = nullptr);
+                    const std::atomic<bool>* cancel = nullptr, RayLog* log = nullptr);
 
     /// Rays traced by all passes since construction (or the last resetRayCounters()).
     RayCounters rayCounters() const { return counters_; }

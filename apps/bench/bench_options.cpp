@@ -1,0 +1,134 @@
+#include "bench_options.h"
+
+#include "pathlab/input_error.h"
+
+#include <charconv>
+#include <cmath>
+#include <string_view>
+
+namespace pathlab::bench {
+
+namespace {
+
+class Arguments {
+public:
+    Arguments(int argc, const char* const* argv) : argc_(argc), argv_(argv) {}
+    bool done() const { return next_ >= argc_; }
+    std::string_view take() { return argv_[next_++]; }
+
+    std::string text(std::string_view option) {
+        if (done()) throw InputError("option " + std::string(option) + " needs a value");
+        return std::string(take());
+    }
+    int integer(std::string_view option, int min, int max) {
+        const std::string t = text(option);
+        int v = 0;
+        auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), v);
+        if (error != std::errc() || end != t.data() + t.size() || v < min || v > max)
+            throw InputError("option " + std::string(option) + " expects an integer from " +
+                             std::to_string(min) + " to " + std::to_string(max) + ", got '" + t +
+                             "'");
+        return v;
+    }
+    float number(std::string_view option, float min, float max) {
+        const std::string t = text(option);
+        float v = 0;
+        auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), v);
+        if (error != std::errc() || end != t.data() + t.size() || !(v > min && v < max))
+            throw InputError("option " + std::string(option) + " expects a number in (" +
+                             std::to_string(min) + ", " + std::to_string(max) + "), got '" + t +
+                             "'");
+        return v;
+    }
+
+private:
+    int argc_;
+    const char* const* argv_;
+    int next_ = 1;
+};
+
+} // namespace
+
+BenchOptions parseBenchOptions(int argc, const char* const* argv) {
+    BenchOptions o;
+    Arguments in(argc, argv);
+    while (!in.done()) {
+        const std::string_view option = in.take();
+        if (option == "--scene")
+            o.scenes.push_back(in.text(option));
+        else if (option == "--size") {
+            o.width = in.integer(option, 1, 16384);
+            o.height = in.integer(option, 1, 16384);
+        } else if (option == "--spp")
+            o.spp = in.integer(option, 1, 1 << 20);
+        else if (option == "--passes")
+            o.passes = in.integer(option, 1, 1000);
+        else if (option == "--threads")
+            o.threads = in.integer(option, 1, 1024);
+        else if (option == "--max-depth")
+            o.parameters.maxDepth = in.integer(option, 0, 1000);
+        else if (option == "--continue-prob")
+            o.parameters.continueProb = in.number(option, 0, 1);
+        else if (option == "--json")
+            o.jsonFile = in.text(option);
+        else if (option == "--pathtracer")
+            o.pathtracer = in.text(option);
+        else if (option == "--no-pathtracer")
+            o.pathtracer.clear();
+        else if (option == "--peer-scene")
+            o.peerScene = in.text(option);
+        else if (option == "--peer-light-scale")
+            o.peerLightScale = in.number(option, 0, 1e6f);
+        else if (option == "--peer-spp")
+            o.peerSpp = in.integer(option, 1, 1 << 20);
+        else if (option == "--peer-image-spp")
+            o.peerImageSpp = in.integer(option, 1, 1 << 20);
+        else if (option == "--peer-only")
+            o.peerOnly = true;
+        else if (option == "--memory-size") {
+            o.memoryWidth = in.integer(option, 1, 16384);
+            o.memoryHeight = in.integer(option, 1, 16384);
+        } else if (option == "--memory-frames")
+            o.memoryFrames = in.integer(option, 0, 1 << 20);
+        else if (option == "--memory-probe")
+            o.memoryProbe = true;
+        else if (option == "--help" || option == "-h")
+            o.help = true;
+        else
+            throw InputError("unknown option '" + std::string(option) +
+                             "' (bench --help lists them)");
+    }
+    return o;
+}
+
+const char* benchOptionsHelp() {
+    return R"(usage: bench [options]
+
+Measures how fast PathLab renders next to Embree's own ray traversal, and next to Embree's
+pathtracer, and prints one table per scene.
+
+  --scene FILE.ecs       scene to measure (repeatable; default models/cornell_box_VI2_Specular.ecs)
+  --size W H             image size of the timed renders (default 512 512)
+  --spp N                samples per pixel of one timed pass (default 2)
+  --passes N             timed passes after one warm-up pass; the fastest counts (default 3)
+  --threads N            threads of the multi-threaded figures (default: all cores)
+  --max-depth N          labs 1-3 (default 3)
+  --continue-prob P      lab 4 (default 0.1)
+  --json FILE            also write the results as JSON
+Embree's pathtracer (package embree-tools)
+  --pathtracer PROGRAM   its executable (default: pathtracer in PATH)
+  --no-pathtracer        skip the comparison
+  --peer-scene FILE.ecs  its scene (default /usr/share/doc/embree3/models/cornell_box.ecs)
+  --peer-light-scale S   scales the scene's point lights so the 8-bit output does not clip
+                         (default 0.1)
+  --peer-spp N           samples per pixel of one timed frame (default 4)
+  --peer-image-spp N     samples per pixel of the images whose means are compared (default 16)
+  --peer-only            measure only the comparison with Embree's pathtracer
+Memory
+  --memory-size W H      size of the progressive render whose peak memory is measured
+                         (default 1920 1080)
+  --memory-frames N      frames it renders (default 8; 0 skips the measurement)
+)";
+}
+
+} // namespace pathlab::bench

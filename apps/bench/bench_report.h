@@ -1,0 +1,26 @@
+#pragma once
+/// The benchmark's figures as tables for people and as JSON for tracking them over time.
+
+#include "memory_probe.h"
+#include "peer_comparison.h"
+#include "scene_measurement.h"
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace pathlab::bench {
+
+struct BenchReport {
+    std::vector<SceneFigures> scenes;
+    PeerComparison peer;
+    MemoryFigures memory;
+};
+
+/// One table per scene, then the comparison with Embree's pathtracer and the memory figure.
+void printReport(const BenchReport& report, std::FILE* out);
+
+/// The same figures as one JSON document (rates in per-second units, memory in MiB).
+std::string reportJson(const BenchReport& report);
+
+} // namespace pathlab::bench

@@ -1,0 +1,91 @@
+// bench: how fast PathLab renders next to Embree's raw traversal and Embree's own pathtracer.
+// Run `bench --help` for the options; `make bench` runs it on the VI2 Cornell box.
+#include "bench_options.h"
+#include "bench_report.h"
+#include "bench_scene.h"
+#include "memory_probe.h"
+#include "peer_comparison.h"
+#include "scene_measurement.h"
+
+#include "pathlab/input_error.h"
+#include "pathlab/render_stats.h"
+
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <thread>
+
+namespace {
+
+using namespace pathlab;
+using namespace pathlab::bench;
+
+/// The VI2 box beside this program (the build folder links models/), or as run from the source.
+std::string defaultScene() {
+    const std::string name = "models/cornell_box_VI2_Specular.ecs";
+    const std::filesystem::path beside =
+        std::filesystem::read_symlink("/proc/self/exe").parent_path() / name;
+    return std::filesystem::exists(beside) ? beside.string() : name;
+}
+
+/// The scenes to measure: those named with --scene, or the VI2 box and Embree's Cornell box (as
+/// the comparison with Embree's pathtracer renders it) when it is installed.
+std::vector<BenchScene> scenesToMeasure(const BenchOptions& options) {
+    std::vector<BenchScene> scenes;
+    for (const std::string& file : options.scenes)
+        scenes.push_back(sceneFromFile(file));
+    if (scenes.empty()) {
+        scenes.push_back(sceneFromFile(defaultScene()));
+        if (std::filesystem::is_regular_file(options.peerScene))
+            scenes.push_back(peerSceneFromFile(options.peerScene, options.peerLightScale));
+    }
+    return scenes;
+}
+
+int runBench(BenchOptions options) {
+    const std::vector<BenchScene> scenes = scenesToMeasure(options);
+    if (options.memoryProbe) return runMemoryProbe(scenes.front(), options);
+    const int threads = options.threads > 0
+                            ? options.threads
+                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    if (!options.jsonFile.empty()) writeFileAtomically(options.jsonFile, "{}\n"); // fail early
+
+    BenchReport report;
+    if (!options.peerOnly) {
+        const SceneSettings settings{options.width,  options.height, options.spp,
+                                     options.passes, threads,        options.parameters};
+        for (const BenchScene& scene : scenes) {
+            std::fprintf(stderr, "bench: measuring %s ...\n", scene.name.c_str());
+            report.scenes.push_back(measureScene(scene, settings));
+        }
+    }
+    std::fprintf(stderr, "bench: Embree's pathtracer ...\n");
+    report.peer = comparePeer(options, threads);
+    if (!options.peerOnly) {
+        std::fprintf(stderr, "bench: peak memory ...\n");
+        report.memory = measurePeakMemory(std::filesystem::read_symlink("/proc/self/exe"),
+                                          scenes.front(), options);
+    }
+    printReport(report, stdout);
+    if (!options.jsonFile.empty()) writeFileAtomically(options.jsonFile, reportJson(report));
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        const BenchOptions options = parseBenchOptions(argc, argv);
+        if (options.help) {
+            std::fputs(benchOptionsHelp(), stdout);
+            return 0;
+        }
+        return runBench(options);
+    } catch (const InputError& error) {
+        std::fprintf(stderr, "bench: %s\n", error.what());
+        return 2;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "bench: error: %s\n", error.what());
+        return 1;
+    }
+}

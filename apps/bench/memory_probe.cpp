@@ -1,0 +1,74 @@
+#include "memory_probe.h"
+
+#include "child_process.h"
+#include "progressive_renderer.h"
+
+#include "pathlab/false_colour.h"
+#include "pathlab/render_options.h"
+
+#include <chrono>
+#include <thread>
+
+namespace pathlab::bench {
+
+MemoryFigures measurePeakMemory(const std::string& self, const BenchScene& scene,
+                                const BenchOptions& options) {
+    MemoryFigures m;
+    m.width = options.memoryWidth;
+    m.height = options.memoryHeight;
+    m.frames = options.memoryFrames;
+    if (m.frames == 0) {
+        m.note = "skipped (--memory-frames 0)";
+        return m;
+    }
+    std::vector<std::string> argv = {self,
+                                     "--memory-probe",
+                                     "--memory-size",
+                                     std::to_string(m.width),
+                                     std::to_string(m.height),
+                                     "--memory-frames",
+                                     std::to_string(m.frames),
+                                     "--scene",
+                                     scene.file};
+    if (options.threads > 0) {
+        argv.push_back("--threads");
+        argv.push_back(std::to_string(options.threads));
+    }
+    const ChildResult child = runChild(argv);
+    if (child.exitStatus != 0) {
+        m.note = "the probe failed: " + child.output.substr(0, 400);
+        return m;
+    }
+    m.peakMiB = static_cast<double>(child.peakRssKiB) / 1024.0;
+    m.measured = true;
+    return m;
+}
+
+int runMemoryProbe(const BenchScene& benchScene, const BenchOptions& options) {
+    const RenderOptions renderOptions =
+        renderOptionsFor(benchScene, options.memoryWidth, options.memoryHeight);
+    const RenderScene scene(loadScene(renderOptions));
+    viewer::ViewSettings settings;
+    settings.lab = Lab::Importance;
+    settings.implementation = Implementation::Solution;
+    settings.parameters = options.parameters;
+    settings.camera = scene.scene().camera.value_or(scene.scene().framingCamera());
+    settings.width = options.memoryWidth;
+    settings.height = options.memoryHeight;
+
+    viewer::ProgressiveRenderer renderer(scene, options.threads, settings, {},
+                                         options.memoryFrames);
+    // The window's side: take each new frame and turn it into display pixels.
+    viewer::Frame frame;
+    uint64_t generation = 0;
+    std::vector<unsigned char> rgba;
+    while (frame.number < options.memoryFrames) {
+        if (renderer.takeFrame(frame, generation))
+            toDisplay(frame.image, rgba);
+        else
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return 0;
+}
+
+} // namespace pathlab::bench

@@ -1,0 +1,99 @@
+#include "peer_comparison.h"
+
+#include "bench_scene.h"
+#include "child_process.h"
+#include "embree_pathtracer.h"
+#include "render_timing.h"
+
+#include "pathlab/accumulation_buffer.h"
+#include "pathlab/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <unistd.h>
+
+namespace pathlab::bench {
+
+namespace {
+
+/// The mean of an RGB image after Embree's 8-bit storage, per channel.
+Color storedMean(const std::vector<float>& rgb, bool alreadyStored) {
+    double sum[3] = {0, 0, 0};
+    for (size_t i = 0; i < rgb.size(); ++i)
+        sum[i % 3] += alreadyStored ? rgb[i] : embreeStoredValue(rgb[i]);
+    const double pixels = static_cast<double>(rgb.size() / 3);
+    return {static_cast<float>(sum[0] / pixels), static_cast<float>(sum[1] / pixels),
+            static_cast<float>(sum[2] / pixels)};
+}
+
+} // namespace
+
+PeerComparison comparePeer(const BenchOptions& options, int threads) {
+    PeerComparison c;
+    c.scene = std::filesystem::path(options.peerScene).stem().string();
+    c.width = options.width;
+    c.height = options.height;
+    c.spp = options.peerSpp;
+    c.frames = options.passes;
+    c.imageSpp = options.peerImageSpp;
+    c.threads = threads;
+    c.maxPathLength = options.parameters.maxDepth + 1;
+    c.lightScale = options.peerLightScale;
+
+    const std::string program = options.pathtracer.empty() ? "" : findProgram(options.pathtracer);
+    if (program.empty()) {
+        c.note = options.pathtracer.empty() ? "skipped (--no-pathtracer)"
+                                            : "Embree's '" + options.pathtracer +
+                                                  "' was not found (Debian package embree-tools)";
+        return c;
+    }
+    if (!std::filesystem::is_regular_file(options.peerScene)) {
+        c.note = options.peerScene + " was not found (Debian package embree-tools)";
+        return c;
+    }
+
+    const BenchScene scene = peerSceneFromFile(options.peerScene, options.peerLightScale);
+    const PathtracerJob embree{program, scene, c.width, c.height, c.maxPathLength, threads};
+    c.embreeSamplesPerSecond = pathtracerSamplesPerSecond(embree, c.spp, c.frames);
+
+    const RenderScene ours(loadScene(renderOptionsFor(scene, c.width, c.height)));
+    const Camera camera(ours.scene().camera.value_or(ours.scene().framingCamera()), c.width,
+                        c.height);
+    LabParameters parameters = options.parameters;
+    const RenderJob job{
+        ours,       camera,  findPathTrace(Lab::Importance, Implementation::Solution),
+        parameters, c.width, c.height};
+    c.oursSamplesPerSecond = timeRender(job, c.spp, c.frames, threads).samplesPerSecond();
+
+    // The images: Embree's as it stores them; ours stored the same way.
+    const std::string folder =
+        (std::filesystem::temp_directory_path() / ("pathlab-bench-" + std::to_string(::getpid())))
+            .string();
+    std::filesystem::create_directories(folder);
+    const std::vector<float> embreeImage = pathtracerImage(embree, c.imageSpp, folder);
+    std::filesystem::remove_all(folder);
+    c.embreeMean = storedMean(embreeImage, true);
+
+    Renderer renderer(ours, threads);
+    AccumulationBuffer image(c.width, c.height);
+    renderer.renderPass(image, camera, job.pathTrace, parameters, 0, c.imageSpp);
+    const std::vector<float> rgb = image.meanImage();
+    c.oursMean = storedMean(rgb, false);
+    c.oursMaxPixel = *std::max_element(rgb.begin(), rgb.end());
+
+    // Each image mean has variance (mean per-sample variance) / (pixels × spp); the two are
+    // independent estimates of the same value with the same estimator, so their difference has
+    // twice that variance. The 8-bit storage adds a negligible amount.
+    const int pixels = c.width * c.height;
+    Color variance;
+    for (int i = 0; i < pixels; ++i)
+        variance += image.variance(i);
+    const float n = static_cast<float>(pixels) * static_cast<float>(pixels) * c.imageSpp;
+    c.standardError = {std::sqrt(2 * variance.r / n), std::sqrt(2 * variance.g / n),
+                       std::sqrt(2 * variance.b / n)};
+    c.measured = true;
+    return c;
+}
+
+} // namespace pathlab::bench

@@ -1,0 +1,37 @@
+#include "render_timing.h"
+
+#include "pathlab/accumulation_buffer.h"
+#include "pathlab/renderer.h"
+
+#include <chrono>
+
+namespace pathlab::bench {
+
+RenderTiming timeRender(const RenderJob& job, int spp, int passes, int threads) {
+    Renderer renderer(job.scene, threads);
+    AccumulationBuffer image(job.width, job.height);
+    const uint64_t seed = 0;
+    renderer.renderPass(image, job.camera, job.pathTrace, job.parameters, seed, spp);
+
+    RenderTiming best;
+    for (int pass = 0; pass < passes; ++pass) {
+        renderer.resetRayCounters();
+        const auto start = std::chrono::steady_clock::now();
+        renderer.renderPass(image, job.camera, job.pathTrace, job.parameters, seed, spp);
+        const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+        if (pass == 0 || elapsed.count() < best.seconds)
+            best = {elapsed.count(), static_cast<long long>(job.width) * job.height * spp,
+                    renderer.rayCounters()};
+    }
+    return best;
+}
+
+RayLog recordRays(const RenderJob& job, int threads) {
+    Renderer renderer(job.scene, threads);
+    AccumulationBuffer image(job.width, job.height);
+    RayLog log;
+    renderer.renderPass(image, job.camera, job.pathTrace, job.parameters, 0, 1, nullptr, &log);
+    return log;
+}
+
+} // namespace pathlab::bench

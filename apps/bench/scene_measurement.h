@@ -1,0 +1,53 @@
+#pragma once
+/// One scene's figures: Embree's raw traversal rates and each reference solution's speed.
+
+#include "bench_scene.h"
+#include "render_timing.h"
+#include "traversal_timing.h"
+
+#include <string>
+#include <vector>
+
+namespace pathlab::bench {
+
+/// A reference solution, rendered and replayed with one thread and with all threads.
+struct SolutionFigures {
+    Lab lab;
+    RenderTiming render, renderOneThread;
+    TraversalTimes raw, rawOneThread; ///< Embree alone on the rays this solution traced
+
+    /// The rays/s achieved over Embree's raw rate for the same mix of rays: the share of the
+    /// render's time that is Embree's traversal.
+    double efficiency() const { return ratio(render.raysPerSecond(), raw.mixRate()); }
+    double efficiencyOneThread() const {
+        return ratio(renderOneThread.raysPerSecond(), rawOneThread.mixRate());
+    }
+    /// Samples/s with all threads over samples/s with one.
+    double scaling() const {
+        return ratio(render.samplesPerSecond(), renderOneThread.samplesPerSecond());
+    }
+    static double ratio(double a, double b) { return b > 0 ? a / b : 0; }
+};
+
+struct SceneFigures {
+    std::string name;
+    size_t triangles = 0;
+    int width = 0, height = 0, spp = 0, passes = 0, threads = 0;
+    LabParameters parameters;
+    std::vector<SolutionFigures> solutions;
+
+    /// Embree alone on the rays of all solutions together, by kind.
+    TraversalTimes raw() const;
+    TraversalTimes rawOneThread() const;
+};
+
+/// What to measure on a scene.
+struct SceneSettings {
+    int width, height, spp, passes, threads;
+    LabParameters parameters;
+};
+
+/// Times every reference solution on `scene` and replays the rays each one traced.
+SceneFigures measureScene(const BenchScene& scene, const SceneSettings& settings);
+
+} // namespace pathlab::bench

@@ -1,0 +1,29 @@
+#pragma once
+/// Embree's raw speed: the rays a render traced, traced again with nothing else around them.
+
+#include "pathlab/ray_log.h"
+#include "pathlab/render_scene.h"
+
+#include <cstddef>
+
+namespace pathlab::bench {
+
+/// How long Embree's traversal takes for each kind of recorded ray, alone.
+struct TraversalTimes {
+    size_t cameraRays = 0, bounceRays = 0, shadowRays = 0;
+    double cameraSeconds = 0, bounceSeconds = 0, shadowSeconds = 0;
+
+    size_t rays() const { return cameraRays + bounceRays + shadowRays; }
+    double seconds() const { return cameraSeconds + bounceSeconds + shadowSeconds; }
+    /// Rays per second for this mix of camera, bounce and shadow rays.
+    double mixRate() const { return seconds() > 0 ? static_cast<double>(rays()) / seconds() : 0; }
+    TraversalTimes& operator+=(const TraversalTimes& o);
+};
+
+/// Traces the rays of `log` through `scene`'s Embree scene with `threads` threads: the queries
+/// are built beforehand and only the rtcIntersect1/rtcOccluded1 calls are timed, with the same
+/// hints as the renderer (camera rays coherent). Each kind is timed `repeats` times; the fastest
+/// counts.
+TraversalTimes timeTraversal(const RenderScene& scene, const RayLog& log, int threads, int repeats);
+
+} // namespace pathlab::bench
