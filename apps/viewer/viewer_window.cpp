@@ -120,6 +120,11 @@ public:
             settings_.lab = AllLabs[key - GLFW_KEY_1];
             break;
         case GLFW_KEY_TAB:
+            if (!solution::available()) {
+                std::printf("Tab: the reference solutions are not part of this build\n");
+                std::fflush(stdout);
+                break;
+            }
             settings_.implementation = settings_.implementation == Implementation::Student
                                            ? Implementation::Solution
                                            : Implementation::Student;
@@ -163,9 +168,12 @@ public:
 
 private:
     void cycleViewMode() {
+        // The split view needs the reference solutions, which the student release lacks.
         if (mode_ == ViewMode::Image)
-            mode_ = reference_.width > 0 ? ViewMode::Difference : ViewMode::Split;
-        else if (mode_ == ViewMode::Difference)
+            mode_ = reference_.width > 0 ? ViewMode::Difference
+                    : solution::available() ? ViewMode::Split
+                                            : ViewMode::Image;
+        else if (mode_ == ViewMode::Difference && solution::available())
             mode_ = ViewMode::Split;
         else
             mode_ = ViewMode::Image;

@@ -13,4 +13,15 @@ const LabTable& labTable() {
     return table;
 }
 
+bool available() { return true; }
+
 } // namespace pathlab::PATHLAB_IMPL
+
+#ifdef PATHLAB_LAB_LIBRARY
+// A submission compiled by the grader into a shared library exposes its table under this one
+// unmangled name (the library is built with hidden visibility; this is its only export), for
+// the submission viewer to find with dlsym (apps/viewer/loaded_lab_table.cpp).
+extern "C" __attribute__((visibility("default"))) const pathlab::LabTable* pathlab_lab_table() {
+    return &pathlab::PATHLAB_IMPL::labTable();
+}
+#endif

@@ -116,6 +116,7 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv) {
          [&](const Token& t) {
              const std::string path = in.path(t);
              if (o.sceneName.empty()) o.sceneName = fs::path(path).stem().string();
+             o.sceneScripts.push_back(path);
              in.includeScript(path, ++scriptDepth);
          }},
         {"i",

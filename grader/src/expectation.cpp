@@ -15,7 +15,7 @@ namespace pathlab::grader {
 
 namespace {
 
-Expectation measure(const std::string& viewer, const std::string& scene, Lab lab,
+Expectation measure(const LabRunner& solution, const std::string& scene, Lab lab,
                     const Rubric& rubric, int seeds, int spp, const std::string& scratch,
                     const std::function<void()>& step) {
     Expectation e;
@@ -25,7 +25,7 @@ Expectation measure(const std::string& viewer, const std::string& scene, Lab lab
     std::vector<std::vector<double>> perRegion;
     std::vector<double> imageSum;
     for (int s = 0; s < seeds; ++s) {
-        RenderRequest r{viewer, scene, lab, Implementation::Solution, rubric.width, rubric.height,
+        RenderRequest r{&solution, scene, lab, rubric.width, rubric.height,
                         spp, rubric.maxDepth, rubric.continueProb,
                         static_cast<uint64_t>(1000000 + s), 0, scratch};
         const RenderResult result = renderLab(r, {rubric.secondsPerRun * 20, rubric.memoryBytes});
@@ -68,7 +68,7 @@ Expectation fromJson(const nlohmann::json& j, const std::string& folder, int wid
 
 } // namespace
 
-SceneReference measureReference(const std::string& viewer, const std::string& scenePath,
+SceneReference measureReference(const LabRunner& solution, const std::string& scenePath,
                                 const Rubric& rubric, int seeds, int sppFactor,
                                 const std::string& scratch, const Progress& progress) {
     SceneReference ref;
@@ -85,12 +85,12 @@ SceneReference measureReference(const std::string& viewer, const std::string& sc
     auto step = [&] { if (progress) progress(++done, total); };
     const int spp = rubric.correctnessSpp[static_cast<int>(Lab::Importance)] * sppFactor;
     // Importance and roulette: the fastest to converge of the depth-limited and unbiased labs.
-    ref.depthLimited = measure(viewer, scenePath, Lab::Importance, rubric, seeds, spp, scratch, step);
-    ref.unbiased = measure(viewer, scenePath, Lab::Roulette, rubric, seeds, spp, scratch, step);
+    ref.depthLimited = measure(solution, scenePath, Lab::Importance, rubric, seeds, spp, scratch, step);
+    ref.unbiased = measure(solution, scenePath, Lab::Roulette, rubric, seeds, spp, scratch, step);
     for (Lab lab : AllLabs) {
         std::array<double, 3> sum{};
         for (int s = 0; s < varianceSeeds; ++s) {
-            RenderRequest r{viewer, scenePath, lab, Implementation::Solution, rubric.width,
+            RenderRequest r{&solution, scenePath, lab, rubric.width,
                             rubric.height, rubric.correctnessSpp[static_cast<int>(lab)],
                             rubric.maxDepth, rubric.continueProb, static_cast<uint64_t>(2000000 + s),
                             0, scratch};

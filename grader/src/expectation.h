@@ -36,8 +36,8 @@ struct SceneReference {
 /// Called with (done, total) as reference renders finish, for a progress bar.
 using Progress = std::function<void(int, int)>;
 
-/// Measures a scene's reference with the solutions in `viewer` (run with --solution).
-SceneReference measureReference(const std::string& viewer, const std::string& scenePath,
+/// Measures a scene's reference with the reference solutions `solution` runs.
+SceneReference measureReference(const LabRunner& solution, const std::string& scenePath,
                                 const Rubric& rubric, int seeds, int sppFactor,
                                 const std::string& scratch, const Progress& progress);
 

@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fcntl.h>
 #include <sstream>
+#include <sys/file.h>
+#include <unistd.h>
 
 namespace pathlab::grader {
 
@@ -37,7 +40,7 @@ struct SceneRuns {
     std::vector<std::vector<double>> regionValues; ///< [statistic][seed]
     std::vector<double> imageSum, imageSumSquares; ///< per pixel and channel, over seeds
     int runs = 0;
-    std::string failure;
+    std::string failure, failureKind; ///< see RenderResult
 
     /// Per-sample variance per channel, averaged over pixels, measured from how the seeds'
     /// images differ: the variance of a pixel's k means times spp. The grader measures it from
@@ -59,13 +62,14 @@ SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab l
     const Rubric& r = setup.rubric;
     SceneRuns runs;
     for (int s = 0; s < r.seeds; ++s) {
-        RenderRequest request{setup.studentViewer, scene.path, lab, Implementation::Student,
-                              r.width, r.height, r.correctnessSpp[static_cast<int>(lab)],
-                              r.maxDepth, r.continueProb, seedBase + static_cast<uint64_t>(s),
-                              setup.threads, setup.scratch};
+        RenderRequest request{&setup.student, scene.path, lab, r.width, r.height,
+                              r.correctnessSpp[static_cast<int>(lab)], r.maxDepth,
+                              r.continueProb, seedBase + static_cast<uint64_t>(s), setup.threads,
+                              setup.scratch};
         const RenderResult result = renderLab(request, limitsOf(r));
         if (!result.ok) {
             runs.failure = result.failure;
+            runs.failureKind = result.failureKind;
             return runs;
         }
         const std::vector<double> means = regionMeans(result.image, result.width, result.height, r.tiles);
@@ -114,10 +118,17 @@ Comparison compare(const SceneRuns& runs, const Expectation& expected, int seeds
     return c;
 }
 
-/// One attempt of the correctness check over all scenes; fills `details` on rejection.
+/// Why a lab's renders could not be compared at all.
+struct RunFailure {
+    std::string text, kind;
+    bool empty() const { return text.empty(); }
+};
+
+/// One attempt of the correctness check over all scenes; fills `details` and `diagnosis` on
+/// rejection.
 bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, LabGrade& grade,
-                        std::vector<std::string>& details, std::string& failure,
-                        std::array<double, 3>& noiseVariance) {
+                        std::vector<std::string>& details, std::string& diagnosis,
+                        RunFailure& failure, std::array<double, 3>& noiseVariance) {
     const Rubric& r = setup.rubric;
     std::vector<Comparison> comparisons;
     std::vector<double> allP;
@@ -125,7 +136,7 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
     for (const GradingScene& scene : setup.scenes) {
         const SceneRuns runs = renderSeeds(setup, scene, lab, seedBase);
         if (!runs.failure.empty()) {
-            failure = "on " + scene.reference.scene + " the lab " + runs.failure;
+            failure = {"on " + scene.reference.scene + " the lab " + runs.failure, runs.failureKind};
             return false;
         }
         if (scene.reference.scene == r.noiseScene || noiseVariance[0] < 0)
@@ -171,11 +182,13 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
             if (tileCount > 0)
                 details.push_back(scene.reference.scene + ": " + std::to_string(tileCount) + " of " +
                                   std::to_string(r.tiles * r.tiles) + " tiles differ (column,row from the top left):" + tiles);
-            if (scene.reference.scene == "refraction_check")
+            if (scene.reference.scene == "refraction_check") {
                 details.push_back("likely cause: the view through the glass sphere is wrong: the Kt "
                                   "component must trace refractionRay(ray, hit), which bends the ray "
                                   "by Ni and turns into a mirror ray under total internal reflection "
                                   "(TODO lab1.5)");
+                if (diagnosis.empty()) diagnosis = "the view through the glass sphere is wrong";
+            }
             if (scene.isFurnace) {
                 const double observed = (c.observed[0].mean + c.observed[1].mean + c.observed[2].mean) / 3;
                 const double se = c.observed[0].standardError;
@@ -183,7 +196,12 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
                 details.push_back(scene.reference.scene + format(": %.4f, where a correct lab gives %.4f",
                                                                  observed, correctFurnaceValue(lab, model)));
                 const std::string cause = diagnoseFurnace(lab, model, observed, se);
-                if (!cause.empty()) details.push_back("likely cause: " + cause);
+                if (!cause.empty()) {
+                    details.push_back("likely cause: " + cause);
+                    // The furnace's diagnosis is the most specific: it wins. Its name is the
+                    // cause up to the explanation after the colon.
+                    diagnosis = cause.substr(0, cause.find(':'));
+                }
             }
         }
         offset += c.p.size();
@@ -197,18 +215,21 @@ CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade,
     check.name = "correctness";
     check.maxScore = setup.rubric.points[static_cast<int>(lab)].correctness;
     std::vector<std::string> details;
-    std::string failure;
-    if (correctnessAttempt(setup, lab, setup.seedBase * 1000, grade, details, failure, noiseVariance)) {
+    std::string diagnosis;
+    RunFailure failure;
+    if (correctnessAttempt(setup, lab, setup.seedBase * 1000, grade, details, diagnosis, failure,
+                           noiseVariance)) {
         check.passed = true;
     } else if (failure.empty()) {
         // A rejection at alpha happens to correct labs too, rarely: only a second rejection on
         // fresh seeds counts.
         std::vector<std::string> retryDetails;
-        if (correctnessAttempt(setup, lab, setup.seedBase * 1000 + 500, grade, retryDetails, failure,
-                               noiseVariance))
+        std::string retryDiagnosis;
+        if (correctnessAttempt(setup, lab, setup.seedBase * 1000 + 500, grade, retryDetails,
+                               retryDiagnosis, failure, noiseVariance))
             check.passed = true;
         else if (failure.empty())
-            details = retryDetails;
+            details = retryDetails, diagnosis = retryDiagnosis;
     }
     check.score = check.passed ? check.maxScore : 0;
     const std::string expected = isDepthLimited(lab)
@@ -217,9 +238,11 @@ CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade,
     if (check.passed) {
         check.summary = "mean radiance matches " + expected;
     } else if (!failure.empty()) {
-        check.summary = "could not be checked: " + failure;
+        check.summary = "could not be checked: " + failure.text;
+        check.diagnosis = failure.kind;
     } else {
         check.summary = "mean radiance differs from " + expected + " (twice, on fresh seeds)";
+        check.diagnosis = diagnosis.empty() ? "wrong mean radiance" : diagnosis;
     }
     check.details = details;
     return check;
@@ -254,6 +277,7 @@ CheckResult checkNoise(const GraderSetup& setup, Lab lab, bool correct,
     check.passed = ratio <= r.maxNoiseRatio;
     check.score = check.passed ? check.maxScore : 0;
     if (!check.passed) {
+        check.diagnosis = "too noisy";
         check.details.push_back(format("variance per sample: yours %.4g, the reference's %.4g", student, solution));
         if (lab == Lab::Importance)
             check.details.push_back("an importance pick that picks uniformly, or that picks components "
@@ -280,16 +304,42 @@ double median(std::vector<double> v) {
     return v.empty() ? 0 : v[v.size() / 2];
 }
 
+/// A runner for the timed runs: on the timing cores, when the policy names some.
+LabRunner timedRunner(const LabRunner& runner, const TimingPolicy& timing) {
+    LabRunner timed = runner;
+    if (!timing.cpus.empty()) (timed.sandboxed() ? timed.sandbox.cpus : timed.cpus) = timing.cpus;
+    return timed;
+}
+
+/// Holds an exclusive lock on a file while it lives (none for an empty path), so that the timed
+/// series of concurrent gradings take turns.
+class TimingLock {
+public:
+    explicit TimingLock(const std::string& path) {
+        if (path.empty()) return;
+        fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        if (fd_ >= 0) ::flock(fd_, LOCK_EX);
+    }
+    ~TimingLock() {
+        if (fd_ >= 0) ::close(fd_); // closing releases the lock
+    }
+    TimingLock(const TimingLock&) = delete;
+    TimingLock& operator=(const TimingLock&) = delete;
+
+private:
+    int fd_ = -1;
+};
+
 /// The fixed cost of a run (start-up, loading, building Embree's BVH), measured by rendering one
 /// pixel, so that samples/s counts rendering alone and cannot be reported by the lab itself.
-double startupSeconds(const GraderSetup& setup, const std::string& scene) {
+double startupSeconds(const GraderSetup& setup, const LabRunner& runner, const std::string& scene,
+                      int threads) {
     static std::map<std::string, double> measured; // per scene, once per grading
     if (const auto known = measured.find(scene); known != measured.end()) return known->second;
     std::vector<double> seconds;
     for (int i = 0; i < 3; ++i) {
-        RenderRequest request{setup.solutionViewer, scene, Lab::Uniform, Implementation::Solution,
-                              1, 1, 1, setup.rubric.maxDepth, setup.rubric.continueProb, 1,
-                              setup.threads, setup.scratch};
+        RenderRequest request{&runner, scene, Lab::Uniform, 1, 1, 1, setup.rubric.maxDepth,
+                              setup.rubric.continueProb, 1, threads, setup.scratch};
         const RenderResult r = renderLab(request, limitsOf(setup.rubric));
         if (r.ok) seconds.push_back(r.process.seconds);
     }
@@ -305,27 +355,31 @@ CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade
         return s.reference.scene == r.speedScene;
     });
     const std::string path = scene != setup.scenes.end() ? scene->path : setup.scenes.front().path;
-    const double startup = startupSeconds(setup, path);
+    const LabRunner studentRunner = timedRunner(setup.student, setup.timing);
+    const LabRunner solutionRunner = timedRunner(setup.solution, setup.timing);
+    const int threads = setup.timing.threads > 0 ? setup.timing.threads : setup.threads;
+    const TimingLock lock(setup.timing.lockFile);
+    const double startup = startupSeconds(setup, solutionRunner, path, threads);
     const double samples = static_cast<double>(r.speedWidth) * r.speedHeight * r.speedSpp[static_cast<int>(lab)];
     std::vector<double> student, solution;
     std::vector<double> studentMeans, solutionMeans; // whole-image radiance of each timed run
     for (int run = 0; run < r.speedRuns; ++run) {
         // Interleaved A B A B: a slow spell of a shared machine hits both alike.
-        for (Implementation impl : {Implementation::Student, Implementation::Solution}) {
-            RenderRequest request{impl == Implementation::Student ? setup.studentViewer : setup.solutionViewer,
-                                  path, lab, impl, r.speedWidth, r.speedHeight,
+        for (const LabRunner* runner : {&studentRunner, &solutionRunner}) {
+            const bool isStudent = runner == &studentRunner;
+            RenderRequest request{runner, path, lab, r.speedWidth, r.speedHeight,
                                   r.speedSpp[static_cast<int>(lab)], r.maxDepth, r.continueProb,
-                                  static_cast<uint64_t>(77 + run), setup.threads, setup.scratch};
+                                  static_cast<uint64_t>(77 + run), threads, setup.scratch};
             const RenderResult result = renderLab(request, limitsOf(r));
             if (!result.ok) {
-                check.summary = std::string(impl == Implementation::Student ? "the lab " : "the reference ") +
+                check.summary = std::string(isStudent ? "the lab " : "the reference ") +
                                 result.failure + " in a timed run";
+                check.diagnosis = isStudent ? result.failureKind : "the reference failed";
                 return check;
             }
             const double seconds = std::max(result.process.seconds - startup, 1e-3);
-            (impl == Implementation::Student ? student : solution).push_back(samples / seconds);
-            (impl == Implementation::Student ? studentMeans : solutionMeans)
-                .push_back(imageMean(result.image));
+            (isStudent ? student : solution).push_back(samples / seconds);
+            (isStudent ? studentMeans : solutionMeans).push_back(imageMean(result.image));
         }
     }
     grade.studentSamplesPerSecond = median(student);
@@ -344,6 +398,7 @@ CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade
     if (r.speedRuns >= 2 && welchTwoSidedP(studentMeans, solutionMeans, floor) < r.alpha) {
         check.summary += "; the timed runs' mean radiance differs from the reference's, and "
                          "speed counts only for a correct timed run";
+        check.diagnosis = "wrong image in the timed runs";
         check.details.push_back(format("mean radiance of the timed runs: yours %.4g, the "
                                        "reference's %.4g", median(studentMeans),
                                        median(solutionMeans)));
@@ -351,6 +406,7 @@ CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade
     }
     check.passed = ratio >= r.minSpeedRatio;
     check.score = check.passed ? check.maxScore : 0;
+    if (!check.passed) check.diagnosis = "too slow";
     if (!check.passed)
         check.details.push_back("slower than the reference at the same image: extra rays (e.g. a "
                                 "shadow ray or bounce that is not needed), or work repeated per sample");
@@ -358,6 +414,25 @@ CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade
 }
 
 } // namespace
+
+LabGrade ungradedLab(const Rubric& rubric, Lab lab, bool measureSpeed, const std::string& reason,
+                     const std::vector<std::string>& details) {
+    LabGrade grade{lab, {}, 0, 0, {}};
+    const LabPoints& points = rubric.points[static_cast<int>(lab)];
+    std::vector<std::pair<std::string, double>> checks = {{"correctness", points.correctness},
+                                                          {"noise", points.noise}};
+    if (measureSpeed) checks.push_back({"speed", points.speed});
+    for (const auto& [name, maxScore] : checks) {
+        CheckResult check;
+        check.name = name;
+        check.maxScore = maxScore;
+        check.summary = reason;
+        check.diagnosis = reason;
+        if (name == "correctness") check.details = details;
+        grade.checks.push_back(check);
+    }
+    return grade;
+}
 
 LabGrade gradeLab(const GraderSetup& setup, Lab lab) {
     LabGrade grade{lab, {}, 0, 0, {}};

@@ -17,6 +17,7 @@ struct CheckResult {
     bool passed = false;
     std::string summary;         ///< one line
     std::vector<std::string> details; ///< what to look at, in words
+    std::string diagnosis;       ///< a failure's cause in a few words, for a class's summary
 };
 
 struct LabGrade {
@@ -43,9 +44,18 @@ struct GradingScene {
     double furnaceAlbedo = 0.5;
 };
 
+/// How the frame-rate check keeps its timings fair on a machine that does other work meanwhile
+/// (grader batch): the timed runs take cores of their own, one grading at a time.
+struct TimingPolicy {
+    std::vector<int> cpus; ///< the timed runs' cores (empty: wherever the runners run)
+    std::string lockFile;  ///< held for a lab's whole interleaved series (empty: no lock)
+    int threads = 0;       ///< threads per timed render (0: as the other renders)
+};
+
 struct GraderSetup {
-    std::string studentViewer;   ///< runs the labs being graded (default implementation)
-    std::string solutionViewer;  ///< runs the reference solutions (with --solution)
+    LabRunner student;           ///< runs the labs being graded
+    LabRunner solution;          ///< runs the reference solutions
+    TimingPolicy timing;
     Rubric rubric;
     std::vector<GradingScene> scenes;
     std::string scratch;
@@ -55,5 +65,10 @@ struct GraderSetup {
 };
 
 LabGrade gradeLab(const GraderSetup& setup, Lab lab);
+
+/// A lab that could not be graded at all (not submitted, does not compile): every check fails
+/// with `reason` as its summary and diagnosis.
+LabGrade ungradedLab(const Rubric& rubric, Lab lab, bool measureSpeed, const std::string& reason,
+                     const std::vector<std::string>& details);
 
 } // namespace pathlab::grader

@@ -4,7 +4,9 @@
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
+#include <grp.h>
 #include <poll.h>
+#include <sched.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -20,78 +22,141 @@ std::string ProcessOutcome::describe() const {
         std::string hint;
         if (signal == SIGSEGV)
             hint = ": often recursion without an end (the stack overflows) or a bad pointer";
-        if (signal == SIGKILL) hint = ": killed, usually for using too much memory";
+        if (signal == SIGKILL) hint = ": killed: it used too much memory, or killed itself";
         if (signal == SIGABRT) hint = ": aborted, e.g. an uncaught exception or a failed assert";
+        if (signal == SIGXCPU) hint = ": it used more CPU time than allowed";
+        if (signal == SIGXFSZ) hint = ": it wrote a file larger than allowed";
         return "crashed (" + name + ", signal " + std::to_string(signal) + ")" + hint;
     }
     if (exitStatus != 0) {
-        if (output.find("bad_alloc") != std::string::npos)
+        if (output.find("bad_alloc") != std::string::npos ||
+            output.find("out of memory") != std::string::npos)
             return "ran out of memory (allocation failed under the memory limit)";
         return "exited with status " + std::to_string(exitStatus);
     }
     return "finished";
 }
 
-ProcessOutcome runProcess(const std::vector<std::string>& argv, const ProcessLimits& limits) {
+std::string ProcessOutcome::outputTail(int lines) const {
+    std::vector<std::string> kept;
+    size_t end = output.size();
+    while (end > 0 && static_cast<int>(kept.size()) < lines) {
+        const size_t start = output.rfind('\n', end - 1);
+        const size_t from = start == std::string::npos ? 0 : start + 1;
+        std::string line = output.substr(from, end - from);
+        if (line.size() > 200) line = line.substr(0, 200) + "...";
+        if (!line.empty()) kept.insert(kept.begin(), line);
+        if (start == std::string::npos) break;
+        end = start;
+    }
+    std::string tail;
+    for (const std::string& line : kept) tail += (tail.empty() ? "" : "\n") + line;
+    return tail;
+}
+
+namespace {
+
+void setLimit(int resource, rlim_t value) {
+    const rlimit limit{value, value};
+    ::setrlimit(resource, &limit);
+}
+
+/// In the child, between fork and exec: only async-signal-safe calls.
+[[noreturn]] void startChild(const std::vector<std::string>& argv, const ProcessLimits& limits,
+                             const ProcessOptions& options, int outputFd, int collectFd) {
+    // Its own process group, so that a timeout kills everything it started.
+    ::setpgid(0, 0);
+    if (limits.memoryBytes > 0) setLimit(RLIMIT_AS, static_cast<rlim_t>(limits.memoryBytes));
+    if (limits.cpuSeconds > 0) setLimit(RLIMIT_CPU, static_cast<rlim_t>(limits.cpuSeconds + 1));
+    if (limits.fileBytes > 0) setLimit(RLIMIT_FSIZE, static_cast<rlim_t>(limits.fileBytes));
+    if (limits.processes > 0) setLimit(RLIMIT_NPROC, static_cast<rlim_t>(limits.processes));
+    setLimit(RLIMIT_CORE, 0);
+    if (!options.cpus.empty()) {
+        cpu_set_t set;
+        CPU_ZERO(&set);
+        for (int cpu : options.cpus) CPU_SET(cpu, &set);
+        ::sched_setaffinity(0, sizeof set, &set);
+    }
+    if (options.user >= 0) {
+        const auto id = static_cast<uid_t>(options.user);
+        if (::setgroups(0, nullptr) != 0 || ::setgid(id) != 0 || ::setuid(id) != 0) ::_exit(126);
+    }
+    ::dup2(outputFd, STDOUT_FILENO);
+    ::dup2(outputFd, STDERR_FILENO);
+    if (collectFd >= 0) {
+        ::dup2(collectFd, 3); // dup2 clears close-on-exec on the copy
+    }
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    ::execv(args[0], args.data());
+    ::_exit(127);
+}
+
+/// Appends what is ready on `fd` to `text`, keeping at most `keep` bytes (the last ones when
+/// `keepTail`, else the first, flagging `overflow`). False at end of file.
+bool drain(int fd, std::string& text, size_t keep, bool keepTail, bool& overflow) {
+    char buffer[65536];
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n <= 0) return false;
+    if (keepTail) {
+        text.append(buffer, static_cast<size_t>(n));
+        if (text.size() > keep) text.erase(0, text.size() - keep);
+    } else if (text.size() + static_cast<size_t>(n) > keep) {
+        overflow = true;
+    } else {
+        text.append(buffer, static_cast<size_t>(n));
+    }
+    return true;
+}
+
+} // namespace
+
+ProcessOutcome runProcess(const std::vector<std::string>& argv, const ProcessLimits& limits,
+                          const ProcessOptions& options) {
     ProcessOutcome outcome;
-    int pipeFds[2];
-    if (::pipe2(pipeFds, O_CLOEXEC) != 0) return outcome;
-    const auto start = std::chrono::steady_clock::now();
-    const pid_t pid = ::fork();
-    if (pid < 0) {
-        ::close(pipeFds[0]);
-        ::close(pipeFds[1]);
+    int outputPipe[2], collectPipe[2] = {-1, -1};
+    if (::pipe2(outputPipe, O_CLOEXEC) != 0) return outcome;
+    if (options.collectBytes > 0 && ::pipe2(collectPipe, O_CLOEXEC) != 0) {
+        ::close(outputPipe[0]);
+        ::close(outputPipe[1]);
         return outcome;
     }
-    if (pid == 0) {
-        // Child: its own process group (so a timeout kills everything it started), its limits,
-        // output into the pipe.
-        ::setpgid(0, 0);
-        if (limits.memoryBytes > 0) {
-            const rlimit memory{static_cast<rlim_t>(limits.memoryBytes),
-                                static_cast<rlim_t>(limits.memoryBytes)};
-            ::setrlimit(RLIMIT_AS, &memory);
-        }
-        const rlimit noCore{0, 0};
-        ::setrlimit(RLIMIT_CORE, &noCore);
-        ::dup2(pipeFds[1], STDOUT_FILENO);
-        ::dup2(pipeFds[1], STDERR_FILENO);
-        std::vector<char*> args;
-        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-        args.push_back(nullptr);
-        ::execv(args[0], args.data());
-        ::_exit(127);
+    const auto start = std::chrono::steady_clock::now();
+    const pid_t pid = ::fork();
+    if (pid == 0) startChild(argv, limits, options, outputPipe[1], collectPipe[1]);
+    ::close(outputPipe[1]);
+    if (collectPipe[1] >= 0) ::close(collectPipe[1]);
+    if (pid < 0) {
+        ::close(outputPipe[0]);
+        if (collectPipe[0] >= 0) ::close(collectPipe[0]);
+        return outcome;
     }
     ::setpgid(pid, pid);
-    ::close(pipeFds[1]);
     outcome.started = true;
 
     auto elapsed = [&] {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
-    bool open = true;
-    char buffer[4096];
-    while (open) {
+    // Read both pipes until both close or time runs out.
+    bool outputOpen = true, collectOpen = collectPipe[0] >= 0, ignored = false;
+    while (outputOpen || collectOpen) {
         const double left = limits.wallSeconds - elapsed();
         if (left <= 0) {
             outcome.timedOut = true;
             ::kill(-pid, SIGKILL);
             break;
         }
-        pollfd fd{pipeFds[0], POLLIN, 0};
-        const int ready = ::poll(&fd, 1, static_cast<int>(std::min(left, 0.25) * 1000) + 1);
-        if (ready > 0) {
-            const ssize_t n = ::read(pipeFds[0], buffer, sizeof buffer);
-            if (n <= 0) {
-                open = false;
-            } else {
-                outcome.output.append(buffer, static_cast<size_t>(n));
-                if (outcome.output.size() > (64u << 10))
-                    outcome.output.erase(0, outcome.output.size() - (64u << 10));
-            }
-        }
+        pollfd fds[2] = {{outputOpen ? outputPipe[0] : -1, POLLIN, 0},
+                         {collectOpen ? collectPipe[0] : -1, POLLIN, 0}};
+        if (::poll(fds, 2, static_cast<int>(std::min(left, 0.25) * 1000) + 1) <= 0) continue;
+        if (fds[0].revents != 0)
+            outputOpen = drain(outputPipe[0], outcome.output, 64u << 10, true, ignored);
+        if (fds[1].revents != 0)
+            collectOpen = drain(collectPipe[0], outcome.collected, options.collectBytes, false,
+                                outcome.collectOverflow);
     }
-    // The pipe closed (or we killed it): wait for the exit, still within the limit.
+    // The pipes closed (or we killed it): wait for the exit, still within the limit.
     int status = 0;
     while (true) {
         const pid_t done = ::waitpid(pid, &status, WNOHANG);
@@ -105,7 +170,8 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const ProcessLim
         ::usleep(2000);
     }
     ::kill(-pid, SIGKILL); // anything it left behind in its group
-    ::close(pipeFds[0]);
+    ::close(outputPipe[0]);
+    if (collectPipe[0] >= 0) ::close(collectPipe[0]);
     outcome.seconds = elapsed();
     if (WIFEXITED(status)) outcome.exitStatus = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);

@@ -3,6 +3,7 @@
 /// process, so a crash, a hang or a runaway allocation costs one run, not the grading.
 
 #include "process_runner.h"
+#include "sandbox.h"
 
 #include "pathlab/lab_registry.h"
 
@@ -13,11 +14,24 @@
 
 namespace pathlab::grader {
 
+/// Whose labs a render runs, and how it is started.
+struct LabRunner {
+    std::string viewer;       ///< the viewer binary
+    /// With the labs linked into `viewer`: which set (--solution or not).
+    Implementation implementation = Implementation::Student;
+    /// When set, `viewer` is the submission viewer, run in the sandbox with the labs compiled
+    /// into this shared library (grader batch).
+    std::string labsLibrary;
+    SandboxPolicy sandbox;    ///< for sandboxed runs
+    std::vector<int> cpus;    ///< for direct runs: the cores to use (empty: any)
+
+    bool sandboxed() const { return !labsLibrary.empty(); }
+};
+
 struct RenderRequest {
-    std::string viewer;            ///< the viewer binary holding the labs to grade
+    const LabRunner* runner = nullptr;
     std::string scene;             ///< .ecs path
     Lab lab = Lab::Branching;
-    Implementation implementation = Implementation::Student;
     int width = 64, height = 64, spp = 16;
     int maxDepth = 3;
     float continueProb = 0.8f;
@@ -29,6 +43,7 @@ struct RenderRequest {
 struct RenderResult {
     bool ok = false;
     std::string failure;           ///< why not ok, in words for the student
+    std::string failureKind;       ///< the same in a few words ("crashed", "time limit", ...)
     ProcessOutcome process;
     std::vector<float> image;      ///< linear RGB, top row first
     int width = 0, height = 0;
@@ -41,5 +56,9 @@ RenderResult renderLab(const RenderRequest& request, const ProcessLimits& limits
 /// Means of the image and of its tiles × tiles regions, per channel: region 0 is the whole
 /// image, then the tiles row by row. Returned flat: [region][channel].
 std::vector<double> regionMeans(const std::vector<float>& image, int width, int height, int tiles);
+
+/// The files a scene script reads: the .ecs files and the .obj and .mtl files they name. A
+/// sandboxed render sees these and nothing else of the host.
+std::vector<std::string> sceneFiles(const std::string& ecsPath);
 
 } // namespace pathlab::grader

@@ -33,11 +33,16 @@ constexpr bool isDepthLimited(Lab lab) { return lab != Lab::Roulette; }
 
 // Each set of labs is a library built from labs/ or solutions/ plus lab_table.cpp, which
 // defines its table explicitly (no static-initialiser registration, which a linker may drop).
+// A build without solutions/ (the student release) has a solution table that is not available;
+// the viewer that grades submissions loads its student table from the submission's library.
 namespace student {
 const LabTable& labTable();
+bool available();
 }
 namespace solution {
+/// Throws InputError when !available().
 const LabTable& labTable();
+bool available();
 }
 
 /// The pathTrace of `lab` in `impl`.

@@ -16,6 +16,7 @@ namespace pathlab {
 struct RenderOptions {
     // Scene
     std::string sceneName;               ///< the .ecs or .obj named first, for reports
+    std::vector<std::string> sceneScripts; ///< -c files read, those they include as well
     std::vector<std::string> objFiles;   ///< -i, resolved relative to the .ecs that named them
     std::vector<PointLight> pointLights; ///< --pointlight
     CameraSettings camera;

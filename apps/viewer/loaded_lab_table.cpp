@@ -1,0 +1,41 @@
+// The student labs of the submission viewer (viewer-submission): not linked in, but loaded from
+// the shared library that `grader batch` compiled from a submission, named by the environment
+// variable PATHLAB_LABS_LIBRARY. Before the library's first line runs, the process loses the
+// right to start processes or programs (no_new_processes.h).
+#include "no_new_processes.h"
+
+#include "pathlab/input_error.h"
+#include "pathlab/lab_registry.h"
+
+#include <cstdlib>
+#include <dlfcn.h>
+#include <string>
+
+namespace pathlab::student {
+
+namespace {
+
+LabTable load() {
+    const char* path = std::getenv("PATHLAB_LABS_LIBRARY");
+    if (!path || !*path)
+        throw InputError("PATHLAB_LABS_LIBRARY is not set: this viewer runs a submission's labs, "
+                         "compiled into a shared library by `grader batch`");
+    forbidNewProcesses();
+    void* library = ::dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (!library) throw InputError(std::string("cannot load the labs: ") + ::dlerror());
+    using Entry = const LabTable* (*)();
+    const auto entry = reinterpret_cast<Entry>(::dlsym(library, "pathlab_lab_table"));
+    if (!entry) throw InputError(std::string(path) + ": no pathlab_lab_table in it");
+    return *entry();
+}
+
+} // namespace
+
+bool available() { return true; }
+
+const LabTable& labTable() {
+    static const LabTable table = load();
+    return table;
+}
+
+} // namespace pathlab::student

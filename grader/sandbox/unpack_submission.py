@@ -1,0 +1,175 @@
+#!/usr/bin/env python3
+"""Runs inside the grader's sandbox: finds a submission's lab files and copies them, and
+nothing else, to the scratch folder.
+
+    unpack_submission.py SUBMISSION MAX_BYTES
+
+SUBMISSION is a folder, a .zip, a .tar.gz/.tgz/.tar, or a git repository (a folder holding
+.git, or a bare repository): for a repository, the files of its HEAD commit. Only regular files
+named branching.cpp, uniform.cpp, importance.cpp or roulette.cpp are taken, each at most
+MAX_BYTES; symbolic links, devices and everything else are skipped and never followed. Where a
+name occurs more than once, the copy in a folder named `labs` wins, then the shallowest; two
+equally good copies are ambiguous and neither is taken.
+
+Writes the files taken to ./NAME and a report to ./intake.json:
+    {"kind": "...", "taken": {name: path}, "problems": ["..."]}
+"""
+import io
+import json
+import os
+import stat
+import subprocess
+import sys
+import tarfile
+import zipfile
+
+LABS = ("branching.cpp", "uniform.cpp", "importance.cpp", "roulette.cpp")
+MAX_ENTRIES = 20000  # members or folder entries looked at, at most
+
+
+class Candidates:
+    """Every acceptable copy of each lab file seen, with a way to read it."""
+
+    def __init__(self, limit):
+        self.limit = limit
+        self.found = {name: [] for name in LABS}
+        self.problems = []
+
+    def offer(self, path, size, is_regular, read):
+        name = path.replace("\\", "/").rsplit("/", 1)[-1]
+        if name not in LABS:
+            return
+        if not is_regular:
+            self.problems.append(f"{path}: not a regular file (a link or a device?): skipped")
+        elif size > self.limit:
+            self.problems.append(f"{path}: {size} bytes, more than the {self.limit} allowed: skipped")
+        else:
+            self.found[name].append((path, read))
+
+    def choose(self):
+        taken = {}
+        for name, copies in self.found.items():
+            if not copies:
+                continue
+
+            def rank(copy):
+                parts = copy[0].replace("\\", "/").strip("/").split("/")
+                return (0 if len(parts) > 1 and parts[-2] == "labs" else 1, len(parts))
+
+            copies.sort(key=rank)
+            if len(copies) > 1 and rank(copies[0]) == rank(copies[1]):
+                self.problems.append(f"{name}: found at {copies[0][0]} and {copies[1][0]}; "
+                                     "which one is meant? Neither was taken")
+                continue
+            data = copies[0][1]()
+            if data is None or len(data) > self.limit:
+                self.problems.append(f"{copies[0][0]}: could not be read within the size limit")
+                continue
+            with open(name, "wb") as out:
+                out.write(data)
+            taken[name] = copies[0][0]
+        return taken
+
+
+def bounded(reader, limit):
+    return reader.read(limit + 1)
+
+
+def from_folder(root, candidates):
+    seen = 0
+    for folder, subfolders, files in os.walk(root, followlinks=False):
+        subfolders[:] = [d for d in subfolders if d != ".git"]
+        for name in files:
+            seen += 1
+            if seen > MAX_ENTRIES:
+                candidates.problems.append(f"more than {MAX_ENTRIES} files: the rest were not looked at")
+                return
+            path = os.path.join(folder, name)
+            info = os.lstat(path)
+            regular = stat.S_ISREG(info.st_mode)
+
+            def read(path=path):
+                with open(path, "rb", opener=lambda p, f: os.open(p, f | os.O_NOFOLLOW)) as f:
+                    return bounded(f, candidates.limit)
+
+            candidates.offer(os.path.relpath(path, root), info.st_size, regular, read)
+
+
+def from_zip(path, candidates):
+    with zipfile.ZipFile(path) as archive:
+        for i, member in enumerate(archive.infolist()):
+            if i >= MAX_ENTRIES:
+                candidates.problems.append(f"more than {MAX_ENTRIES} members: the rest were not looked at")
+                break
+            mode = member.external_attr >> 16
+            regular = not member.is_dir() and (mode == 0 or stat.S_ISREG(mode))
+
+            def read(member=member):
+                with archive.open(member) as f:
+                    return bounded(f, candidates.limit)
+
+            candidates.offer(member.filename, member.file_size, regular, read)
+        return candidates.choose()
+
+
+def from_tar(fileobj, candidates):
+    with tarfile.open(fileobj=fileobj, mode="r:*") as archive:
+        for i, member in enumerate(archive):
+            if i >= MAX_ENTRIES:
+                candidates.problems.append(f"more than {MAX_ENTRIES} members: the rest were not looked at")
+                break
+
+            def read(member=member):
+                f = archive.extractfile(member)
+                return bounded(f, candidates.limit) if f else None
+
+            candidates.offer(member.name, member.size, member.isreg(), read)
+        return candidates.choose()
+
+
+def git_head_tar(repository):
+    """The files of HEAD as a tar stream, read by git without running anything of the repo's."""
+    git_dir = os.path.join(repository, ".git") if os.path.isdir(os.path.join(repository, ".git")) else repository
+    run = subprocess.run(["git", "-c", "core.fsmonitor=false", "-c", "safe.directory=*",
+                          "--git-dir", git_dir, "archive", "--format=tar", "HEAD"],
+                         capture_output=True, timeout=60)
+    if run.returncode != 0:
+        raise ValueError("git could not read its HEAD commit: " + run.stderr.decode(errors="replace").strip()[:200])
+    return io.BytesIO(run.stdout)
+
+
+def is_git_repository(path):
+    return os.path.isdir(os.path.join(path, ".git")) or (
+        os.path.isfile(os.path.join(path, "HEAD")) and os.path.isdir(os.path.join(path, "objects")))
+
+
+def main():
+    submission, limit = sys.argv[1], int(sys.argv[2])
+    candidates = Candidates(limit)
+    report = {"kind": "", "taken": {}, "problems": candidates.problems}
+    try:
+        lower = submission.lower()
+        if os.path.isdir(submission) and is_git_repository(submission):
+            report["kind"] = "git repository (HEAD)"
+            report["taken"] = from_tar(git_head_tar(submission), candidates)
+        elif os.path.isdir(submission):
+            report["kind"] = "folder"
+            from_folder(submission, candidates)
+            report["taken"] = candidates.choose()
+        elif lower.endswith(".zip"):
+            report["kind"] = "zip"
+            report["taken"] = from_zip(submission, candidates)
+        elif lower.endswith((".tar.gz", ".tgz", ".tar")):
+            report["kind"] = "tar"
+            with open(submission, "rb") as f:
+                report["taken"] = from_tar(f, candidates)
+        else:
+            candidates.problems.append("not a folder, .zip, .tar.gz or git repository")
+    except (OSError, ValueError, EOFError, zipfile.BadZipFile, tarfile.TarError,
+            subprocess.TimeoutExpired, RuntimeError) as error:
+        candidates.problems.append(f"the submission could not be read: {error}")
+    with open("intake.json", "w") as out:
+        json.dump(report, out)
+
+
+main()

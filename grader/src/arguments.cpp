@@ -1,0 +1,140 @@
+#include "arguments.h"
+
+#include "pathlab/input_error.h"
+
+#include <filesystem>
+#include <unistd.h>
+
+namespace pathlab::grader {
+
+const char* const usage = R"(usage: grader [options]                       grade the labs of this build
+       grader make-references [options]       measure grader/references/ from the solutions
+       grader submission PATH --out DIR       grade one submission, in the sandbox
+       grader batch SUBMISSIONS --out DIR     grade every submission in a folder, in the sandbox
+       grader merge DIR... --out DIR          merge the gradebooks of batch shards
+
+A submission is a folder, a .zip, a .tar.gz or a git repository holding the four lab files
+(branching.cpp, uniform.cpp, importance.cpp, roulette.cpp); only those are taken.
+
+options
+  --lab NAME          grade one lab: branching | uniform | importance | roulette
+  --viewer PATH       the viewer whose labs are graded (default: the one beside grader)
+  --solution-viewer PATH
+                      the viewer whose --solution is the reference (default: --viewer)
+  --scenes DIR        also grade on every .ecs in DIR (references measured from the solutions)
+  --rubric FILE       points and thresholds (default: grader/rubric.json)
+  --references DIR    stored references (default: grader/references)
+  --seed N            seed base (default 1); a fail is re-checked on fresh seeds anyway
+  --threads N         threads per render (default: all cores)
+  --no-speed          skip the frame-rate check
+  --json FILE --junit FILE --gradescope FILE --html DIR
+                      reports (the terminal table is always printed)
+  --report FILE.md    a lab report: your frame rates, ratios and noise beside the reference's
+
+batch
+  --out DIR           gradebook.csv, summary.html, batch.log and submissions/ID/ (feedback)
+  --jobs N            submissions graded at once (default 1)
+  --force             grade again what is already graded (default: a restart skips it)
+  --shard K/N         grade only every N-th submission, starting at the K-th (0-based)
+)";
+
+namespace {
+
+std::vector<int> cpuList(const std::string& option, const std::string& text) {
+    std::vector<int> cpus;
+    size_t at = 0;
+    while (at <= text.size()) {
+        const size_t comma = std::min(text.find(',', at), text.size());
+        try {
+            cpus.push_back(std::stoi(text.substr(at, comma - at)));
+        } catch (const std::exception&) {
+            throw InputError("option " + option + " expects core numbers like 0 or 1,2, got '" + text + "'");
+        }
+        at = comma + 1;
+    }
+    return cpus;
+}
+
+long long number(const std::string& option, const std::string& text, long long low) {
+    try {
+        size_t used = 0;
+        const long long value = std::stoll(text, &used);
+        if (used == text.size() && value >= low) return value;
+    } catch (const std::exception&) {
+    }
+    throw InputError("option " + option + " expects a whole number of at least " +
+                     std::to_string(low) + ", got '" + text + "'");
+}
+
+} // namespace
+
+Arguments parseArguments(int argc, char** argv) {
+    namespace fs = std::filesystem;
+    Arguments a;
+    a.rubric = std::string(PATHLAB_GRADER_DIR) + "/rubric.json";
+    a.references = std::string(PATHLAB_GRADER_DIR) + "/references";
+    int first = 1;
+    if (argc > 1) {
+        const std::string command = argv[1];
+        for (const char* known : {"make-references", "submission", "batch", "merge"})
+            if (command == known) a.command = command, first = 2;
+    }
+    auto value = [&](int& i) -> std::string {
+        if (i + 1 >= argc) throw InputError(std::string("option ") + argv[i] + " needs a value");
+        return argv[++i];
+    };
+    for (int i = first; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--lab") {
+            const std::string name = value(i);
+            const auto lab = labFromName(name);
+            if (!lab) throw InputError("option --lab expects branching, uniform, importance or roulette, got '" + name + "'");
+            a.labs = {*lab};
+        } else if (arg == "--viewer") a.viewer = value(i);
+        else if (arg == "--solution-viewer") a.solutionViewer = value(i);
+        else if (arg == "--scenes") a.scenesDir = value(i);
+        else if (arg == "--rubric") a.rubric = value(i);
+        else if (arg == "--references") a.references = value(i);
+        else if (arg == "--seed") a.seed = static_cast<uint64_t>(number(arg, value(i), 0));
+        else if (arg == "--threads") a.threads = static_cast<int>(number(arg, value(i), 0));
+        else if (arg == "--no-speed") a.speed = false;
+        else if (arg == "--json") a.json = value(i);
+        else if (arg == "--junit") a.junit = value(i);
+        else if (arg == "--gradescope") a.gradescope = value(i);
+        else if (arg == "--html") a.html = value(i);
+        else if (arg == "--report") a.report = value(i);
+        else if (arg == "--out") a.out = value(i);
+        else if (arg == "--jobs") a.jobs = static_cast<int>(number(arg, value(i), 1));
+        else if (arg == "--force") a.force = true;
+        else if (arg == "--shard") {
+            const std::string text = value(i);
+            const size_t slash = text.find('/');
+            if (slash == std::string::npos) throw InputError("option --shard expects K/N, got '" + text + "'");
+            a.shard = static_cast<int>(number(arg, text.substr(0, slash), 0));
+            a.shards = static_cast<int>(number(arg, text.substr(slash + 1), 1));
+            if (a.shard >= a.shards) throw InputError("option --shard: K must be below N in K/N, got '" + text + "'");
+        } else if (arg == "--kit") a.kit = value(i);
+        else if (arg == "--reference-cache") a.referenceCache = value(i);
+        else if (arg == "--timing-lock") a.timingLock = value(i);
+        else if (arg == "--timing-cpus") a.timingCpus = cpuList(arg, value(i));
+        else if (arg == "--work-cpus") a.workCpus = cpuList(arg, value(i));
+        else if (arg == "--help" || arg == "-h") a.command = "help";
+        else if (!arg.empty() && arg[0] == '-') throw InputError("unknown option '" + arg + "' (grader --help lists the options)");
+        else if (a.command == "submission" || a.command == "batch" || a.command == "merge") a.inputs.push_back(arg);
+        else throw InputError("unexpected argument '" + arg + "' (grader --help lists the commands)");
+    }
+    if (a.command == "help") return a;
+    if (a.command == "submission" && a.inputs.size() != 1)
+        throw InputError("grader submission expects one submission (a folder, .zip, .tar.gz or git repository)");
+    if ((a.command == "batch" || a.command == "merge") && a.inputs.empty())
+        throw InputError("grader " + a.command + " expects at least one folder");
+    if ((a.command == "submission" || a.command == "batch" || a.command == "merge") && a.out.empty())
+        throw InputError("grader " + a.command + " needs --out DIR");
+    if (a.viewer.empty()) a.viewer = (fs::read_symlink("/proc/self/exe").parent_path() / "viewer").string();
+    if (a.solutionViewer.empty()) a.solutionViewer = a.viewer;
+    for (const std::string& v : {a.viewer, a.solutionViewer})
+        if (::access(v.c_str(), X_OK) != 0) throw InputError("viewer '" + v + "' is not an executable file");
+    return a;
+}
+
+} // namespace pathlab::grader

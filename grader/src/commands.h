@@ -1,0 +1,22 @@
+#pragma once
+/// The grader's commands; each returns the exit status.
+
+#include "arguments.h"
+#include "rubric.h"
+
+#include <string>
+
+namespace pathlab::grader {
+
+/// Grades the labs of this build (or of --viewer): exit 0 when every check passed, 1 if not.
+int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scratch);
+/// Measures grader/references/ (or --references) from the solutions.
+int makeReferences(const Arguments& a, const Rubric& rubric, const std::string& scratch);
+/// Grades one submission in the sandbox into --out: exit 0 when graded (whatever the score).
+int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::string& scratch);
+/// Grades a folder of submissions into --out; a submission that fails never stops it.
+int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratch);
+/// Merges the outputs of batch shards into one gradebook in --out.
+int mergeBatches(const Arguments& a);
+
+} // namespace pathlab::grader

@@ -1,0 +1,183 @@
+#include "lab_library.h"
+
+#include "pathlab/input_error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace pathlab::grader {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// What one compiler or linker run may use. A lab file compiles in a second or two; the limits
+// stop a compiler bomb (templates or macros that expand without end) or an #include of a device.
+const ProcessLimits compileLimits{/*wallSeconds*/ 60, /*memoryBytes*/ 2LL << 30,
+                                  /*cpuSeconds*/ 60, /*fileBytes*/ 64LL << 20, /*processes*/ 16};
+
+void writeFile(const std::string& path, const std::string& bytes) {
+    std::ofstream out(path, std::ios::binary);
+    out << bytes;
+    if (!out) throw std::runtime_error(path + ": cannot write");
+    fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                              fs::perms::others_read);
+}
+
+/// The compiler's first lines, with the sandbox's folder names taken out.
+std::string compilerMessages(const ProcessOutcome& outcome) {
+    std::istringstream in(outcome.output);
+    std::string line, text;
+    for (int n = 0; n < 25 && std::getline(in, line); ++n) {
+        for (const std::string folder : {"/submission/", "/pathlab/include/"})
+            for (size_t at; (at = line.find(folder)) != std::string::npos;)
+                line.erase(at, folder.size());
+        text += line + "\n";
+    }
+    return text;
+}
+
+/// Why a compiler run failed, in words, or "" if it succeeded.
+std::string compileFailure(const SandboxOutcome& o, const std::string& what) {
+    const ProcessOutcome& p = o.process;
+    if (p.timedOut)
+        return what + ": the compiler did not finish within 60 s (a compiler bomb, or an "
+                      "#include of a device?)";
+    if (p.signal != 0) return what + ": the compiler " + p.describe();
+    if (!p.succeeded()) return what + " does not compile:\n" + compilerMessages(p);
+    if (!o.problem.empty()) return what + ": " + o.problem;
+    return "";
+}
+
+/// Compiles `source` (a host path) as the labs of `implementation` into `object`.
+std::string compileObject(const LabBuild& build, const std::string& source,
+                          const std::string& implementation, const std::string& object,
+                          const SandboxPolicy& policy) {
+    const std::string name = fs::path(source).filename().string();
+    SandboxRun run;
+    run.command = {build.compiler};
+    run.command.insert(run.command.end(), build.flags.begin(), build.flags.end());
+    run.command.insert(run.command.end(), {"-DPATHLAB_IMPL=" + implementation, "-I/pathlab/include",
+                                           "-c", "/submission/" + name, "-o", "out.o"});
+    run.files = {{build.include, "/pathlab/include"}, {source, "/submission/" + name}};
+    run.collect = {"out.o"};
+    run.scratchBytes = 128LL << 20;
+    const SandboxOutcome outcome = runInSandbox(run, compileLimits, policy);
+    const std::string failure = compileFailure(outcome, name);
+    if (!failure.empty()) return failure;
+    const auto file = outcome.files.find("out.o");
+    if (file == outcome.files.end()) return name + ": the compiler wrote no object file";
+    writeFile(object, file->second);
+    return "";
+}
+
+/// Links `objects` into the shared library `library`.
+std::string linkLibrary(const LabBuild& build, const std::vector<std::string>& objects,
+                        const std::string& library, const SandboxPolicy& policy) {
+    SandboxRun run;
+    run.command = {build.compiler, "-shared", "-o", "labs.so"};
+    for (size_t i = 0; i < objects.size(); ++i) {
+        const std::string inside = "/objects/" + std::to_string(i) + ".o";
+        run.files.push_back({objects[i], inside});
+        run.command.push_back(inside);
+    }
+    run.collect = {"labs.so"};
+    run.scratchBytes = 128LL << 20;
+    const SandboxOutcome outcome = runInSandbox(run, compileLimits, policy);
+    const std::string failure = compileFailure(outcome, "linking the labs");
+    if (!failure.empty()) return failure;
+    const auto file = outcome.files.find("labs.so");
+    if (file == outcome.files.end()) return "the linker wrote no library";
+    writeFile(library, file->second);
+    return "";
+}
+
+std::string labFile(Lab lab) { return std::string(labName(lab)) + ".cpp"; }
+
+/// Where a kit's parts live in its folder.
+LabKit existingLabKitPaths(const std::string& folder) {
+    LabKit kit;
+    kit.folder = folder;
+    kit.tableObject = folder + "/table.o";
+    for (Lab lab : AllLabs)
+        kit.stubObjects[static_cast<int>(lab)] = folder + "/stub_" + std::string(labName(lab)) + ".o";
+    kit.solutionsLibrary = folder + "/solutions.so";
+    return kit;
+}
+
+} // namespace
+
+LabBuild loadLabBuild(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw InputError(path + ": missing (it is written when PathLab is configured)");
+    try {
+        const nlohmann::json j = nlohmann::json::parse(in);
+        return {j.at("compiler"), j.at("flags").get<std::vector<std::string>>(), j.at("include"),
+                j.at("lab_table"), j.at("stubs"), j.at("solutions"), j.at("viewer")};
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(path + ": " + e.what());
+    }
+}
+
+LabKit existingLabKit(const std::string& folder) {
+    const LabKit kit = existingLabKitPaths(folder);
+    for (const std::string& part : {kit.tableObject, kit.solutionsLibrary, kit.stubObjects[0]})
+        if (!fs::exists(part)) throw InputError("the lab kit in " + folder + " lacks " + part);
+    return kit;
+}
+
+LabKit buildLabKit(const LabBuild& build, const std::string& folder, const SandboxPolicy& policy) {
+    fs::create_directories(folder);
+    fs::permissions(folder, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                fs::perms::others_read | fs::perms::others_exec);
+    LabKit kit = existingLabKitPaths(folder);
+    auto compile = [&](const std::string& source, const std::string& implementation,
+                       const std::string& object) {
+        const std::string failure = compileObject(build, source, implementation, object, policy);
+        if (!failure.empty()) throw std::runtime_error("PathLab's own " + failure);
+    };
+    compile(build.labTable, "student", kit.tableObject);
+    std::vector<std::string> solutionObjects;
+    for (Lab lab : AllLabs) {
+        const int i = static_cast<int>(lab);
+        compile(build.stubs + "/" + labFile(lab), "student", kit.stubObjects[i]);
+        solutionObjects.push_back(folder + "/solution_" + std::string(labName(lab)) + ".o");
+        compile(build.solutions + "/" + labFile(lab), "student", solutionObjects.back());
+    }
+    solutionObjects.push_back(kit.tableObject);
+    const std::string failure = linkLibrary(build, solutionObjects, kit.solutionsLibrary, policy);
+    if (!failure.empty()) throw std::runtime_error("the reference solutions: " + failure);
+    return kit;
+}
+
+SubmissionLibrary buildSubmissionLibrary(const LabBuild& build, const LabKit& kit,
+                                         const std::string& sources, const std::string& folder,
+                                         const SandboxPolicy& policy) {
+    SubmissionLibrary result;
+    std::vector<std::string> objects;
+    for (Lab lab : AllLabs) {
+        const int i = static_cast<int>(lab);
+        const std::string source = sources + "/" + labFile(lab);
+        LabCompilation& compiled = result.labs[i];
+        if (!fs::exists(source)) {
+            compiled.status = LabCompilation::Status::NotSubmitted;
+            objects.push_back(kit.stubObjects[i]);
+            continue;
+        }
+        const std::string object = folder + "/" + std::string(labName(lab)) + ".o";
+        compiled.messages = compileObject(build, source, "student", object, policy);
+        compiled.status = compiled.messages.empty() ? LabCompilation::Status::Compiled
+                                                    : LabCompilation::Status::Failed;
+        objects.push_back(compiled.messages.empty() ? object : kit.stubObjects[i]);
+    }
+    objects.push_back(kit.tableObject);
+    const std::string library = folder + "/labs.so";
+    result.problem = linkLibrary(build, objects, library, policy);
+    if (result.problem.empty()) result.library = library;
+    return result;
+}
+
+} // namespace pathlab::grader

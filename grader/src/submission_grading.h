@@ -1,0 +1,44 @@
+#pragma once
+/// Grading one submitted set of labs: take its files in, compile them in the sandbox, run the
+/// checks in the sandbox, and write its feedback and its result.
+
+#include "grading.h"
+#include "lab_library.h"
+#include "reports.h"
+#include "submission_intake.h"
+
+#include <string>
+#include <vector>
+
+namespace pathlab::grader {
+
+/// What the gradings of one batch share.
+struct SubmissionGrader {
+    LabBuild build;
+    LabKit kit;
+    Rubric rubric;
+    std::vector<GradingScene> scenes;
+    TimingPolicy timing;
+    std::vector<int> workCpus; ///< cores for compiling and the correctness renders (empty: any)
+    uint64_t seedBase = 1;
+    int threads = 0;           ///< threads per correctness render (0: all cores)
+    bool measureSpeed = true;
+};
+
+struct SubmissionOutcome {
+    std::string id;
+    std::string status; ///< "graded", or why it could not be ("no lab files found", ...)
+    GradeReport report;
+    Intake intake;
+};
+
+/// Grades `submission` with its working files in `folder`, and writes there, in this order,
+/// feedback.json (the grader's JSON report), index.html, and result.json (a summary for the
+/// gradebook). result.json is written last and atomically: its presence means done.
+SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::string& submission,
+                                  const std::string& folder);
+
+/// result.json's text for an outcome.
+std::string resultJson(const SubmissionOutcome& outcome, const std::string& submission);
+
+} // namespace pathlab::grader

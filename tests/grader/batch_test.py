@@ -1,0 +1,274 @@
+#!/usr/bin/env python3
+"""grader batch on a generated class: correct, buggy and hostile submissions as folders, .zip,
+.tar.gz and git repositories. Each must get its intended verdict and reason; every hostile one
+must be stopped (the files it tried to write do not exist, the port it tried to reach saw no
+connection, no process of it is left); the correct ones score full marks beside them; a batch
+run again skips what is done, and a batch killed half-way and restarted writes the same
+gradebook rows.
+
+The hostile lab files live in tests/grader/hostile/; @OUTSIDE@, @SOURCE@ and @PORT@ in them are
+filled in here. The rubric is the public one with fewer seeds and smaller timed renders, so that
+the test is quick, and a lenient speed threshold; the checks and the sandbox are the same.
+"""
+import argparse
+import csv
+import io
+import json
+import os
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import tarfile
+import tempfile
+import threading
+import time
+import zipfile
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--build", required=True)
+parser.add_argument("--source", required=True)
+args = parser.parse_args()
+args.source = os.path.abspath(args.source)
+GRADER = os.path.join(args.build, "grader")
+SOLUTIONS = os.path.join(args.source, "solutions")
+STUBS = os.path.join(args.source, "labs")
+HOSTILE = os.path.join(args.source, "tests", "grader", "hostile")
+MUTANTS = os.path.join(args.source, "tests", "grader", "mutants")
+LABS = ("branching", "uniform", "importance", "roulette")
+failures = []
+
+
+def check(condition, what):
+    print(("PASS " if condition else "FAIL ") + what, flush=True)
+    if not condition:
+        failures.append(what)
+
+
+def write(path, text):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(text)
+
+
+def copy_labs(source, folder, labs=LABS):
+    os.makedirs(folder, exist_ok=True)
+    for lab in labs:
+        shutil.copy(os.path.join(source, lab + ".cpp"), folder)
+
+
+class Listener:
+    """A port on the host's loopback that records any connection a submission makes."""
+
+    def __init__(self):
+        self.socket = socket.socket()
+        self.socket.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        self.socket.bind(("127.0.0.1", 0))
+        self.socket.listen(8)
+        self.socket.settimeout(0.5)
+        self.port = self.socket.getsockname()[1]
+        self.connections = 0
+        self.running = True
+        threading.Thread(target=self.serve, daemon=True).start()
+
+    def serve(self):
+        while self.running:
+            try:
+                connection, _ = self.socket.accept()
+                self.connections += 1
+                connection.close()
+            except socket.timeout:
+                pass
+
+
+def make_class(root, outside, port):
+    """The submissions, and what each must get: {id: (scores by lab, status words, feedback words)}."""
+    subs = os.path.join(root, "submissions")
+    expected = {}
+    # Correct, in every form a submission takes.
+    copy_labs(SOLUTIONS, os.path.join(subs, "correct", "labs"))
+    expected["correct"] = ({lab: 10 for lab in LABS}, "graded", "mean radiance matches")
+    with zipfile.ZipFile(os.path.join(subs, "correct_zip.zip"), "w") as z:
+        z.write(os.path.join(SOLUTIONS, "uniform.cpp"), "uniform.cpp")
+    expected["correct_zip"] = ({"uniform": 10}, "graded", "mean radiance matches")
+    with tarfile.open(os.path.join(subs, "correct_tar.tar.gz"), "w:gz") as t:
+        t.add(os.path.join(SOLUTIONS, "uniform.cpp"), "student7/pathlab/labs/uniform.cpp")
+        t.add(os.path.join(STUBS, "uniform.cpp"), "student7/old/uniform.cpp")  # the labs/ copy wins
+    expected["correct_tar"] = ({"uniform": 10}, "graded", "mean radiance matches")
+    repository = os.path.join(subs, "correct_git")
+    copy_labs(SOLUTIONS, repository, ["uniform"])
+    git = ["git", "-C", repository, "-c", "user.name=student", "-c", "user.email=s@example.com"]
+    subprocess.run(["git", "init", "-q", repository], check=True)
+    subprocess.run(git + ["add", "uniform.cpp"], check=True)
+    subprocess.run(git + ["commit", "-q", "-m", "lab 2"], check=True)
+    write(os.path.join(repository, "uniform.cpp"), "uncommitted, and not C++\n")  # HEAD is graded
+    expected["correct_git"] = ({"uniform": 10}, "graded", "mean radiance matches")
+
+    # Buggy and unfinished.
+    copy_labs(STUBS, os.path.join(subs, "stub"), ["branching"])
+    expected["stub"] = ({"branching": 0}, "graded", "direct light only")
+    with zipfile.ZipFile(os.path.join(subs, "forgot_the_third.zip"), "w") as z:
+        z.write(os.path.join(MUTANTS, "uniform_no_divide", "uniform.cpp"), "labs/uniform.cpp")
+    expected["forgot_the_third"] = ({"uniform": 0}, "graded", "forgot to divide by the pick probability 1/3")
+    copy_labs(SOLUTIONS, os.path.join(subs, "one_broken"), ["branching"])
+    write(os.path.join(subs, "one_broken", "uniform.cpp"), '#include "pathlab/lab.h"\nthis is not C++;\n')
+    expected["one_broken"] = ({"branching": 10, "uniform": 0}, "does not compile: uniform", "does not compile")
+    write(os.path.join(subs, "nothing", "README.txt"), "I will hand it in later\n")
+    expected["nothing"] = ({}, "no lab files found", "not submitted")
+
+    # Hostile.
+    for case in sorted(os.listdir(HOSTILE)):
+        text = open(os.path.join(HOSTILE, case, "branching.cpp")).read()
+        text = text.replace("@OUTSIDE@", outside).replace("@SOURCE@", args.source).replace("@PORT@", str(port))
+        write(os.path.join(subs, "hostile_" + case, "branching.cpp"), text)
+    reasons = {
+        "endless_loop": "did not finish within the time limit",
+        "fork_bomb": "fork failed: Operation not permitted",
+        "huge_allocation": "ran out of memory",
+        "write_outside": "cannot write " + outside,
+        "read_solutions": "cannot see " + os.path.join(args.source, "solutions", "branching.cpp"),
+        "network_socket": "no connection to 127.0.0.1:%d" % port,
+        "fake_results": "mean radiance differs",
+        "include_passwd": "/etc/passwd: No such file or directory",
+        "include_urandom": "does not compile",
+        "compiler_bomb": "does not compile",
+        "kill_everything": "crashed",
+    }
+    for case, reason in reasons.items():
+        expected["hostile_" + case] = ({"branching": 0}, "graded", reason)
+    os.symlink(os.path.join(SOLUTIONS, "branching.cpp"), os.path.join(subs, "hostile_fake_results", "roulette.cpp"))
+    write(os.path.join(subs, "oversized", "branching.cpp"), "// padding\n" * 30000)
+    expected["oversized"] = ({}, "no lab files found", "more than the 262144 allowed")
+    with zipfile.ZipFile(os.path.join(subs, "zip_slip_and_bomb.zip"), "w", zipfile.ZIP_DEFLATED) as z:
+        z.writestr("../../../../../.." + outside + "/escaped.cpp", "int escaped;\n")
+        z.writestr("bomb/zeros.bin", b"\0" * (300 << 20))
+        z.write(os.path.join(SOLUTIONS, "branching.cpp"), "branching.cpp")
+    expected["zip_slip_and_bomb"] = ({"branching": 10}, "graded", "mean radiance matches")
+    return subs, expected
+
+
+def test_rubric(root):
+    rubric = json.load(open(os.path.join(args.source, "grader", "rubric.json")))
+    rubric["correctness"]["seeds"] = 4
+    # Two timed runs each, and a lenient threshold: this test checks verdicts, not how steady
+    # this machine's timings are (tests/grader/grader_test.py --slow does).
+    rubric["speed"].update({"runs": 2, "min_ratio": 0.5})
+    rubric["limits"]["seconds_per_run"] = 8
+    path = os.path.join(root, "rubric.json")
+    json.dump(rubric, open(path, "w"))
+    return path
+
+
+def run_batch(subs, out, rubric, jobs=2, extra=()):
+    start = time.time()
+    run = subprocess.run([GRADER, "batch", subs, "--out", out, "--jobs", str(jobs), "--rubric", rubric, *extra],
+                         capture_output=True, text=True, timeout=1500)
+    return run, time.time() - start
+
+
+def gradebook(out):
+    return {row["id"]: row for row in csv.DictReader(open(os.path.join(out, "gradebook.csv")))}
+
+
+def sandbox_processes():
+    """Processes left running as a sandbox user (uids 3,500,000 and up), after giving killed
+    ones a moment to go."""
+    for _ in range(30):
+        ps = subprocess.run(["ps", "-eo", "uid=,pid=,stat=,args="], capture_output=True, text=True).stdout
+        left = [line for line in ps.splitlines() if int(line.split()[0]) >= 3_500_000]
+        if not left:
+            return []
+        time.sleep(0.1)
+    print("left running:\n" + "\n".join(left))
+    return left
+
+
+def verdicts(out, expected):
+    rows = gradebook(out)
+    check(set(rows) == set(expected), f"the gradebook has one row per submission ({len(expected)})")
+    for id_, (scores, status, words) in sorted(expected.items()):
+        row = rows.get(id_)
+        if row is None:
+            continue
+        feedback_path = os.path.join(out, "submissions", id_, "feedback.json")
+        feedback = open(feedback_path).read() if os.path.exists(feedback_path) else ""
+        got = {lab: float(row[lab]) for lab in LABS}
+        want = {lab: float(scores.get(lab, 0)) for lab in LABS}
+        check(got == want and status in row["status"] and words in feedback,
+              f"{id_}: scores {want}, status '{status}', feedback says '{words}'"
+              + ("" if got == want else f" (got {got})") + ("" if status in row["status"] else f" (status {row['status']})"))
+    return rows
+
+
+def main():
+    with tempfile.TemporaryDirectory() as root:
+        os.chmod(root, 0o755)
+        outside = os.path.join(root, "outside")
+        os.makedirs(outside)
+        listener = Listener()
+        subs, expected = make_class(root, outside, listener.port)
+        rubric = test_rubric(root)
+        out = os.path.join(root, "out")
+
+        run, seconds = run_batch(subs, out, rubric)
+        print(run.stdout + run.stderr[-3000:])
+        check(run.returncode == 0, "grader batch finishes with status 0 whatever the submissions did")
+        print(f"batch of {len(expected)} submissions with --jobs 2: {seconds:.0f} s", flush=True)
+        rows = verdicts(out, expected)
+
+        # The hostile submissions had no effect outside their sandboxes.
+        check(os.listdir(outside) == [], "nothing was written outside the sandboxes' scratch folders")
+        check(listener.connections == 0, "no submission reached the host's network")
+        check(sandbox_processes() == [], "no process of any submission is left running")
+        passwd = open(os.path.join(out, "submissions", "hostile_include_passwd", "feedback.json")).read()
+        check("root:x:0" not in passwd, "the compiler's message shows nothing of the host's /etc/passwd")
+        for case in ("read_solutions", "write_outside", "network_socket"):
+            text = open(os.path.join(out, "submissions", "hostile_" + case, "feedback.json")).read()
+            check("READ " not in text and "WROTE " not in text and "CONNECTED " not in text,
+                  f"hostile {case}: no attempt succeeded")
+        intake = json.load(open(os.path.join(out, "submissions", "hostile_fake_results", "result.json")))["intake"]
+        check(any("not a regular file" in p for p in intake["problems"]) and "roulette.cpp" not in intake["taken"],
+              "a symbolic link in a submission is not followed")
+        summary = open(os.path.join(out, "summary.html")).read()
+        check("<svg" in summary and "forgot to divide by the pick probability 1/3" in summary,
+              "the summary page has the histogram and the diagnoses")
+
+        # Run again: everything is done, nothing is graded, the gradebook is the same.
+        before = open(os.path.join(out, "gradebook.csv")).read()
+        run, _ = run_batch(subs, out, rubric)
+        check(f"{len(expected)} submission(s) already graded" in run.stderr
+              and open(os.path.join(out, "gradebook.csv")).read() == before,
+              "a batch run again skips what is graded and keeps the gradebook")
+
+        # Killed half-way and restarted: the same rows.
+        part = ["stub", "one_broken", "hostile_include_passwd", "hostile_fork_bomb", "nothing", "oversized"]
+        part_subs = os.path.join(root, "part")
+        os.makedirs(part_subs)
+        for id_ in part:
+            shutil.copytree(os.path.join(subs, id_), os.path.join(part_subs, id_), symlinks=True)
+        part_out = os.path.join(root, "part_out")
+        batch = subprocess.Popen([GRADER, "batch", part_subs, "--out", part_out, "--jobs", "1", "--rubric", rubric],
+                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        deadline = time.time() + 300
+        while time.time() < deadline and batch.poll() is None:
+            done = [i for i in part if os.path.exists(os.path.join(part_out, "submissions", i, "result.json"))]
+            if len(done) >= 2:
+                break
+            time.sleep(0.2)
+        batch.send_signal(signal.SIGKILL)
+        batch.wait()
+        time.sleep(1)
+        check(sandbox_processes() == [], "a killed batch leaves no grading running")
+        run, _ = run_batch(part_subs, part_out, rubric, jobs=1)
+        check("already graded" in run.stderr, "the restarted batch skips what the killed one finished")
+        restarted = gradebook(part_out)
+        check(all(restarted[i] == rows[i] for i in part) and len(restarted) == len(part),
+              "the restarted batch's gradebook rows equal the uninterrupted batch's")
+        listener.running = False
+    if failures:
+        print(f"{len(failures)} check(s) failed")
+        sys.exit(1)
+
+
+main()

@@ -1,0 +1,3 @@
+// Hostile submission: includes an endless device. Stopped by the compiler's time and memory
+// limits.
+#include </dev/urandom>
