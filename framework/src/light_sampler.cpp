@@ -10,7 +10,12 @@ LightSampler::LightSampler(const Scene& scene) {
     for (size_t i = 0; i < scene.pointLights.size(); ++i) {
         const double p = 4.0 * Pi * average(scene.pointLights[i].intensity);
         if (p <= 0) continue;
-        lights_.push_back({LightSource::Type::Point, static_cast<uint32_t>(i)});
+        LightSource light;
+        light.type = LightSource::Type::Point;
+        light.index = static_cast<uint32_t>(i);
+        light.position = scene.pointLights[i].position;
+        light.intensity = scene.pointLights[i].intensity;
+        lights_.push_back(light);
         power.push_back(p);
     }
     for (size_t i = 0; i < scene.triangles.size(); ++i) {
@@ -21,7 +26,15 @@ LightSampler::LightSampler(const Scene& scene) {
             triangleArea(scene.positions[t[0]], scene.positions[t[1]], scene.positions[t[2]]);
         const double p = Pi * area * average(Ke); // a one-sided Lambertian emitter
         if (p <= 0) continue;
-        lights_.push_back({LightSource::Type::Triangle, static_cast<uint32_t>(i)});
+        LightSource light;
+        light.type = LightSource::Type::Triangle;
+        light.index = static_cast<uint32_t>(i);
+        light.a = scene.positions[t[0]];
+        light.b = scene.positions[t[1]];
+        light.c = scene.positions[t[2]];
+        light.areaNormal = cross(light.b - light.a, light.c - light.a);
+        light.Ke = Ke;
+        lights_.push_back(light);
         power.push_back(p);
     }
     const size_t n = lights_.size();

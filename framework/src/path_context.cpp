@@ -20,31 +20,23 @@ Color PathContext::directLight(const Hit& hit) {
     const float u = sampler.get1D();
     const float v = sampler.get1D();
     const LightSource& light = lights.pick(u, v, pickProbability);
-    const Scene& scene = scene_.scene();
 
     // Radiance arriving from the light along the shadow ray, divided by the pdf of the chosen
     // point in solid angle at the receiver, i.e. L·cosθ'/(r²·p_area) for an area light.
     Vec3 lightPosition;
     Color arriving; // incident radiance × (geometry term) / pdf, before the receiver's cosine
     if (light.type == LightSource::Type::Point) {
-        const PointLight& point = scene.pointLights[light.index];
-        lightPosition = point.position;
+        lightPosition = light.position;
         const Vec3 toLight = lightPosition - hit.position;
-        arriving = point.intensity / dot(toLight, toLight);
+        arriving = light.intensity / dot(toLight, toLight);
     } else {
-        const auto& tri = scene.triangles[light.index];
-        const Vec3& a = scene.positions[tri[0]];
-        const Vec3& b = scene.positions[tri[1]];
-        const Vec3& c = scene.positions[tri[2]];
-        lightPosition = sampleTriangleUniform(a, b, c, sampler.get2D());
-        const Vec3 areaNormal = cross(b - a, c - a); // length = 2·area, points out of the front
+        lightPosition = sampleTriangleUniform(light.a, light.b, light.c, sampler.get2D());
         const Vec3 toLight = lightPosition - hit.position;
         const float distance2 = dot(toLight, toLight);
         // Only the front side emits; cosθ'·area = dot(-toLight/r, areaNormal/2).
-        const float cosTimesArea = -dot(toLight, areaNormal) * 0.5f / std::sqrt(distance2);
+        const float cosTimesArea = -dot(toLight, light.areaNormal) * 0.5f / std::sqrt(distance2);
         if (cosTimesArea <= 0) return Color();
-        arriving = scene.materials[scene.triangleMaterials[light.index]].Ke *
-                   (cosTimesArea / distance2);
+        arriving = light.Ke * (cosTimesArea / distance2);
     }
 
     const Vec3 toLight = lightPosition - hit.position;

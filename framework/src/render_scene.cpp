@@ -3,6 +3,7 @@
 #include "pathlab/embree_rays.h"
 #include "pathlab/input_error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -59,6 +60,26 @@ RenderScene::RenderScene(Scene scene)
     rtcAttachGeometry(embree_->scene, mesh);
     rtcReleaseGeometry(mesh);
     rtcCommitScene(embree_->scene);
+
+    triangles_.resize(scene_.triangles.size());
+    for (size_t i = 0; i < scene_.triangles.size(); ++i) {
+        const auto& tri = scene_.triangles[i];
+        TriangleRecord& t = triangles_[i];
+        t.a = scene_.positions[tri[0]];
+        t.b = scene_.positions[tri[1]];
+        t.c = scene_.positions[tri[2]];
+        // Our own counter-clockwise normal, not Embree's Ng, whose orientation convention
+        // differs between versions and builds.
+        t.geometricNormal = normalize(cross(t.b - t.a, t.c - t.a));
+        t.material = scene_.triangleMaterials[i];
+        const std::array<Vec3, 3> normals = {scene_.vertexNormals[tri[0]],
+                                             scene_.vertexNormals[tri[1]],
+                                             scene_.vertexNormals[tri[2]]};
+        const bool flat = std::all_of(normals.begin(), normals.end(),
+                                      [](const Vec3& n) { return dot(n, n) == 0; });
+        t.vertexNormals = flat ? Flat : static_cast<uint32_t>(vertexNormals_.size());
+        if (!flat) vertexNormals_.push_back(normals);
+    }
 }
 
 RenderScene::~RenderScene() = default;
@@ -69,39 +90,30 @@ Hit RenderScene::intersect(const Ray& ray) const {
 
     Hit hit;
     if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
-    const uint32_t prim = rayHit.hit.primID;
-    const auto& tri = scene_.triangles[prim];
-    const Vec3& a = scene_.positions[tri[0]];
-    const Vec3& b = scene_.positions[tri[1]];
-    const Vec3& c = scene_.positions[tri[2]];
+    const TriangleRecord& t = triangles_[rayHit.hit.primID];
     const float u = rayHit.hit.u, v = rayHit.hit.v, w = 1.0f - u - v;
 
     hit.found = true;
     hit.distance = rayHit.ray.tfar;
     // From the barycentrics rather than origin + t·direction: exactly on the triangle's plane
     // up to rounding, whatever the distance travelled.
-    hit.position = a * w + b * u + c * v;
-    // Our own counter-clockwise normal, not Embree's Ng, whose orientation convention differs
-    // between versions and builds.
-    Vec3 geometric = normalize(cross(b - a, c - a));
-    hit.frontFace = dot(geometric, ray.direction) < 0;
+    hit.position = t.a * w + t.b * u + t.c * v;
+    hit.frontFace = dot(t.geometricNormal, ray.direction) < 0;
     const float side = hit.frontFace ? 1.0f : -1.0f;
-    hit.geometricNormal = geometric * side;
-
-    const Vec3 na = scene_.vertexNormals[tri[0]];
-    const Vec3 nb = scene_.vertexNormals[tri[1]];
-    const Vec3 nc = scene_.vertexNormals[tri[2]];
-    Vec3 shading = na * w + nb * u + nc * v;
-    if (dot(shading, shading) > 0) {
-        shading = normalize(shading);
-        // Keep the shading normal on the geometric normal's side so both face the ray together.
-        if (dot(shading, geometric) < 0) shading = -shading;
-        hit.normal = shading * side;
-    } else {
-        hit.normal = hit.geometricNormal;
+    hit.geometricNormal = t.geometricNormal * side;
+    hit.normal = hit.geometricNormal;
+    if (t.vertexNormals != Flat) {
+        const std::array<Vec3, 3>& n = vertexNormals_[t.vertexNormals];
+        Vec3 shading = n[0] * w + n[1] * u + n[2] * v;
+        if (dot(shading, shading) > 0) {
+            shading = normalize(shading);
+            // Keep the shading normal on the geometric normal's side so both face the ray.
+            if (dot(shading, t.geometricNormal) < 0) shading = -shading;
+            hit.normal = shading * side;
+        }
     }
 
-    hit.material = scene_.materials[scene_.triangleMaterials[prim]];
+    hit.material = scene_.materials[t.material];
     if (hit.frontFace) hit.emitted = hit.material.Ke;
     return hit;
 }

@@ -34,8 +34,11 @@ constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
 }
 inline float length(const Vec3& a) { return std::sqrt(dot(a, a)); }
 inline Vec3 normalize(const Vec3& a) { return a / length(a); }
+/// std::fmax, inline: GCC calls libm's fmaxf for it (NaN rule), and offsetRayOrigin runs per ray.
+/// The larger of a and b, or whichever is not NaN.
+constexpr float fmaxInline(float a, float b) { return (a > b || b != b) ? a : b; }
 inline float maxAbsComponent(const Vec3& a) {
-    return std::fmax(std::fabs(a.x), std::fmax(std::fabs(a.y), std::fabs(a.z)));
+    return fmaxInline(std::fabs(a.x), fmaxInline(std::fabs(a.y), std::fabs(a.z)));
 }
 
 } // namespace pathlab
