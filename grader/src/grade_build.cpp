@@ -58,6 +58,10 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fputs(terminalReport(report, ::isatty(STDOUT_FILENO)).c_str(), stdout);
     writeReports(a, report);
+    if (!a.report.empty()) {
+        writeFileAtomically(a.report, labReport(report, rubric.speedWidth, rubric.speedHeight, rubric.noiseScene));
+        std::printf("lab report: %s\n", a.report.c_str());
+    }
     return report.score() == report.maxScore() ? 0 : 1;
 }
 

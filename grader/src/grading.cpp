@@ -251,7 +251,7 @@ CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade,
 /// The noise of the correctness runs on the noise scene against the reference solution's. Like
 /// speed, it counts only for a correct lab: a lab that renders too little light is also quiet.
 CheckResult checkNoise(const GraderSetup& setup, Lab lab, bool correct,
-                       const std::array<double, 3>& variance) {
+                       const std::array<double, 3>& variance, LabGrade& grade) {
     const Rubric& r = setup.rubric;
     CheckResult check;
     check.name = "noise";
@@ -268,6 +268,8 @@ CheckResult checkNoise(const GraderSetup& setup, Lab lab, bool correct,
     const double student = (variance[0] + variance[1] + variance[2]) / 3;
     const double solution = (reference[0] + reference[1] + reference[2]) / 3;
     const double ratio = student / solution;
+    grade.studentVariance = student;
+    grade.solutionVariance = solution;
     check.summary = format("per-sample variance %.3g times the reference solution's (at most %.2g) on ", ratio, r.maxNoiseRatio) +
                     noiseScene.reference.scene;
     if (!correct) {
@@ -438,7 +440,7 @@ LabGrade gradeLab(const GraderSetup& setup, Lab lab) {
     LabGrade grade{lab, {}, 0, 0, {}};
     std::array<double, 3> noiseVariance{-1, -1, -1};
     grade.checks.push_back(checkCorrectness(setup, lab, grade, noiseVariance));
-    grade.checks.push_back(checkNoise(setup, lab, grade.checks[0].passed, noiseVariance));
+    grade.checks.push_back(checkNoise(setup, lab, grade.checks[0].passed, noiseVariance, grade));
     if (setup.measureSpeed) grade.checks.push_back(checkSpeed(setup, lab, grade.checks[0].passed, grade));
     return grade;
 }

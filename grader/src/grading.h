@@ -23,7 +23,8 @@ struct CheckResult {
 struct LabGrade {
     Lab lab;
     std::vector<CheckResult> checks;
-    double studentSamplesPerSecond = 0, solutionSamplesPerSecond = 0;
+    double studentSamplesPerSecond = 0, solutionSamplesPerSecond = 0; ///< the timed runs' medians
+    double studentVariance = 0, solutionVariance = 0; ///< per sample, on the noise scene
     /// For the HTML report: per scene, the student's mean image, the reference and a heat map.
     struct Pictures {
         std::string scene;

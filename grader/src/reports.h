@@ -24,6 +24,10 @@ std::string junitReport(const GradeReport& report);
 /// Gradescope's results.json: score, execution_time, output, tests[] (name, score, max_score,
 /// status, output, visibility).
 std::string gradescopeReport(const GradeReport& report);
+/// A Markdown lab report for a student to hand in: per lab, samples/s, frame rate and noise,
+/// theirs beside the reference's, and the speed ratios between labs.
+std::string labReport(const GradeReport& report, int speedWidth, int speedHeight,
+                      const std::string& noiseScene);
 /// Writes DIR/index.html, one self-contained page (images embedded).
 void writeHtmlReport(const GradeReport& report, const std::string& folder);
 

@@ -51,9 +51,10 @@ def fast_rubric(tmp):
 
 
 def solutions_pass(tmp):
-    out = {k: os.path.join(tmp, "solutions." + k) for k in ("xml", "gradescope.json", "html")}
+    out = {k: os.path.join(tmp, "solutions." + k) for k in ("xml", "gradescope.json", "html", "md")}
     run, report = grade(os.path.join(args.build, "viewer_solutions_as_student"),
-                        ["--junit", out["xml"], "--gradescope", out["gradescope.json"], "--html", out["html"]],
+                        ["--junit", out["xml"], "--gradescope", out["gradescope.json"], "--html", out["html"],
+                         "--report", out["md"]],
                         tmp, "solutions")
     print(run.stdout)
     check(run.returncode == 0 and report is not None, "the solutions, graded as a student's labs, pass (exit 0)")
@@ -75,6 +76,13 @@ def solutions_pass(tmp):
     suites = ET.parse(out["xml"]).getroot()
     check(suites.tag == "testsuites" and len(suites.findall(".//testcase")) == 12
           and not suites.findall(".//failure"), "the JUnit XML parses: 12 test cases, no failures")
+    # The lab report: a row per lab with its numbers, and the three ratios between labs.
+    rows = [line.split("|")[1:-1] for line in open(out["md"]) if line.startswith("| ")]
+    labs = [r for r in rows if r[0].strip() in ("branching", "uniform", "importance", "roulette")]
+    ratios = [r for r in rows if "/" in r[0]]
+    check(len(labs) == 4 and all(r[1].strip() == "yes" and float(r[4]) > 0.5 and "fps" in r[5]
+                                 and float(r[9]) < 1.5 for r in labs) and len(ratios) == 3,
+          "the lab report has each lab's samples/s, frame rate and noise, and the ratios between labs")
     html = open(os.path.join(out["html"], "index.html")).read()
     check(html.count("data:image/png;base64,") >= 12, "the HTML report embeds its images")
 
