@@ -3,8 +3,8 @@
 .tar.gz and git repositories. Each must get its intended verdict and reason; every hostile one
 must be stopped (the files it tried to write do not exist, the port it tried to reach saw no
 connection, no process of it is left); the correct ones score full marks beside them; a batch
-run again skips what is done, and a batch killed half-way and restarted writes the same
-gradebook rows.
+run again skips what is done, a batch killed half-way and restarted writes the same gradebook
+rows, and the Slurm scripts' shards merge into the same gradebook as one batch.
 
 The hostile lab files live in tests/grader/hostile/; @OUTSIDE@, @SOURCE@ and @PORT@ in them are
 filled in here. The rubric is the public one with fewer seeds and smaller timed renders, so that
@@ -171,12 +171,12 @@ def gradebook(out):
     return {row["id"]: row for row in csv.DictReader(open(os.path.join(out, "gradebook.csv")))}
 
 
-def sandbox_processes():
-    """Processes left running as a sandbox user (uids 3,500,000 and up), after giving killed
-    ones a moment to go."""
+def sandbox_processes(root):
+    """Processes of this test's gradings left running as a sandbox user (uids 3,500,000 and up,
+    with this test's folder on their command line), after giving killed ones a moment to go."""
     for _ in range(30):
         ps = subprocess.run(["ps", "-eo", "uid=,pid=,stat=,args="], capture_output=True, text=True).stdout
-        left = [line for line in ps.splitlines() if int(line.split()[0]) >= 3_500_000]
+        left = [line for line in ps.splitlines() if int(line.split()[0]) >= 3_500_000 and root in line]
         if not left:
             return []
         time.sleep(0.1)
@@ -220,7 +220,7 @@ def main():
         # The hostile submissions had no effect outside their sandboxes.
         check(os.listdir(outside) == [], "nothing was written outside the sandboxes' scratch folders")
         check(listener.connections == 0, "no submission reached the host's network")
-        check(sandbox_processes() == [], "no process of any submission is left running")
+        check(sandbox_processes(root) == [], "no process of any submission is left running")
         passwd = open(os.path.join(out, "submissions", "hostile_include_passwd", "feedback.json")).read()
         check("root:x:0" not in passwd, "the compiler's message shows nothing of the host's /etc/passwd")
         for case in ("read_solutions", "write_outside", "network_socket"):
@@ -259,12 +259,29 @@ def main():
         batch.send_signal(signal.SIGKILL)
         batch.wait()
         time.sleep(1)
-        check(sandbox_processes() == [], "a killed batch leaves no grading running")
+        check(sandbox_processes(root) == [], "a killed batch leaves no grading running")
         run, _ = run_batch(part_subs, part_out, rubric, jobs=1)
         check("already graded" in run.stderr, "the restarted batch skips what the killed one finished")
         restarted = gradebook(part_out)
         check(all(restarted[i] == rows[i] for i in part) and len(restarted) == len(part),
               "the restarted batch's gradebook rows equal the uninterrupted batch's")
+
+        # Sharded as on a Slurm cluster: the array task's script run by hand for each shard,
+        # then the merge job's; the merged gradebook equals the unsharded one.
+        slurm = os.path.join(args.source, "grader", "slurm")
+        shard_out = os.path.join(root, "sharded")
+        environment = dict(os.environ, PATHLAB_BUILD=os.path.abspath(args.build), SLURM_ARRAY_TASK_COUNT="2",
+                           SLURM_CPUS_PER_TASK="2")
+        for task in ("0", "1"):
+            subprocess.run([os.path.join(slurm, "grade-shard.sbatch"), part_subs, shard_out],
+                           env=dict(environment, SLURM_ARRAY_TASK_ID=task), capture_output=True, check=True)
+        merge = subprocess.run([os.path.join(slurm, "merge.sbatch"), shard_out, "2"], env=environment,
+                               capture_output=True, text=True)
+        shards_seen = [len(gradebook(os.path.join(shard_out, "shard-" + k))) for k in ("0", "1")]
+        check(merge.returncode == 0 and shards_seen == [3, 3]
+              and open(os.path.join(shard_out, "gradebook.csv")).read()
+              == open(os.path.join(part_out, "gradebook.csv")).read(),
+              "two shards of 3 submissions merge into the gradebook of the unsharded batch")
         listener.running = False
     if failures:
         print(f"{len(failures)} check(s) failed")

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Grades a class on a Slurm cluster: a job array grades one shard of the submissions per task
+# (grader batch --shard K/N), then a job that depends on the whole array merges the shards'
+# gradebooks (grader merge).
+#
+#   grader/slurm/grade-class.sh SUBMISSIONS OUT [SHARDS] [sbatch options...]
+#
+# SUBMISSIONS is a folder of submissions on a file system every node sees; OUT gets
+# shard-K/ per task and, once all are done, OUT/gradebook.csv and OUT/summary.html.
+# PATHLAB_BUILD names the PathLab build to grade with (default: build/ beside this script's
+# kit), also on a shared file system. Each task asks for PATHLAB_CPUS cores (default 4): one is
+# kept for timed runs, the others grade.
+set -euo pipefail
+if [ $# -lt 2 ]; then
+    echo "usage: $0 SUBMISSIONS OUT [SHARDS] [sbatch options...]" >&2
+    exit 2
+fi
+submissions=$(realpath "$1")
+out=$(realpath -m "$2")
+shards=${3:-8}
+shift $(( $# >= 3 ? 3 : 2 ))
+here=$(dirname "$(realpath "$0")")
+build=$(realpath "${PATHLAB_BUILD:-$here/../../build}")
+cpus=${PATHLAB_CPUS:-4}
+[ -x "$build/grader" ] || { echo "$0: no grader in $build (set PATHLAB_BUILD)" >&2; exit 2; }
+mkdir -p "$out"
+
+array=$(sbatch --parsable --array="0-$((shards - 1))" --cpus-per-task="$cpus" \
+    --job-name=pathlab-grade --output="$out/slurm-%A_%a.log" "$@" \
+    --export=ALL,PATHLAB_BUILD="$build" \
+    "$here/grade-shard.sbatch" "$submissions" "$out")
+merge=$(sbatch --parsable --dependency="afterany:$array" --job-name=pathlab-merge \
+    --output="$out/slurm-merge-%j.log" "$@" --export=ALL,PATHLAB_BUILD="$build" \
+    "$here/merge.sbatch" "$out" "$shards")
+echo "submitted: grading array $array ($shards shards), merge $merge; results in $out"
