@@ -115,12 +115,14 @@ def spp_for(budget, samples_per_second, size):
 
 
 def convergence_study(viewer, p, references):
-    """Each estimator rendered for each time budget, with spp from its measured samples/s."""
+    """Each estimator rendered for each time budget, with spp from its measured samples/s. The
+    estimators take turns at each budget, so a change in the machine's load hits all alike."""
+    throughput = {e.key: viewer.samples_per_second(e.lab, p["study_size"], e.continue_prob)
+                  for e in ESTIMATORS}
     rows = []
-    for index, e in enumerate(ESTIMATORS):
-        throughput = viewer.samples_per_second(e.lab, p["study_size"], e.continue_prob)
-        for step, budget in enumerate(p["budgets"]):
-            spp = spp_for(budget, throughput, p["study_size"])
+    for step, budget in enumerate(p["budgets"]):
+        for index, e in enumerate(ESTIMATORS):
+            spp = spp_for(budget, throughput[e.key], p["study_size"])
             stats = viewer.render(f"convergence_{e.key}_{step}", e.lab, spp, p["study_size"],
                                   100 + 10 * index + step, continue_prob=e.continue_prob)
             mse, raw = error_against(stats, references[e.reference])
@@ -133,7 +135,9 @@ def convergence_study(viewer, p, references):
                          "rmse": round(math.sqrt(mse), 6), "rmse_uncorrected": round(math.sqrt(raw), 6),
                          "efficiency": round(1 / (mse * stats["seconds"]), 2)})
             print(f"convergence {e.key} {budget} s: {spp} spp, RMSE {math.sqrt(mse):.4f}", flush=True)
-    return rows
+    # One estimator's rows together, in time order: the plot draws each as one line.
+    order = {e.key: i for i, e in enumerate(ESTIMATORS)}
+    return sorted(rows, key=lambda r: (order[r["estimator"]], r["budget_seconds"]))
 
 
 def rays_per_sample(stats):
@@ -142,22 +146,29 @@ def rays_per_sample(stats):
 
 
 def roulette_sweep(viewer, p, references):
+    """Lab 4's solution at each continueProb for the same time, SWEEP_SEEDS renders each; the
+    values take turns, so a change in the machine's load hits all alike."""
+    sweep = p["sweep"]
+    spp = {q: spp_for(p["sweep_budget"],
+                      viewer.samples_per_second("roulette", p["study_size"], continue_prob=q),
+                      p["study_size"]) for q in sweep}
+    renders = {q: [] for q in sweep}
+    for s in range(p["sweep_seeds"]):
+        for index, q in enumerate(sweep):
+            renders[q].append(viewer.render(f"sweep_{q:g}_{s}", "roulette", spp[q],
+                                            p["study_size"], 200 + 10 * index + s, continue_prob=q))
     rows = []
-    for index, q in enumerate(p["sweep"]):
-        sps = viewer.samples_per_second("roulette", p["study_size"], continue_prob=q)
-        spp = spp_for(p["sweep_budget"], sps, p["study_size"])
-        renders = [viewer.render(f"sweep_{q:g}_{s}", "roulette", spp, p["study_size"],
-                                 200 + 10 * index + s, continue_prob=q)
-                   for s in range(p["sweep_seeds"])]
-        mse = mean3([error_against(r, references["unbiased"])[0] for r in renders])
-        seconds = mean3([r["seconds"] for r in renders])
-        rows.append({"continue_prob": q, "spp": spp, "seconds": round(seconds, 4),
-                     "samples_per_second": round(mean3([r["samples_per_second"] for r in renders])),
-                     "rays_per_sample": round(mean3([rays_per_sample(r) for r in renders]), 3),
-                     "per_sample_variance": round(mean3([mean3(r["mean_variance"]) for r in renders]), 4),
+    for q in sweep:
+        runs = renders[q]
+        mse = mean3([error_against(r, references["unbiased"])[0] for r in runs])
+        seconds = mean3([r["seconds"] for r in runs])
+        rows.append({"continue_prob": q, "spp": spp[q], "seconds": round(seconds, 4),
+                     "samples_per_second": round(mean3([r["samples_per_second"] for r in runs])),
+                     "rays_per_sample": round(mean3([rays_per_sample(r) for r in runs]), 3),
+                     "per_sample_variance": round(mean3([mean3(r["mean_variance"]) for r in runs]), 4),
                      "rmse": round(math.sqrt(mse), 6),
                      "efficiency": round(1 / (mse * seconds), 2)})
-        print(f"sweep continueProb {q}: {spp} spp, RMSE {math.sqrt(mse):.4f}", flush=True)
+        print(f"sweep continueProb {q}: {spp[q]} spp, RMSE {math.sqrt(mse):.4f}", flush=True)
     return rows
 
 
