@@ -87,14 +87,37 @@ RenderScene::~RenderScene() = default;
 Hit RenderScene::intersect(const Ray& ray) const {
     RTCRayHit rayHit = embree::closestHitQuery(ray);
     embree::intersect1(embree_->scene, rayHit, ray.kind == RayKind::Camera);
+    if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return Hit();
+    return shade(ray, rayHit.hit.primID, rayHit.ray.tfar, rayHit.hit.u, rayHit.hit.v);
+}
 
+void RenderScene::intersect(CameraPacket& packet) const {
+    alignas(32) int valid[CameraPacket::Size];
+    for (int i = 0; i < CameraPacket::Size; ++i) valid[i] = i < packet.count ? -1 : 0;
+    RTCRayHit8 rayHits = embree::cameraPacketQuery(packet);
+    embree::intersect8(embree_->scene, valid, rayHits);
+    for (int i = 0; i < packet.count; ++i) {
+        packet.found[i] = rayHits.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
+        packet.distance[i] = rayHits.ray.tfar[i];
+        packet.u[i] = rayHits.hit.u[i];
+        packet.v[i] = rayHits.hit.v[i];
+        packet.triangle[i] = rayHits.hit.primID[i];
+    }
+}
+
+Hit RenderScene::hit(const CameraPacket& packet, int lane) const {
+    if (!packet.found[lane]) return Hit();
+    return shade(packet.rays[lane], packet.triangle[lane], packet.distance[lane], packet.u[lane],
+                 packet.v[lane]);
+}
+
+Hit RenderScene::shade(const Ray& ray, uint32_t triangle, float distance, float u,
+                       float v) const {
+    const TriangleRecord& t = triangles_[triangle];
+    const float w = 1.0f - u - v;
     Hit hit;
-    if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
-    const TriangleRecord& t = triangles_[rayHit.hit.primID];
-    const float u = rayHit.hit.u, v = rayHit.hit.v, w = 1.0f - u - v;
-
     hit.found = true;
-    hit.distance = rayHit.ray.tfar;
+    hit.distance = distance;
     // From the barycentrics rather than origin + t·direction: exactly on the triangle's plane
     // up to rounding, whatever the distance travelled.
     hit.position = t.a * w + t.b * u + t.c * v;
@@ -112,7 +135,6 @@ Hit RenderScene::intersect(const Ray& ray) const {
             hit.normal = shading * side;
         }
     }
-
     hit.material = scene_.materials[t.material];
     if (hit.frontFace) hit.emitted = hit.material.Ke;
     return hit;

@@ -1,5 +1,6 @@
 #include "pathlab/renderer.h"
 
+#include "pathlab/camera_packet.h"
 #include "pathlab/path_context.h"
 
 #include <tbb/blocked_range.h>
@@ -26,6 +27,13 @@ namespace {
 void ensureDeepStacks() {
     static tbb::global_control stack(tbb::global_control::thread_stack_size, 16u << 20);
 }
+
+/// A sample whose camera ray waits in a packet: its pixel, and its random numbers just after
+/// the pixel jitter, where pathTrace takes them up.
+struct PendingSample {
+    int pixel;
+    Sampler sampler;
+};
 
 } // namespace
 
@@ -57,6 +65,20 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
                 if (log) ctx.recordRaysInto(&tileLogs[static_cast<size_t>(tile)]);
                 const int x0 = (tile % tilesX) * TileSize, y0 = (tile / tilesX) * TileSize;
                 const int x1 = std::min(x0 + TileSize, width), y1 = std::min(y0 + TileSize, height);
+                // Camera rays go to Embree a packet at a time; each sample's pathTrace then
+                // finds its camera ray's hit waiting in the context. Samples keep their order
+                // within a pixel, so every pixel's sums add up exactly as one by one.
+                CameraPacket packet;
+                PendingSample pending[CameraPacket::Size];
+                const auto tracePending = [&] {
+                    scene_.intersect(packet);
+                    for (int i = 0; i < packet.count; ++i) {
+                        ctx.sampler = pending[i].sampler;
+                        ctx.primeCameraHit(&packet, i);
+                        buffer.addSample(pending[i].pixel, pathTrace(packet.rays[i], 0, ctx));
+                    }
+                    packet.count = 0;
+                };
                 for (int y = y0; y < y1; ++y) {
                     for (int x = x0; x < x1; ++x) {
                         const int pixel = y * width + x;
@@ -64,12 +86,14 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
                             ctx.sampler.startSample(seed, static_cast<uint64_t>(pixel),
                                                     firstSample + static_cast<uint64_t>(s));
                             const Vec2 jitter = ctx.sampler.get2D();
-                            const Ray ray = camera.generateRay(static_cast<float>(x) + jitter.x,
-                                                               static_cast<float>(y) + jitter.y);
-                            buffer.addSample(pixel, pathTrace(ray, 0, ctx));
+                            packet.rays[packet.count] = camera.generateRay(
+                                static_cast<float>(x) + jitter.x, static_cast<float>(y) + jitter.y);
+                            pending[packet.count] = {pixel, ctx.sampler};
+                            if (++packet.count == CameraPacket::Size) tracePending();
                         }
                     }
                 }
+                if (packet.count > 0) tracePending();
                 // Counted per tile in the context, summed here once: nothing shared per ray.
                 intersect.fetch_add(ctx.rayCounters().intersect, std::memory_order_relaxed);
                 occluded.fetch_add(ctx.rayCounters().occluded, std::memory_order_relaxed);

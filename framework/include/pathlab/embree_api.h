@@ -32,6 +32,25 @@ inline void intersect1(RTCScene scene, RTCRayHit& rayHit, bool coherent = false)
 #endif
 }
 
+/// Closest hits of the lanes of an 8-ray packet whose `valid` entry is -1 (rays that start
+/// together and point nearly the same way: camera rays).
+inline void intersect8(RTCScene scene, const int* valid, RTCRayHit8& rayHits) {
+#if PATHLAB_EMBREE_VERSION >= 4
+    RTCRayQueryContext context;
+    rtcInitRayQueryContext(&context);
+    RTCIntersectArguments arguments;
+    rtcInitIntersectArguments(&arguments);
+    arguments.context = &context;
+    arguments.flags = RTC_RAY_QUERY_FLAG_COHERENT;
+    rtcIntersect8(valid, scene, &rayHits, &arguments);
+#else
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcIntersect8(valid, scene, &context, &rayHits);
+#endif
+}
+
 /// Whether anything blocks `ray` between tnear and tfar; Embree sets ray.tfar to -inf if so.
 inline bool occluded1(RTCScene scene, RTCRay& ray) {
 #if PATHLAB_EMBREE_VERSION >= 4

@@ -2,6 +2,7 @@
 /// How PathLab's rays become Embree's queries. RenderScene traces these, and the benchmark replays
 /// the very same queries to time Embree's traversal alone.
 
+#include "pathlab/camera_packet.h"
 #include "pathlab/embree_api.h"
 #include "pathlab/ray.h"
 #include "pathlab/vec3.h"
@@ -28,6 +29,29 @@ inline RTCRayHit closestHitQuery(const Ray& ray) {
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     return rayHit;
+}
+
+/// The closest-hit query for the rays of `packet`, lane by lane as closestHitQuery.
+inline RTCRayHit8 cameraPacketQuery(const CameraPacket& packet) {
+    RTCRayHit8 rayHits;
+    for (int i = 0; i < CameraPacket::Size; ++i) {
+        const Ray& ray = packet.rays[i < packet.count ? i : 0];
+        rayHits.ray.org_x[i] = ray.origin.x;
+        rayHits.ray.org_y[i] = ray.origin.y;
+        rayHits.ray.org_z[i] = ray.origin.z;
+        rayHits.ray.dir_x[i] = ray.direction.x;
+        rayHits.ray.dir_y[i] = ray.direction.y;
+        rayHits.ray.dir_z[i] = ray.direction.z;
+        rayHits.ray.tnear[i] = 0.0f;
+        rayHits.ray.tfar[i] = std::numeric_limits<float>::infinity();
+        rayHits.ray.time[i] = 0.0f;
+        rayHits.ray.mask[i] = 0xFFFFFFFFu;
+        rayHits.ray.id[i] = 0;
+        rayHits.ray.flags[i] = 0;
+        rayHits.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+        rayHits.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+    }
+    return rayHits;
 }
 
 /// The occlusion query for the segment from `from` to `to`, both ends excluded.

@@ -1,6 +1,7 @@
 #pragma once
 /// Everything pathTrace() may ask of the framework while it follows one path.
 
+#include "pathlab/camera_packet.h"
 #include "pathlab/color.h"
 #include "pathlab/hit.h"
 #include "pathlab/lab_parameters.h"
@@ -37,11 +38,20 @@ public:
     const RayCounters& rayCounters() const { return counters_; }
     /// Also appends every ray traced from now on to `log` (null: stop recording).
     void recordRaysInto(RayLog* log) { log_ = log; }
+    /// Hands the next trace() the hit of the camera ray in `lane` of a traced packet: the
+    /// renderer traces camera rays in packets, and a lab's first trace() is that ray. (Any
+    /// other ray is traced as usual.)
+    void primeCameraHit(const CameraPacket* packet, int lane) {
+        packet_ = packet;
+        lane_ = lane;
+    }
 
 private:
     const RenderScene& scene_;
     RayCounters counters_;
     RayLog* log_ = nullptr;
+    const CameraPacket* packet_ = nullptr; ///< primed by the renderer for the next trace()
+    int lane_ = 0;
 };
 
 } // namespace pathlab

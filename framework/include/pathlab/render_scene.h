@@ -1,6 +1,7 @@
 #pragma once
 /// The scene ready to trace: Embree's acceleration structure, the triangles' data and the lights.
 
+#include "pathlab/camera_packet.h"
 #include "pathlab/hit.h"
 #include "pathlab/light_sampler.h"
 #include "pathlab/ray.h"
@@ -27,6 +28,11 @@ public:
 
     /// The closest surface along `ray`.
     Hit intersect(const Ray& ray) const;
+    /// Traces the camera rays of `packet` in one query and stores what each found.
+    void intersect(CameraPacket& packet) const;
+    /// What the ray in `lane` of a traced packet found: the Hit intersect(packet.rays[lane])
+    /// returns.
+    Hit hit(const CameraPacket& packet, int lane) const;
     /// Whether anything lies between `from` and `to` (both excluded).
     bool occluded(const Vec3& from, const Vec3& to) const;
 
@@ -45,6 +51,9 @@ private:
         uint32_t vertexNormals;  ///< index into vertexNormals_, or Flat when the OBJ gave none
     };
     static constexpr uint32_t Flat = ~0u;
+
+    /// The Hit of `ray` on `triangle` at distance t and barycentrics (u, v), as Embree found it.
+    Hit shade(const Ray& ray, uint32_t triangle, float distance, float u, float v) const;
 
     struct Embree;
     Scene scene_;
