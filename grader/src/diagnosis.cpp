@@ -14,6 +14,7 @@ struct Behaviour {
     bool emissionAfterDiffuse = false;
     int depthShift = 0;             ///< labs 1-3: bounces beyond (or short of) maxDepth
     bool rouletteWeightMissing = false;
+    bool rouletteWeightTwice = false;
 };
 
 /// Σ over path vertices d of (weight·a)^d · (emission at d + direct light at d).
@@ -21,6 +22,7 @@ double furnaceValue(Lab lab, const FurnaceModel& m, const Behaviour& b) {
     const double a = m.albedo;
     double perBounce = b.bounceWeight * a;
     if (lab == Lab::Roulette && b.rouletteWeightMissing) perBounce *= m.continueProb;
+    if (lab == Lab::Roulette && b.rouletteWeightTwice) perBounce /= m.continueProb;
     const int lastDepth = isDepthLimited(lab) ? m.maxDepth + b.depthShift : 100000;
     double value = 0, weight = 1;
     for (int d = 0; d <= lastDepth && weight > 1e-12; ++d) {
@@ -71,7 +73,7 @@ std::vector<Candidate> candidates() {
         {3, 1, false, 0, false}, Lab::Importance);
     add("Russian-roulette weight missing: a continued path must be divided by continueProb "
         "(TODO lab4.4)", {1, 1, false, 0, true}, Lab::Roulette);
-    add("divided by continueProb twice", {1 / 0.8, 1, false, 0, false}, Lab::Roulette);
+    add("divided by continueProb twice", {1, 1, false, 0, false, true}, Lab::Roulette);
     return list;
 }
 
@@ -87,10 +89,7 @@ std::string diagnoseFurnace(Lab lab, const FurnaceModel& model, double observed,
     double bestDistance = INFINITY;
     for (const Candidate& c : candidates()) {
         if (!c.applies(lab)) continue;
-        Behaviour b = c.behaviour;
-        if (lab == Lab::Roulette && std::string(c.cause).find("continueProb twice") != std::string::npos)
-            b.bounceWeight = 1 / model.continueProb;
-        const double predicted = furnaceValue(lab, model, b);
+        const double predicted = furnaceValue(lab, model, c.behaviour);
         if (!std::isfinite(predicted)) {
             if (!std::isfinite(observed) || observed > 20 * correctFurnaceValue(lab, model)) return c.cause;
             continue;

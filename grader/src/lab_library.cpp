@@ -124,7 +124,9 @@ LabBuild loadLabBuild(const std::string& path) {
 
 LabKit existingLabKit(const std::string& folder) {
     const LabKit kit = existingLabKitPaths(folder);
-    for (const std::string& part : {kit.tableObject, kit.solutionsLibrary, kit.stubObjects[0]})
+    std::vector<std::string> parts = {kit.tableObject, kit.solutionsLibrary};
+    parts.insert(parts.end(), kit.stubObjects.begin(), kit.stubObjects.end());
+    for (const std::string& part : parts)
         if (!fs::exists(part)) throw InputError("the lab kit in " + folder + " lacks " + part);
     return kit;
 }

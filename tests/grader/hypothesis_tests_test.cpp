@@ -63,4 +63,7 @@ TEST_CASE("the furnace values of correct labs and of known bugs", "[grader]") {
     const double noWeight = 1 + 0.5 / (1 - 0.4);
     CHECK(diagnoseFurnace(Lab::Roulette, model, noWeight, 0.002).find("Russian-roulette weight") !=
           std::string::npos);
+    // Divided by q twice: each continuation weighs a/q = 0.625, so 1 + 0.5/(1 − 0.625).
+    CHECK(diagnoseFurnace(Lab::Roulette, model, 1 + 0.5 / 0.375, 0.002).find("continueProb twice") !=
+          std::string::npos);
 }
