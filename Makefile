@@ -2,7 +2,7 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 
-.PHONY: run build test test-slow grade report deps clean handouts handouts-html
+.PHONY: run build test test-slow grade report bench deps clean handouts handouts-html
 
 deps:
 	@scripts/install-deps.sh
@@ -29,6 +29,12 @@ grade: build
 # Grade them and write lab-report.md: your frame rates, ratios and noise beside the reference's.
 report: build
 	cd $(BUILD) && ./grader --report $(CURDIR)/lab-report.md
+
+# PathLab's speed beside Embree's raw ray traversal and Embree's own pathtracer: one table per
+# scene (apps/bench; `./bench --help`). BENCH_ARGS="--json bench.json" keeps the figures as JSON.
+# Timings are only meaningful on an otherwise idle machine.
+bench: build
+	cd $(BUILD) && ./bench $(BENCH_ARGS)
 
 # The handouts' figures, remade from the reference solutions and timed on this machine (about
 # 6 minutes on 2 cores; run it when the machine is otherwise idle), then their HTML pages.

@@ -61,6 +61,7 @@ int runBench(BenchOptions options) {
     }
     std::fprintf(stderr, "bench: Embree's pathtracer ...\n");
     report.peer = comparePeer(options, threads);
+    report.memory.note = "not measured (--peer-only)";
     if (!options.peerOnly) {
         std::fprintf(stderr, "bench: peak memory ...\n");
         report.memory = measurePeakMemory(std::filesystem::read_symlink("/proc/self/exe"),

@@ -1,0 +1,137 @@
+#!/usr/bin/env python3
+"""Tests of the benchmark (apps/bench), ctest label `bench`. They check what it measures, never
+how fast anything is.
+
+  bench_test.py smoke BENCH      bench runs at a tiny size; its JSON parses with every field
+  bench_test.py agreement BENCH  PathLab's importance solution and Embree's own pathtracer give
+                                 Embree's Cornell box the same mean radiance; skipped (exit 77)
+                                 when Embree's pathtracer (Debian package embree-tools) is absent
+"""
+
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+SKIPPED = 77  # ctest's SKIP_RETURN_CODE for these tests
+
+# Per channel, the two means may differ by at most this many standard errors of their
+# difference. Both renders are deterministic (fixed seeds), so the verdict never changes from
+# run to run; for a correct pair of estimators it fails with probability below 2e-4.
+TOLERANCE_SE = 4.0
+
+
+def run_bench(bench, arguments, folder):
+    out = os.path.join(folder, "bench.json")
+    result = subprocess.run([bench, *arguments, "--json", out], capture_output=True, text=True,
+                            timeout=300)
+    if result.returncode != 0:
+        sys.exit(f"bench failed ({result.returncode}):\n{result.stdout}\n{result.stderr}")
+    with open(out) as f:
+        return json.load(f), result.stdout
+
+
+def positive(value, what):
+    if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
+        sys.exit(f"{what} should be a positive number, is {value!r}")
+
+
+def rgb(value, what):
+    if not (isinstance(value, list) and len(value) == 3 and
+            all(isinstance(c, (int, float)) and math.isfinite(c) for c in value)):
+        sys.exit(f"{what} should be three numbers, is {value!r}")
+    return value
+
+
+def smoke(bench):
+    with tempfile.TemporaryDirectory() as folder:
+        report, table = run_bench(bench, [
+            "--size", "24", "16", "--spp", "1", "--passes", "1", "--threads", "2",
+            "--peer-spp", "1", "--peer-image-spp", "2",
+            "--memory-size", "32", "32", "--memory-frames", "2"], folder)
+
+    scenes = report["scenes"]
+    if not scenes:
+        sys.exit("no scene was measured")
+    for scene in scenes:
+        name = scene["scene"]
+        if f"\n{name}: " not in table:
+            sys.exit(f"the table has no section for {name}:\n{table}")
+        positive(scene["triangles"], f"{name} triangles")
+        if (scene["width"], scene["height"], scene["threads"]) != (24, 16, 2):
+            sys.exit(f"{name}: size or threads not as asked: {scene}")
+        for threads in ("one_thread", "threads"):
+            for kind in ("camera", "closest_hit", "occlusion"):
+                positive(scene["raw"][threads][kind], f"{name} raw {threads} {kind} rays/s")
+        labs = [s["lab"] for s in scene["solutions"]]
+        if labs != ["branching", "uniform", "importance", "roulette"]:
+            sys.exit(f"{name}: solutions {labs}")
+        for s in scene["solutions"]:
+            what = f"{name} {s['lab']}"
+            for threads in ("one_thread", "threads"):
+                figures = s[threads]
+                positive(figures["samples_per_second"], f"{what} {threads} samples/s")
+                positive(figures["rays_per_second"]["intersect"], f"{what} {threads} intersect/s")
+                positive(figures["raw_mix_rays_per_second"], f"{what} {threads} raw mix rays/s")
+                positive(figures["efficiency"], f"{what} {threads} efficiency")
+            positive(s["scaling"], f"{what} scaling")
+            if s["efficiency"] != s["threads"]["efficiency"]:
+                sys.exit(f"{what}: the headline efficiency is not the all-threads one")
+
+    peer = report["embree_pathtracer"]
+    if peer["measured"]:
+        positive(peer["embree_samples_per_second"], "Embree pathtracer samples/s")
+        positive(peer["ours_samples_per_second"], "PathLab samples/s on Embree's box")
+        positive(peer["ratio"], "PathLab / Embree")
+        if peer["max_path_length"] != peer["max_depth"] + 1:
+            sys.exit(f"path length {peer['max_path_length']} != max-depth {peer['max_depth']} + 1")
+        rgb(peer["mean_radiance"]["embree"], "Embree's mean radiance")
+        rgb(peer["mean_radiance"]["ours"], "PathLab's mean radiance")
+        if "Embree pathtracer" not in table:
+            sys.exit(f"the table has no comparison with Embree's pathtracer:\n{table}")
+    elif not peer["note"]:
+        sys.exit("the comparison with Embree's pathtracer was not measured and says not why")
+
+    memory = report["memory"]
+    if not memory["measured"]:
+        sys.exit(f"peak memory not measured: {memory.get('note')}")
+    positive(memory["peak_mib"], "peak memory")
+    print(f"bench ran; {len(scenes)} scene(s); JSON complete")
+
+
+def agreement(bench):
+    with tempfile.TemporaryDirectory() as folder:
+        report, table = run_bench(bench, [
+            "--peer-only", "--size", "128", "128", "--passes", "1", "--peer-spp", "1",
+            "--peer-image-spp", "64"], folder)
+    peer = report["embree_pathtracer"]
+    if not peer["measured"]:
+        print(f"skipped: {peer['note']}")
+        sys.exit(SKIPPED)
+    embree = rgb(peer["mean_radiance"]["embree"], "Embree's mean radiance")
+    ours = rgb(peer["mean_radiance"]["ours"], "PathLab's mean radiance")
+    error = rgb(peer["standard_error"], "standard error")
+    print(table)
+    if peer["ours_max_pixel"] >= 1:
+        sys.exit(f"PathLab's brightest pixel is {peer['ours_max_pixel']}: Embree's 8-bit image "
+                 "clips there, so the means cannot agree; dim --peer-light-scale")
+    failures = []
+    for channel, e, o, se in zip("rgb", embree, ours, error):
+        positive(e, f"Embree's mean ({channel})")
+        positive(se, f"standard error ({channel})")
+        z = (o - e) / se
+        print(f"{channel}: Embree {e:.5f}  PathLab {o:.5f}  difference {z:+.2f} standard errors")
+        if abs(z) > TOLERANCE_SE:
+            failures.append(channel)
+    if failures:
+        sys.exit(f"the mean radiances differ by more than {TOLERANCE_SE} standard errors in "
+                 f"channel(s) {', '.join(failures)}")
+    print("the mean radiances agree")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3 or sys.argv[1] not in ("smoke", "agreement"):
+        sys.exit(__doc__)
+    {"smoke": smoke, "agreement": agreement}[sys.argv[1]](sys.argv[2])
