@@ -17,6 +17,21 @@ bool ViewSettings::operator==(const ViewSettings& o) const {
            seed == o.seed && split == o.split;
 }
 
+namespace {
+
+/// `buffer` cleared at width × height. Its memory is reused when the size is the same, and
+/// released before a new size is allocated, so a restart never holds two full-size buffers.
+void resetBuffer(AccumulationBuffer& buffer, int width, int height) {
+    if (buffer.width() == width && buffer.height() == height) {
+        buffer.clear();
+        return;
+    }
+    buffer = AccumulationBuffer(1, 1);
+    buffer = AccumulationBuffer(width, height);
+}
+
+} // namespace
+
 ProgressiveRenderer::ProgressiveRenderer(const RenderScene& scene, int threads,
                                          const ViewSettings& settings,
                                          std::function<void(const Frame&)> onFrame, int frameLimit)
@@ -76,11 +91,14 @@ void ProgressiveRenderer::run() {
                        frames < frameLimit_;
             });
             if (stopping_) return;
-            if (generation != generation_) { // restart: fresh buffers for the new settings
+            if (generation != generation_) { // restart: cleared buffers for the new settings
                 generation = generation_;
                 settings = settings_;
                 cancel_ = false;
-                for (auto& b : buffers) b = AccumulationBuffer(settings.width, settings.height);
+                // The other implementation's buffer is only needed for the split view.
+                resetBuffer(buffers[0], settings.width, settings.height);
+                resetBuffer(buffers[1], settings.split ? settings.width : 1,
+                            settings.split ? settings.height : 1);
                 seconds[0] = seconds[1] = 0;
                 frames = 0;
             }
@@ -107,12 +125,8 @@ void ProgressiveRenderer::run() {
         Frame frame;
         frame.settings = settings;
         frame.number = frames;
-        frame.image = buffers[0].meanImage();
         frame.spp = buffers[0].samplesPerPixel();
-        if (settings.split) {
-            frame.otherImage = buffers[1].meanImage();
-            frame.otherSpp = buffers[1].samplesPerPixel();
-        }
+        if (settings.split) frame.otherSpp = buffers[1].samplesPerPixel();
         frame.frameSeconds = elapsed.count();
         frame.raysPerSecond =
             static_cast<double>(renderer.rayCounters().total() - before.total()) / elapsed.count();
@@ -121,7 +135,16 @@ void ProgressiveRenderer::run() {
         if (onFrame_) onFrame_(frame);
         std::lock_guard<std::mutex> lock(mutex_);
         if (generation == generation_) {
+            // The images go straight into the published frame's memory, which the window copies
+            // from under this lock: at full HD a third full-size image would be 25 MB more.
+            std::vector<float> image = std::move(latest_.image);
+            std::vector<float> otherImage = std::move(latest_.otherImage);
+            buffers[0].meanImage(image);
+            if (settings.split) buffers[1].meanImage(otherImage);
+            else otherImage.clear();
             latest_ = std::move(frame);
+            latest_.image = std::move(image);
+            latest_.otherImage = std::move(otherImage);
             latestGeneration_ = generation;
         }
     }

@@ -47,8 +47,9 @@ struct Frame {
 
 class ProgressiveRenderer {
 public:
-    /// `onFrame` is called on the render thread after every finished frame; with `frameLimit`
-    /// > 0 the renderer idles after that many frames until the next restart.
+    /// `onFrame` is called on the render thread after every finished frame, with its figures
+    /// (its images only reach takeFrame); with `frameLimit` > 0 the renderer idles after that
+    /// many frames until the next restart.
     ProgressiveRenderer(const RenderScene& scene, int threads, const ViewSettings& settings,
                         std::function<void(const Frame&)> onFrame = {}, int frameLimit = 0);
     ~ProgressiveRenderer();

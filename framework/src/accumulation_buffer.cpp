@@ -59,12 +59,17 @@ float AccumulationBuffer::meanRelativeStandardError() const {
 }
 
 std::vector<float> AccumulationBuffer::meanImage() const {
-    std::vector<float> rgb(3 * sum_.size());
+    std::vector<float> rgb;
+    meanImage(rgb);
+    return rgb;
+}
+
+void AccumulationBuffer::meanImage(std::vector<float>& rgb) const {
+    rgb.resize(3 * sum_.size());
     for (size_t i = 0; i < sum_.size(); ++i) {
         const Color m = mean(static_cast<int>(i));
         rgb[3 * i] = m.r, rgb[3 * i + 1] = m.g, rgb[3 * i + 2] = m.b;
     }
-    return rgb;
 }
 
 } // namespace pathlab

@@ -47,6 +47,8 @@ public:
 
     /// The image as linear RGB floats, row-major from the top-left corner.
     std::vector<float> meanImage() const;
+    /// The same into `rgb`, reusing its memory (the viewer does this every frame).
+    void meanImage(std::vector<float>& rgb) const;
 
 private:
     int width_, height_;
