@@ -4,6 +4,7 @@
 #include "pathlab/image_io.h"
 #include "pathlab/input_error.h"
 #include "pathlab/render_options.h"
+#include "pathlab/render_scene.h"
 #include "viewer_window.h"
 
 #include <cstdio>
@@ -29,17 +30,32 @@ void checkOutputs(const RenderOptions& options) {
     }
 }
 
+/// "render.exr" for seed 7 of several: "render-7.exr".
+std::string withSeed(const std::string& path, uint64_t seed) {
+    const std::filesystem::path p(path);
+    return (p.parent_path() / (p.stem().string() + "-" + std::to_string(seed) + p.extension().string())).string();
+}
+
 int renderToFile(const RenderOptions& options) {
-    HeadlessResult result = renderHeadless(options);
-    writeImage(options.outputImage, options.width, options.height, result.image.meanImage());
-    if (!options.statsFile.empty()) writeRenderStats(options.statsFile, result.stats);
-    const RenderStats& s = result.stats;
-    std::printf("wrote %s: %s, %s/%s, %dx%d, %d spp, %.3f s, %.3g samples/s, %.3g rays/s\n",
-                options.outputImage.c_str(), s.scene.c_str(), s.lab.c_str(), s.impl.c_str(),
-                s.width, s.height, s.spp, s.seconds, s.samplesPerSecond(), s.raysPerSecond());
-    if (s.nonfinitePixels > 0)
-        std::fprintf(stderr, "warning: %d pixel(s) received NaN or infinite samples (left out)\n",
-                     s.nonfinitePixels);
+    const RenderScene scene(loadScene(options));
+    for (int k = 0; k < options.seedCount; ++k) {
+        RenderOptions one = options;
+        one.seed = options.seed + static_cast<uint64_t>(k);
+        if (options.seedCount > 1) {
+            one.outputImage = withSeed(options.outputImage, one.seed);
+            if (!options.statsFile.empty()) one.statsFile = withSeed(options.statsFile, one.seed);
+        }
+        HeadlessResult result = renderHeadless(one, scene);
+        writeImage(one.outputImage, one.width, one.height, result.image.meanImage());
+        if (!one.statsFile.empty()) writeRenderStats(one.statsFile, result.stats);
+        const RenderStats& s = result.stats;
+        std::printf("wrote %s: %s, %s/%s, %dx%d, %d spp, %.3f s, %.3g samples/s, %.3g rays/s\n",
+                    one.outputImage.c_str(), s.scene.c_str(), s.lab.c_str(), s.impl.c_str(),
+                    s.width, s.height, s.spp, s.seconds, s.samplesPerSecond(), s.raysPerSecond());
+        if (s.nonfinitePixels > 0)
+            std::fprintf(stderr, "warning: %d pixel(s) received NaN or infinite samples (left out)\n",
+                         s.nonfinitePixels);
+    }
     return 0;
 }
 

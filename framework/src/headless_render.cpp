@@ -10,6 +10,10 @@ namespace pathlab {
 
 HeadlessResult renderHeadless(const RenderOptions& options) {
     const RenderScene scene(loadScene(options));
+    return renderHeadless(options, scene);
+}
+
+HeadlessResult renderHeadless(const RenderOptions& options, const RenderScene& scene) {
     const Camera camera(scene.scene().camera.value_or(scene.scene().framingCamera()), options.width,
                         options.height);
     Renderer renderer(scene, options.threads);

@@ -188,6 +188,7 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv) {
         {"o", [&](const Token& t) { o.outputImage = in.value(t, "an image file name").text; }},
         {"spp", [&](const Token& t) { o.spp = positive(in, t, "samples per pixel", 1 << 24); }},
         {"stats", [&](const Token& t) { o.statsFile = in.value(t, "a .json file name").text; }},
+        {"seeds", [&](const Token& t) { o.seedCount = positive(in, t, "a number of seeds", 100000); }},
         {"spp-per-frame",
          [&](const Token& t) { o.sppPerFrame = positive(in, t, "samples per pixel", 4096); }},
         {"print-frame-rate", [&](const Token&) { o.printFrameRate = true; }},
@@ -250,6 +251,9 @@ headless
                          radiance; .png: sRGB, clamped), no window
   --spp N                samples per pixel for -o (default 16)
   --stats FILE.json      write what was measured (time, rays, mean radiance)
+  --seeds K              render K independent images, for seeds S to S+K-1, each to FILE
+                         and FILE.json with -SEED before the extension (one process, one
+                         scene load: how the grader renders its seeds)
 window
   --spp-per-frame N      samples per pixel added each frame (default 1)
   --print-frame-rate     print frame rate, spp and rays/s every frame

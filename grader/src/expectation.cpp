@@ -27,15 +27,16 @@ Expectation measure(const LabRunner& solution, const std::string& scene, Lab lab
     for (int s = 0; s < seeds; ++s) {
         RenderRequest r{&solution, scene, lab, rubric.width, rubric.height,
                         spp, rubric.maxDepth, rubric.continueProb,
-                        static_cast<uint64_t>(1000000 + s), 0, scratch};
+                        static_cast<uint64_t>(1000000 + s), 1, 0, scratch};
         const RenderResult result = renderLab(r, {rubric.secondsPerRun * 20, rubric.memoryBytes});
         if (!result.ok)
             throw std::runtime_error("the reference solution of " + e.solution + " failed on " +
                                      scene + ": " + result.failure);
-        const std::vector<double> means = regionMeans(result.image, result.width, result.height, rubric.tiles);
-        if (perRegion.empty()) perRegion.resize(means.size()), imageSum.assign(result.image.size(), 0.0);
+        const std::vector<float>& image = result.image();
+        const std::vector<double> means = regionMeans(image, result.width, result.height, rubric.tiles);
+        if (perRegion.empty()) perRegion.resize(means.size()), imageSum.assign(image.size(), 0.0);
         for (size_t i = 0; i < means.size(); ++i) perRegion[i].push_back(means[i]);
-        for (size_t i = 0; i < result.image.size(); ++i) imageSum[i] += result.image[i];
+        for (size_t i = 0; i < image.size(); ++i) imageSum[i] += image[i];
         step();
     }
     for (const auto& values : perRegion) {
@@ -93,11 +94,11 @@ SceneReference measureReference(const LabRunner& solution, const std::string& sc
             RenderRequest r{&solution, scenePath, lab, rubric.width,
                             rubric.height, rubric.correctnessSpp[static_cast<int>(lab)],
                             rubric.maxDepth, rubric.continueProb, static_cast<uint64_t>(2000000 + s),
-                            0, scratch};
+                            1, 0, scratch};
             const RenderResult result = renderLab(r, {rubric.secondsPerRun * 20, rubric.memoryBytes});
             if (!result.ok)
                 throw std::runtime_error("the reference solution failed: " + result.failure);
-            for (int c = 0; c < 3; ++c) sum[c] += result.meanVariance[c] / varianceSeeds;
+            for (int c = 0; c < 3; ++c) sum[c] += result.images[0].meanVariance[c] / varianceSeeds;
             step();
         }
         ref.variance[static_cast<int>(lab)] = sum;

@@ -61,27 +61,28 @@ struct SceneRuns {
 SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab lab, uint64_t seedBase) {
     const Rubric& r = setup.rubric;
     SceneRuns runs;
-    for (int s = 0; s < r.seeds; ++s) {
-        RenderRequest request{&setup.student, scene.path, lab, r.width, r.height,
-                              r.correctnessSpp[static_cast<int>(lab)], r.maxDepth,
-                              r.continueProb, seedBase + static_cast<uint64_t>(s), setup.threads,
-                              setup.scratch};
-        const RenderResult result = renderLab(request, limitsOf(r));
-        if (!result.ok) {
-            runs.failure = result.failure;
-            runs.failureKind = result.failureKind;
-            return runs;
-        }
-        const std::vector<double> means = regionMeans(result.image, result.width, result.height, r.tiles);
+    // All seeds in one viewer process: its start-up, longer than a small render, is paid once.
+    const RenderRequest request{&setup.student, scene.path, lab, r.width, r.height,
+                                r.correctnessSpp[static_cast<int>(lab)], r.maxDepth,
+                                r.continueProb, seedBase, r.seeds, setup.threads, setup.scratch};
+    const RenderResult result = renderLab(request, limitsOf(r));
+    if (!result.ok) {
+        runs.failure = result.failure;
+        runs.failureKind = result.failureKind;
+        return runs;
+    }
+    for (const RenderedImage& rendered : result.images) {
+        const std::vector<float>& image = rendered.rgb;
+        const std::vector<double> means = regionMeans(image, result.width, result.height, r.tiles);
         if (runs.regionValues.empty()) {
             runs.regionValues.resize(means.size());
-            runs.imageSum.assign(result.image.size(), 0.0);
-            runs.imageSumSquares.assign(result.image.size(), 0.0);
+            runs.imageSum.assign(image.size(), 0.0);
+            runs.imageSumSquares.assign(image.size(), 0.0);
         }
         for (size_t i = 0; i < means.size(); ++i) runs.regionValues[i].push_back(means[i]);
-        for (size_t i = 0; i < result.image.size(); ++i) {
-            runs.imageSum[i] += result.image[i];
-            runs.imageSumSquares[i] += static_cast<double>(result.image[i]) * result.image[i];
+        for (size_t i = 0; i < image.size(); ++i) {
+            runs.imageSum[i] += image[i];
+            runs.imageSumSquares[i] += static_cast<double>(image[i]) * image[i];
         }
         ++runs.runs;
     }
@@ -341,7 +342,7 @@ double startupSeconds(const GraderSetup& setup, const LabRunner& runner, const s
     std::vector<double> seconds;
     for (int i = 0; i < 3; ++i) {
         RenderRequest request{&runner, scene, Lab::Uniform, 1, 1, 1, setup.rubric.maxDepth,
-                              setup.rubric.continueProb, 1, threads, setup.scratch};
+                              setup.rubric.continueProb, 1, 1, threads, setup.scratch};
         const RenderResult r = renderLab(request, limitsOf(setup.rubric));
         if (r.ok) seconds.push_back(r.process.seconds);
     }
@@ -371,7 +372,7 @@ CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade
             const bool isStudent = runner == &studentRunner;
             RenderRequest request{runner, path, lab, r.speedWidth, r.speedHeight,
                                   r.speedSpp[static_cast<int>(lab)], r.maxDepth, r.continueProb,
-                                  static_cast<uint64_t>(77 + run), threads, setup.scratch};
+                                  static_cast<uint64_t>(77 + run), 1, threads, setup.scratch};
             const RenderResult result = renderLab(request, limitsOf(r));
             if (!result.ok) {
                 check.summary = std::string(isStudent ? "the lab " : "the reference ") +
@@ -381,7 +382,7 @@ CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade
             }
             const double seconds = std::max(result.process.seconds - startup, 1e-3);
             (isStudent ? student : solution).push_back(samples / seconds);
-            (isStudent ? studentMeans : solutionMeans).push_back(imageMean(result.image));
+            (isStudent ? studentMeans : solutionMeans).push_back(imageMean(result.image()));
         }
     }
     grade.studentSamplesPerSecond = median(student);
@@ -419,7 +420,8 @@ CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade
 
 LabGrade ungradedLab(const Rubric& rubric, Lab lab, bool measureSpeed, const std::string& reason,
                      const std::vector<std::string>& details) {
-    LabGrade grade{lab, {}, 0, 0, {}};
+    LabGrade grade;
+    grade.lab = lab;
     const LabPoints& points = rubric.points[static_cast<int>(lab)];
     std::vector<std::pair<std::string, double>> checks = {{"correctness", points.correctness},
                                                           {"noise", points.noise}};
@@ -437,7 +439,8 @@ LabGrade ungradedLab(const Rubric& rubric, Lab lab, bool measureSpeed, const std
 }
 
 LabGrade gradeLab(const GraderSetup& setup, Lab lab) {
-    LabGrade grade{lab, {}, 0, 0, {}};
+    LabGrade grade;
+    grade.lab = lab;
     std::array<double, 3> noiseVariance{-1, -1, -1};
     grade.checks.push_back(checkCorrectness(setup, lab, grade, noiseVariance));
     grade.checks.push_back(checkNoise(setup, lab, grade.checks[0].passed, noiseVariance, grade));

@@ -21,7 +21,7 @@ struct CheckResult {
 };
 
 struct LabGrade {
-    Lab lab;
+    Lab lab = Lab::Branching;
     std::vector<CheckResult> checks;
     double studentSamplesPerSecond = 0, solutionSamplesPerSecond = 0; ///< the timed runs' medians
     double studentVariance = 0, solutionVariance = 0; ///< per sample, on the noise scene

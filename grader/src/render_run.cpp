@@ -24,17 +24,23 @@ std::vector<std::string> viewerArguments(const RenderRequest& r, const std::stri
         "-c", r.scene, "--size", std::to_string(r.width), std::to_string(r.height),
         "--spp", std::to_string(r.spp), "--lab", std::string(labName(r.lab)),
         "--max-depth", std::to_string(r.maxDepth), "--continue-prob", std::to_string(r.continueProb),
-        "--seed", std::to_string(r.seed), "-o", image, "--stats", stats};
+        "--seed", std::to_string(r.seed), "--seeds", std::to_string(r.seeds), "-o", image,
+        "--stats", stats};
     if (!r.runner->sandboxed() && r.runner->implementation == Implementation::Solution)
         argv.push_back("--solution");
     if (r.threads > 0) argv.insert(argv.end(), {"--threads", std::to_string(r.threads)});
     return argv;
 }
 
-/// Runs the submission viewer in the sandbox and puts the image and stats it leaves into
-/// `image` and `stats` on the host. Returns a problem in words, or "".
+/// The files the viewer writes for seed `seed` of a request: named as viewer --seeds names them.
+std::pair<std::string, std::string> outputNames(const RenderRequest& r, uint64_t seed) {
+    if (r.seeds == 1) return {"render.exr", "render.json"};
+    return {"render-" + std::to_string(seed) + ".exr", "render-" + std::to_string(seed) + ".json"};
+}
+
+/// Runs the submission viewer in the sandbox and puts the images and stats it leaves into the
+/// request's scratch folder on the host. Returns a problem in words, or "".
 std::string renderSandboxed(const RenderRequest& r, const ProcessLimits& limits,
-                            const std::string& image, const std::string& stats,
                             ProcessOutcome& process) {
     SandboxRun run;
     run.command = {"/pathlab/viewer"};
@@ -43,7 +49,10 @@ std::string renderSandboxed(const RenderRequest& r, const ProcessLimits& limits,
     run.files = {{r.runner->viewer, "/pathlab/viewer"}, {r.runner->labsLibrary, "/pathlab/labs.so"}};
     for (const std::string& file : sceneFiles(r.scene)) run.files.push_back({file, file});
     run.environment = {{"PATHLAB_LABS_LIBRARY", "/pathlab/labs.so"}};
-    run.collect = {"render.exr", "render.json"};
+    for (int k = 0; k < r.seeds; ++k) {
+        const auto [image, stats] = outputNames(r, r.seed + static_cast<uint64_t>(k));
+        run.collect.insert(run.collect.end(), {image, stats});
+    }
     run.scratchBytes = 64LL << 20;
     ProcessLimits sandboxLimits = limits;
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
@@ -54,10 +63,37 @@ std::string renderSandboxed(const RenderRequest& r, const ProcessLimits& limits,
     process = outcome.process;
     if (!process.succeeded()) return "";
     if (!outcome.problem.empty()) return outcome.problem;
-    for (const auto& [name, path] : {std::pair{"render.exr", image}, {"render.json", stats}}) {
+    for (const std::string& name : run.collect) {
         const auto file = outcome.files.find(name);
-        if (file == outcome.files.end()) return std::string("it wrote no ") + name;
-        std::ofstream(path, std::ios::binary) << file->second;
+        if (file == outcome.files.end()) return "it wrote no " + name;
+        std::ofstream(r.scratch + "/" + name, std::ios::binary) << file->second;
+    }
+    return "";
+}
+
+/// Reads one seed's image and stats from the scratch folder into `rendered`; returns why it
+/// cannot, in words, with `kind` in a few, or "".
+std::string readRendered(const RenderRequest& r, uint64_t seed, RenderedImage& rendered,
+                         std::string& kind) {
+    const auto [imageName, statsName] = outputNames(r, seed);
+    try {
+        std::ifstream in(r.scratch + "/" + statsName);
+        const nlohmann::json s = nlohmann::json::parse(in);
+        if (const int nonfinite = s.at("nonfinite_pixels"); nonfinite > 0) {
+            kind = "NaN or infinite radiance";
+            return "returned NaN or infinite radiance in " + std::to_string(nonfinite) +
+                   " pixels (a division by a zero probability?)";
+        }
+        for (int c = 0; c < 3; ++c) rendered.meanVariance[c] = s.at("mean_variance").at(c);
+        const Image read = readImage(r.scratch + "/" + imageName);
+        // The lab runs in the process that writes this file: what it holds is checked, not trusted.
+        if (read.width != r.width || read.height != r.height)
+            throw std::runtime_error("the image is " + std::to_string(read.width) + "x" +
+                                     std::to_string(read.height) + ", not the size asked for");
+        rendered.rgb = read.rgb;
+    } catch (const std::exception& e) {
+        kind = "unreadable output";
+        return std::string("its output could not be read: ") + e.what();
     }
     return "";
 }
@@ -66,15 +102,17 @@ std::string renderSandboxed(const RenderRequest& r, const ProcessLimits& limits,
 
 RenderResult renderLab(const RenderRequest& r, const ProcessLimits& limits) {
     RenderResult result;
-    const std::string image = r.scratch + "/render.exr", stats = r.scratch + "/render.json";
-    fs::remove(image);
-    fs::remove(stats);
+    for (int k = 0; k < r.seeds; ++k) {
+        const auto [image, stats] = outputNames(r, r.seed + static_cast<uint64_t>(k));
+        fs::remove(r.scratch + "/" + image);
+        fs::remove(r.scratch + "/" + stats);
+    }
     std::string problem;
     if (r.runner->sandboxed()) {
-        problem = renderSandboxed(r, limits, image, stats, result.process);
+        problem = renderSandboxed(r, limits, result.process);
     } else {
         std::vector<std::string> argv = {r.runner->viewer};
-        const auto arguments = viewerArguments(r, image, stats);
+        const auto arguments = viewerArguments(r, r.scratch + "/render.exr", r.scratch + "/render.json");
         argv.insert(argv.end(), arguments.begin(), arguments.end());
         ProcessOptions options;
         options.cpus = r.runner->cpus;
@@ -95,31 +133,13 @@ RenderResult renderLab(const RenderRequest& r, const ProcessLimits& limits) {
         result.failure = "its output could not be read: " + problem;
         return result;
     }
-    try {
-        std::ifstream in(stats);
-        const nlohmann::json s = nlohmann::json::parse(in);
-        result.nonfinitePixels = s.at("nonfinite_pixels");
-        for (int c = 0; c < 3; ++c) result.meanVariance[c] = s.at("mean_variance").at(c);
-        const Image read = readImage(image);
-        // The lab runs in the process that writes this file: what it holds is checked, not trusted.
-        if (read.width != r.width || read.height != r.height)
-            throw std::runtime_error("the image is " + std::to_string(read.width) + "x" +
-                                     std::to_string(read.height) + ", not the size asked for");
-        result.image = read.rgb;
-        result.width = read.width;
-        result.height = read.height;
-    } catch (const std::exception& e) {
-        result.failureKind = "unreadable output";
-        result.failure = std::string("its output could not be read: ") + e.what();
-        return result;
+    for (int k = 0; k < r.seeds; ++k) {
+        result.failure = readRendered(r, r.seed + static_cast<uint64_t>(k),
+                                      result.images.emplace_back(), result.failureKind);
+        if (!result.failure.empty()) return result;
     }
-    if (result.nonfinitePixels > 0) {
-        result.failureKind = "NaN or infinite radiance";
-        result.failure = "returned NaN or infinite radiance in " +
-                         std::to_string(result.nonfinitePixels) +
-                         " pixels (a division by a zero probability?)";
-        return result;
-    }
+    result.width = r.width;
+    result.height = r.height;
     result.ok = true;
     return result;
 }

@@ -36,8 +36,15 @@ struct RenderRequest {
     int maxDepth = 3;
     float continueProb = 0.8f;
     uint64_t seed = 0;
+    int seeds = 1;                 ///< images for seeds seed .. seed+seeds-1, in one process
     int threads = 0;
-    std::string scratch;           ///< a folder for the image and stats
+    std::string scratch;           ///< a folder for the images and stats
+};
+
+/// One seed's image and what the viewer reported with it.
+struct RenderedImage {
+    std::vector<float> rgb;        ///< linear RGB, top row first
+    std::array<double, 3> meanVariance{}; ///< per-sample variance, averaged over pixels
 };
 
 struct RenderResult {
@@ -45,12 +52,13 @@ struct RenderResult {
     std::string failure;           ///< why not ok, in words for the student
     std::string failureKind;       ///< the same in a few words ("crashed", "time limit", ...)
     ProcessOutcome process;
-    std::vector<float> image;      ///< linear RGB, top row first
     int width = 0, height = 0;
-    std::array<double, 3> meanVariance{}; ///< per-sample variance, averaged over pixels
-    int nonfinitePixels = 0;
+    std::vector<RenderedImage> images; ///< one per seed, in order
+
+    const std::vector<float>& image() const { return images.front().rgb; }
 };
 
+/// Runs one viewer process for all the request's seeds; the limits hold for that process.
 RenderResult renderLab(const RenderRequest& request, const ProcessLimits& limits);
 
 /// Means of the image and of its tiles × tiles regions, per channel: region 0 is the whole

@@ -12,8 +12,13 @@ struct HeadlessResult {
     RenderStats stats;
 };
 
+class RenderScene;
+
 /// Renders options.spp samples per pixel of the scene the options name, with the lab and
 /// implementation they choose. Throws InputError for a bad scene.
 HeadlessResult renderHeadless(const RenderOptions& options);
+
+/// The same with the scene already loaded (several seeds of one scene: viewer --seeds).
+HeadlessResult renderHeadless(const RenderOptions& options, const RenderScene& scene);
 
 } // namespace pathlab

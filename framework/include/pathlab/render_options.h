@@ -34,6 +34,7 @@ struct RenderOptions {
     std::string outputImage;       ///< -o
     int spp = 16;                  ///< --spp
     std::string statsFile;         ///< --stats
+    int seedCount = 1;             ///< --seeds: that many images, for seeds seed, seed+1, ...
 
     // Interactive window
     int sppPerFrame = 1;           ///< --spp-per-frame
