@@ -25,41 +25,47 @@ std::string millions(double perSecond) {
 
 void printScene(const SceneFigures& s, std::FILE* out) {
     std::fprintf(out,
-                 "\n%s: %zu triangles, %dx%d, %d spp per pass, fastest of %d passes, %d threads, "
-                 "max-depth %d, continue-prob %g\n",
-                 s.name.c_str(), s.triangles, s.width, s.height, s.spp, s.passes, s.threads,
+                 "\n%s: %zu triangles, %dx%d, %d spp per pass, fastest of %d passes, max-depth "
+                 "%d, continue-prob %g\n",
+                 s.name.c_str(), s.triangles, s.width, s.height, s.spp, s.passes,
                  s.parameters.maxDepth, s.parameters.continueProb);
 
     const TraversalTimes one = s.rawOneThread(), all = s.raw();
-    std::fprintf(out, "\n  Embree alone (the solutions' rays, replayed)   1 thread  %2d threads\n",
+    std::fprintf(out,
+                 "\n  Embree alone, on the rays the solutions traced   1 thread  %2d threads\n",
                  s.threads);
-    std::fprintf(out, "    camera rays (coherent flag), rays/s       %9s  %10s\n",
-                 millions(rate(one.cameraRays, one.cameraSeconds)).c_str(),
-                 millions(rate(all.cameraRays, all.cameraSeconds)).c_str());
-    std::fprintf(out, "    closest-hit rays (incoherent), rays/s     %9s  %10s\n",
-                 millions(rate(one.bounceRays, one.bounceSeconds)).c_str(),
-                 millions(rate(all.bounceRays, all.bounceSeconds)).c_str());
-    std::fprintf(out, "    occlusion rays, rays/s                    %9s  %10s\n",
-                 millions(rate(one.shadowRays, one.shadowSeconds)).c_str(),
-                 millions(rate(all.shadowRays, all.shadowSeconds)).c_str());
+    const auto rawRow = [&](const char* what, size_t rays1, double seconds1, size_t raysN,
+                            double secondsN) {
+        std::fprintf(out, "    %-30s rays/s  %9s  %10s\n", what,
+                     millions(rate(rays1, seconds1)).c_str(),
+                     millions(rate(raysN, secondsN)).c_str());
+    };
+    rawRow("camera rays (coherent)", one.cameraRays, one.cameraSeconds, all.cameraRays,
+           all.cameraSeconds);
+    rawRow("closest-hit rays (incoherent)", one.bounceRays, one.bounceSeconds, all.bounceRays,
+           all.bounceSeconds);
+    rawRow("occlusion rays", one.shadowRays, one.shadowSeconds, all.shadowRays, all.shadowSeconds);
 
-    std::fprintf(
-        out,
-        "\n  reference   %2d threads: samples/s intersect/s occluded/s  rays/s  Embree-alone"
-        " efficiency | 1 thread: samples/s efficiency | scaling\n",
-        s.threads);
+    std::fprintf(out, "\n  solution    threads  samples/s  intersect/s  occluded/s   rays/s  "
+                      "Embree alone  efficiency\n");
+    const auto solutionRow = [&](const char* lab, int threads, const RenderTiming& r,
+                                 const TraversalTimes& raw, double efficiency) {
+        std::fprintf(out, "  %-10s %8d %10s %12s %11s %8s %13s %11.2f\n", lab, threads,
+                     millions(r.samplesPerSecond()).c_str(),
+                     millions(r.intersectPerSecond()).c_str(),
+                     millions(r.occludedPerSecond()).c_str(), millions(r.raysPerSecond()).c_str(),
+                     millions(raw.mixRate()).c_str(), efficiency);
+    };
     for (const SolutionFigures& f : s.solutions) {
-        std::fprintf(out, "  %-10s %22s %11s %10s %7s %13s %10.2f | %19s %10.2f | %6.2fx\n",
-                     std::string(labName(f.lab)).c_str(),
-                     millions(f.render.samplesPerSecond()).c_str(),
-                     millions(f.render.intersectPerSecond()).c_str(),
-                     millions(f.render.occludedPerSecond()).c_str(),
-                     millions(f.render.raysPerSecond()).c_str(), millions(f.raw.mixRate()).c_str(),
-                     f.efficiency(), millions(f.renderOneThread.samplesPerSecond()).c_str(),
-                     f.efficiencyOneThread(), f.scaling());
+        const std::string lab(labName(f.lab));
+        solutionRow(lab.c_str(), 1, f.renderOneThread, f.rawOneThread, f.efficiencyOneThread());
+        solutionRow("", s.threads, f.render, f.raw, f.efficiency());
     }
-    std::fprintf(
-        out, "  (efficiency: the rays/s achieved over Embree's rate for the same rays alone)\n");
+    std::fprintf(out, "  efficiency: rays/s achieved / Embree's rays/s on the same rays alone\n");
+    std::fprintf(out, "  thread scaling, samples/s with %d threads / 1:", s.threads);
+    for (const SolutionFigures& f : s.solutions)
+        std::fprintf(out, "  %s %.2fx", std::string(labName(f.lab)).c_str(), f.scaling());
+    std::fprintf(out, "\n");
 }
 
 void printPeer(const PeerComparison& c, std::FILE* out) {
