@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -131,7 +132,39 @@ LabKit existingLabKit(const std::string& folder) {
     return kit;
 }
 
+/// What a kit is made from: the compiler, its flags and every source and header, so that a kit
+/// already built from the same is reused (a restarted batch, a second shard on one machine).
+std::string kitFingerprint(const LabBuild& build) {
+    std::string text = build.compiler;
+    for (const std::string& flag : build.flags) text += " " + flag;
+    std::vector<std::string> files = {build.labTable};
+    for (Lab lab : AllLabs)
+        files.insert(files.end(), {build.stubs + "/" + labFile(lab), build.solutions + "/" + labFile(lab)});
+    for (const auto& entry : fs::recursive_directory_iterator(build.include))
+        if (entry.is_regular_file()) files.push_back(entry.path().string());
+    std::sort(files.begin(), files.end());
+    for (const std::string& file : files) {
+        std::ifstream in(file, std::ios::binary);
+        std::ostringstream bytes;
+        bytes << in.rdbuf();
+        text += "\n" + file + "\n" + bytes.str();
+    }
+    return std::to_string(std::hash<std::string>{}(text));
+}
+
 LabKit buildLabKit(const LabBuild& build, const std::string& folder, const SandboxPolicy& policy) {
+    const std::string fingerprint = kitFingerprint(build);
+    const std::string fingerprintFile = folder + "/fingerprint";
+    if (std::ifstream in(fingerprintFile); in) {
+        std::string made;
+        std::getline(in, made);
+        try {
+            if (made == fingerprint) return existingLabKit(folder);
+        } catch (const InputError&) {
+            // A part is missing: build it all again.
+        }
+    }
+    fs::remove(fingerprintFile);
     fs::create_directories(folder);
     fs::permissions(folder, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                                 fs::perms::others_read | fs::perms::others_exec);
@@ -152,6 +185,7 @@ LabKit buildLabKit(const LabBuild& build, const std::string& folder, const Sandb
     solutionObjects.push_back(kit.tableObject);
     const std::string failure = linkLibrary(build, solutionObjects, kit.solutionsLibrary, policy);
     if (!failure.empty()) throw std::runtime_error("the reference solutions: " + failure);
+    writeFile(fingerprintFile, fingerprint + "\n");
     return kit;
 }
 

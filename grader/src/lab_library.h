@@ -36,7 +36,8 @@ struct LabKit {
     std::string solutionsLibrary;
 };
 
-/// Builds the kit into `folder`; throws std::runtime_error if the trusted sources do not compile.
+/// Builds the kit into `folder`, or reuses the one there if it was built from the same compiler,
+/// flags and sources; throws std::runtime_error if the trusted sources do not compile.
 LabKit buildLabKit(const LabBuild& build, const std::string& folder, const SandboxPolicy& policy);
 /// The kit buildLabKit made in `folder` before; throws InputError if a part is missing.
 LabKit existingLabKit(const std::string& folder);
