@@ -87,7 +87,13 @@ SandboxOutcome runInSandbox(const SandboxRun& run, const ProcessLimits& limits,
     options.cpus = policy.cpus;
     options.user = policy.user;
     options.collectBytes = static_cast<size_t>(run.scratchBytes) + 4096;
-    outcome.process = runProcess(bubblewrapArguments(run), limits, options);
+    // The process limit counts every process of the user: it is ours only when the command
+    // runs as a user of its own (a grader running as root); otherwise it would count the
+    // instructor's desktop too. Lab code is kept from starting processes by the submission
+    // viewer's seccomp filter in any case.
+    ProcessLimits ownLimits = limits;
+    if (policy.user < 0) ownLimits.processes = 0;
+    outcome.process = runProcess(bubblewrapArguments(run), ownLimits, options);
     // The shell reports a command that a signal ended as 128 + the signal.
     ProcessOutcome& p = outcome.process;
     if (p.exitStatus > 128 && p.exitStatus < 128 + 65) {
