@@ -20,10 +20,10 @@ TEST_CASE("labs 1-3 agree on the VI2 Cornell box (Welch test, alpha 1e-4 each)",
     test::Estimate estimates[3];
     for (int i = 0; i < 3; ++i) {
         // Independent seeds per lab, so the test compares independent estimates.
-        estimates[i] = test::estimateOf(test::render(
+        estimates[i] = test::estimateOf(test::renderLabUnderTest(
             {"-c", test::modelPath("cornell_box_VI2_Specular.ecs"), "--size", "64", "64", "--spp",
              i == 0 ? "16" : "64", "--seed", std::to_string(100 + i), "--lab",
-             std::string(labName(labs[i])), "--solution"}));
+             std::string(labName(labs[i]))}));
     }
     const double critical = test::normalCritical(1e-4);
     for (int i = 0; i < 3; ++i) {
@@ -45,8 +45,9 @@ TEST_CASE("roulette's unbiased image is brighter than the depth-limited ones on 
           "[estimators][agreement]") {
     // Depth 3 cuts off light; roulette does not. A check that the labs are not all the same code.
     auto mean = [](const char* lab, const char* extra, const char* value) {
-        return test::render({"-c", test::modelPath("cornell_box_VI2_Specular.ecs"), "--size",
-                             "48", "48", "--spp", "64", "--lab", lab, "--solution", extra, value})
+        return test::renderLabUnderTest({"-c", test::modelPath("cornell_box_VI2_Specular.ecs"),
+                                         "--size", "48", "48", "--spp", "64", "--lab", lab, extra,
+                                         value})
             .stats.meanRadiance;
     };
     const Color limited = mean("importance", "--max-depth", "1");

@@ -18,7 +18,7 @@ std::vector<float> renderVI2(const std::string& threads, const std::string& seed
 }
 } // namespace
 
-TEST_CASE("same seed: bit-identical images with 1 and 2 threads", "[render][rng]") {
+TEST_CASE("same seed: bit-identical images with 1 and 2 threads", "[render][rng][solutions]") {
     for (const char* lab : {"branching", "roulette"}) {
         const std::vector<float> one = renderVI2("1", "5", lab);
         const std::vector<float> two = renderVI2("2", "5", lab);
@@ -27,7 +27,7 @@ TEST_CASE("same seed: bit-identical images with 1 and 2 threads", "[render][rng]
     }
 }
 
-TEST_CASE("different seeds: different images", "[render][rng]") {
+TEST_CASE("different seeds: different images", "[render][rng][solutions]") {
     const std::vector<float> a = renderVI2("2", "1");
     const std::vector<float> b = renderVI2("2", "2");
     size_t lit = 0, differing = 0;
@@ -40,7 +40,8 @@ TEST_CASE("different seeds: different images", "[render][rng]") {
     CHECK(differing > lit * 99 / 100);
 }
 
-TEST_CASE("a second pass continues the sample sequence instead of repeating it", "[render][rng]") {
+TEST_CASE("a second pass continues the sample sequence instead of repeating it",
+          "[render][rng][solutions]") {
     // 2 passes of 2 spp must equal 1 pass of 4 spp: sample indices carry on across passes.
     const RenderOptions options = [] {
         const std::string scene = test::modelPath("furnace.ecs");

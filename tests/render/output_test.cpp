@@ -35,7 +35,7 @@ TEST_CASE("EXR, PFM and HDR keep linear radiance; PNG is sRGB-encoded and clampe
     CHECK(files == 4); // no temporary files left behind
 }
 
-TEST_CASE("--stats writes the fields DESIGN.md lists", "[render][stats]") {
+TEST_CASE("--stats writes the fields DESIGN.md lists", "[render][stats][solutions]") {
     const std::string dir = test::temporaryFolder("stats");
     const auto run = test::runViewer("-c " + test::modelPath("furnace.ecs") +
                                      " --size 16 8 --spp 2 --lab roulette --solution --seed 3"
@@ -67,7 +67,7 @@ TEST_CASE("--stats writes the fields DESIGN.md lists", "[render][stats]") {
     CHECK(sum / (16 * 8) == Approx(stats["mean_radiance"][0].get<double>()).epsilon(1e-4));
 }
 
-TEST_CASE("no reference solution writes a non-finite pixel", "[render]") {
+TEST_CASE("no reference solution writes a non-finite pixel", "[render][solutions]") {
     for (const char* scene : {"cornell_box_VI2_Specular.ecs", "furnace_glass.ecs"}) {
         for (Lab lab : AllLabs) {
             const auto result = test::render({"-c", test::modelPath(scene), "--size", "64", "64",
@@ -81,7 +81,7 @@ TEST_CASE("no reference solution writes a non-finite pixel", "[render]") {
     }
 }
 
-TEST_CASE("the lab stubs compile, run, and render direct light only", "[render]") {
+TEST_CASE("the lab stubs compile, run, and render direct light only", "[render][solutions]") {
     // Direct light only: the stub and the solution at --max-depth 0 agree exactly, for every lab
     // but roulette (whose solution draws a roulette number even at the first hit).
     for (Lab lab : {Lab::Branching, Lab::Uniform, Lab::Importance}) {

@@ -19,7 +19,7 @@ std::string bytes(const std::string& path) {
 
 } // namespace
 
-TEST_CASE("--seeds renders each seed as its own run would", "[render]") {
+TEST_CASE("--seeds renders each seed as its own run would", "[render][solutions]") {
     const std::string folder = test::temporaryFolder("seeds");
     const std::string scene = "-c " + test::modelPath("cornell_box_VI2_Specular.ecs") +
                               " --size 16 12 --spp 3 --lab uniform --solution";

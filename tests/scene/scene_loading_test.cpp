@@ -54,7 +54,7 @@ TEST_CASE("the VI2 Cornell box loads with its camera, glass, mirror and area lig
     CHECK(mirror);
 }
 
-TEST_CASE("PathLab's scenes load without notes or warnings", "[scene]") {
+TEST_CASE("PathLab's scenes load without notes or warnings", "[scene][solutions]") {
     for (const char* scene : {"cornell_box_VI2_Specular.ecs", "cornell_box_diffuse.ecs",
                               "furnace.ecs", "furnace_a08.ecs", "furnace_mirror.ecs",
                               "furnace_glass.ecs", "refraction_check.ecs"}) {

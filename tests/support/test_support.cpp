@@ -26,6 +26,11 @@ HeadlessResult render(const std::vector<std::string>& arguments) {
     return renderHeadless(parseRenderOptions(static_cast<int>(argv.size()), argv.data()));
 }
 
+HeadlessResult renderLabUnderTest(std::vector<std::string> arguments) {
+    if (PATHLAB_HAS_SOLUTIONS) arguments.push_back("--solution");
+    return render(arguments);
+}
+
 Estimate estimateOf(const HeadlessResult& result) {
     const RenderStats& s = result.stats;
     const double n = static_cast<double>(s.width) * s.height * s.spp;
