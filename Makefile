@@ -2,7 +2,8 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 
-.PHONY: run build test test-labs test-slow grade report bench deps clean handouts handouts-html
+.PHONY: run build test test-labs test-slow grade report bench deps clean handouts handouts-html \
+        student-release
 
 # The student release has no solutions/: there the lab tests (ctest label `labs`) check your own
 # labs/, which fail until you finish them, so `make test` leaves them to `make test-labs`.
@@ -53,6 +54,11 @@ handouts: build
 # Only the HTML pages (self-contained, in $(BUILD)/handouts/), from the figures as they are.
 handouts-html:
 	python3 handouts/tools/make_html.py --out $(BUILD)/handouts
+
+# The student release, $(BUILD)/pathlab-student.tar.gz: the kit without solutions/, the tests
+# built on them, the instructor's hidden scenes or history (README: Student release).
+student-release:
+	@python3 scripts/package_kit.py student-release $(BUILD)/pathlab-student.tar.gz
 
 clean:
 	rm -rf $(BUILD)

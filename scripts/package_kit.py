@@ -1,0 +1,135 @@
+#!/usr/bin/env python3
+"""The kit's two packages, made from this folder's files as they are.
+
+Usage:
+  package_kit.py student-release OUT.tar.gz   the student release (README: Student release)
+  package_kit.py gradescope OUT.zip           the Gradescope autograder (README: Gradescope)
+
+The kit's files are those git tracks, as they are in the working tree (so a stray file of the
+instructor's never ships); in a kit without git, every file but the build folders. The student release is a plain copy of them minus STUDENT_EXCLUDED,
+under one top folder `pathlab/`, with no history. The autograder holds every file, solutions
+included, with scripts/gradescope/setup.sh and run_autograder at the root, as Gradescope wants.
+"""
+import os
+import subprocess
+import sys
+import tarfile
+import zipfile
+
+KIT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+# What the student release leaves out: everything that holds solution code (mutants and hostile
+# labs are solutions with one change), the tests that need it, and the instructor's hidden scenes.
+STUDENT_EXCLUDED = (
+    "solutions/",
+    "tests/grader/mutants/",
+    "tests/grader/mutants.json",
+    "tests/grader/hostile/",
+    "tests/grader/grader_test.py",
+    "tests/grader/batch_test.py",
+    "tests/release/",
+    "tests/gradescope/",
+    "grader/hidden_scenes/",
+)
+RELEASE_FOLDER = "pathlab"
+
+
+def kit_files(root=KIT):
+    """The kit's files, relative to root, sorted."""
+    try:
+        listed = subprocess.run(
+            ["git", "-C", root, "ls-files", "-z", "--cached"],
+            capture_output=True, check=True).stdout.decode().split("\0")
+        in_git = os.path.exists(os.path.join(root, ".git"))
+    except (OSError, subprocess.CalledProcessError):
+        listed, in_git = [], False
+    if not in_git:
+        listed = []
+        for folder, subfolders, files in os.walk(root):
+            relative = os.path.relpath(folder, root)
+            subfolders[:] = [s for s in subfolders if not (
+                s == ".git" or s == "__pycache__" or (relative == "." and
+                                                      (s == "build" or s.startswith("build-"))))]
+            listed += [os.path.normpath(os.path.join(relative, f)) for f in files]
+    # A file deleted from the working tree but not from git's index is not part of the kit.
+    return sorted(f for f in listed if f and os.path.isfile(os.path.join(root, f)))
+
+
+def student_files(root=KIT):
+    return [f for f in kit_files(root) if not f.startswith(STUDENT_EXCLUDED)]
+
+
+def write_atomically(path, write):
+    """Calls write(temporary path), then renames the result to path."""
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    temporary = path + ".tmp"
+    try:
+        write(temporary)
+        os.replace(temporary, path)
+    finally:
+        if os.path.exists(temporary):
+            os.remove(temporary)
+
+
+def normalised(info):
+    """Archive entries owned by nobody in particular, readable by all."""
+    info.uid = info.gid = 0
+    info.uname = info.gname = ""
+    info.mode = 0o755 if info.mode & 0o111 else 0o644
+    return info
+
+
+def student_release(out, root=KIT):
+    files = student_files(root)
+
+    def write(path):
+        with tarfile.open(path, "w:gz") as tar:
+            for f in files:
+                tar.add(os.path.join(root, f), arcname=f"{RELEASE_FOLDER}/{f}", recursive=False,
+                        filter=normalised)
+
+    write_atomically(out, write)
+    return files
+
+
+def gradescope(out, root=KIT):
+    files = kit_files(root)
+    at_root = {name: os.path.join(root, "scripts", "gradescope", name)
+               for name in ("setup.sh", "run_autograder")}
+
+    def add(archive, source, name):
+        info = zipfile.ZipInfo.from_file(source, name)
+        executable = os.stat(source).st_mode & 0o111
+        info.external_attr = ((0o100755 if executable else 0o100644) << 16)
+        with open(source, "rb") as f:
+            archive.writestr(info, f.read(), zipfile.ZIP_DEFLATED)
+
+    def write(path):
+        with zipfile.ZipFile(path, "w") as archive:
+            for name, source in at_root.items():
+                add(archive, source, name)
+            for f in files:
+                if f not in at_root:
+                    add(archive, os.path.join(root, f), f)
+
+    write_atomically(out, write)
+    return files
+
+
+def main(argv):
+    if len(argv) != 3 or argv[1] not in ("student-release", "gradescope"):
+        print(__doc__.strip().split("\n\n")[1], file=sys.stderr)
+        return 2
+    command, out = argv[1], argv[2]
+    if not os.path.isdir(os.path.join(KIT, "solutions")):
+        print(f"package_kit.py: {KIT} has no solutions/: {command} is made from the instructor's "
+              "kit, not from the student release", file=sys.stderr)
+        return 2
+    files = student_release(out) if command == "student-release" else gradescope(out)
+    size = os.path.getsize(out)
+    print(f"{out}: {len(files)} files, {size / 1e6:.1f} MB")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

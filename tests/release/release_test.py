@@ -1,0 +1,264 @@
+#!/usr/bin/env python3
+"""The student release (`make student-release`), ctest label `release`.
+
+Usage: release_test.py --source KIT [--keep]
+
+Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
+1. The tarball unpacks into one folder, pathlab/, with the framework, the stubs of labs/ as they
+   are, the models, the grader with its rubric and references, the handouts and scripts; and
+   without solutions/, .git, the grader's mutant and hostile labs or the tests built on them,
+   archives or compiled code, or any scene but the kit's public ones in models/ (no hidden ones).
+2. No solution code in any file: every line of solutions/*.cpp that is code (comments dropped),
+   longer than 25 characters and not also a line of a stub (the stubs share the skeleton: the
+   include, the signature, the steps given to the student) is searched for, whitespace
+   normalised, in every text file of the release. The same search finds them in the kit's
+   mutants (solutions with one bug), so it can fail.
+3. The packaging's exclusions, on a made-up kit without git: only its public files are taken.
+4. Unpacked, the release builds and tests itself as a student would. "It passes its own tests,
+   the stubs failing as expected" means: `make test` (install check, configure, build with the
+   tests, ctest without the labels `slow` and `labs`) succeeds and ran the framework's tests;
+   `make test-labs` (ctest -L labs: the furnace and agreement tests, run on the student's own
+   labs/) fails, each of estimators.lab1 to estimators.lab4 among the failures; and
+   `make grade LAB=branching` fails the stub with the diagnosis "direct light only" and a note
+   that speed is not checked without the solutions.
+"""
+import argparse
+import glob
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tarfile
+import tempfile
+import time
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--source", required=True, help="the instructor's kit")
+parser.add_argument("--keep", action="store_true", help="keep the scratch folder")
+args = parser.parse_args()
+KIT = os.path.abspath(args.source)
+LABS = ("branching", "uniform", "importance", "roulette")
+SHORTEST_FINGERPRINT = 26  # characters, whitespace normalised
+failures = []
+
+
+def check(condition, what):
+    print(("PASS " if condition else "FAIL ") + what, flush=True)
+    if not condition:
+        failures.append(what)
+
+
+def normalised(text):
+    return " ".join(text.split())
+
+
+def read_text(path):
+    """A file's text, or None for a binary file."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            return f.read()
+    except UnicodeDecodeError:
+        return None
+
+
+def code_lines(path):
+    """The lines of a C++ file without their comments, whitespace normalised."""
+    lines = []
+    for line in read_text(path).splitlines():
+        line = normalised(line.split("//")[0])
+        if line:
+            lines.append(line)
+    return lines
+
+
+def fingerprints(stubs):
+    """{solution file: its distinctive lines}."""
+    skeleton = {line for stub in stubs for line in code_lines(stub)}
+    return {path: [line for line in code_lines(path)
+                   if len(line) >= SHORTEST_FINGERPRINT and line not in skeleton]
+            for path in sorted(glob.glob(os.path.join(KIT, "solutions", "*.cpp")))}
+
+
+def text_files(root):
+    """{path relative to root: whitespace-normalised text} of every text file under root."""
+    texts = {}
+    for folder, _, files in os.walk(root):
+        for name in files:
+            path = os.path.join(folder, name)
+            text = read_text(path)
+            if text is not None:
+                texts[os.path.relpath(path, root)] = normalised(text)
+    return texts
+
+
+def run(command, cwd, log):
+    """Runs a command, its output to log; returns (exit status, output, seconds)."""
+    # A make above this test (make test) must not hand its job server or level to this one.
+    env = {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
+    start = time.monotonic()
+    result = subprocess.run(command, cwd=cwd, env=env, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True, errors="replace")
+    seconds = time.monotonic() - start
+    with open(log, "w") as f:
+        f.write(result.stdout)
+    print(f"  {' '.join(command)}: exit status {result.returncode}, {seconds:.0f} s "
+          f"(log: {log})", flush=True)
+    return result.returncode, result.stdout, seconds
+
+
+def tail(text, lines=40):
+    return "\n".join(text.strip().splitlines()[-lines:])
+
+
+def ctest_results(output):
+    """{test name: 'Passed' | 'Failed' | ...} from ctest's progress lines."""
+    results = {}
+    for match in re.finditer(r"Test\s+#\d+: (\S+) \.+\**\s*(\w+)", output):
+        results[match.group(1)] = match.group(2)
+    return results
+
+
+def check_contents(root, files):
+    def present(path):
+        return path in files
+
+    for lab in LABS:
+        stub = os.path.join("labs", lab + ".cpp")
+        with open(os.path.join(KIT, stub), "rb") as kit, open(os.path.join(root, stub), "rb") as out:
+            check(kit.read() == out.read(), f"{stub} is the kit's stub, unchanged")
+    for path in ("README.md", "Makefile", "CMakeLists.txt", "framework/include/pathlab/lab.h",
+                 "apps/viewer/main.cpp", "grader/rubric.json", "scripts/install-deps.sh",
+                 "handouts/01-branching.md", "models/cornell_box_VI2_Specular.ecs",
+                 "tests/support/test_support.cpp", "tests/estimators/furnace_test.cpp"):
+        check(present(path), f"the release holds {path}")
+    references = {os.path.relpath(p, KIT) for p in glob.glob(os.path.join(KIT, "grader/references/*"))}
+    check(references and references <= files, f"the release holds grader/references/ "
+                                              f"({len(references)} files)")
+
+    def any_named(test):
+        return sorted(f for f in files if test(f))[:5]
+
+    for what, found in (
+            ("solutions/", any_named(lambda f: "solutions/" in f)),
+            ("history (.git)", any_named(lambda f: ".git/" in f or f.endswith(".git"))),
+            ("mutant or hostile labs", any_named(lambda f: "/mutants" in f or "/hostile/" in f)),
+            ("grader tests built on them",
+             any_named(lambda f: f in ("tests/grader/grader_test.py", "tests/grader/batch_test.py"))),
+            ("archives or compiled code",
+             any_named(lambda f: f.endswith((".zip", ".tar", ".gz", ".tgz", ".o", ".a", ".so")))),
+            ("scenes outside models/ (hidden ones)",
+             any_named(lambda f: f.endswith(".ecs") and not f.startswith("models/")))):
+        check(not found, f"the release has no {what} {found if found else ''}")
+    public = {os.path.relpath(p, KIT) for p in glob.glob(os.path.join(KIT, "models", "*"))}
+    extra = sorted(f for f in files if f.startswith("models/") and f not in public)
+    check(not extra, f"models/ holds only the kit's public scenes {extra if extra else ''}")
+    binary = sorted(f for f in files if read_text(os.path.join(root, f)) is None and
+                    not f.endswith((".exr", ".png")))
+    check(not binary, f"every binary file is an image {binary if binary else ''}")
+
+
+def check_no_solution_code(root):
+    prints = fingerprints(glob.glob(os.path.join(root, "labs", "*.cpp")))
+    for path, lines in prints.items():
+        check(len(lines) >= 4, f"{os.path.relpath(path, KIT)}: {len(lines)} distinctive lines "
+                               "to search for")
+    texts = text_files(root)
+    leaks = [(os.path.relpath(path, KIT), line, name)
+             for path, lines in prints.items() for line in lines
+             for name, text in texts.items() if line in text]
+    for solution, line, name in leaks[:10]:
+        print(f"  {name} holds this line of {solution}: {line}")
+    check(not leaks, f"no line of solutions/*.cpp in the release's {len(texts)} text files "
+                     f"({sum(map(len, prints.values()))} lines searched)")
+    mutants = text_files(os.path.join(KIT, "tests", "grader", "mutants"))
+    found = {line for lines in prints.values() for line in lines
+             if any(line in text for text in mutants.values())}
+    check(len(found) > len(prints) * 3, f"the search finds solution lines where they are: "
+                                        f"{len(found)} of them in the kit's mutants")
+
+
+def check_exclusions(scratch):
+    sys.path.insert(0, os.path.join(KIT, "scripts"))
+    import package_kit
+
+    fake = os.path.join(scratch, "fake-kit")
+    for path in ("labs/branching.cpp", "solutions/branching.cpp", "models/box.ecs",
+                 "grader/hidden_scenes/exam.ecs", "tests/grader/mutants/bug/branching.cpp",
+                 "tests/grader/hostile/bomb/branching.cpp", "tests/grader/grader_test.py",
+                 "tests/sampling/random_test.cpp", "build/viewer", "build-release/viewer"):
+        os.makedirs(os.path.dirname(os.path.join(fake, path)), exist_ok=True)
+        open(os.path.join(fake, path), "w").close()
+    taken = package_kit.student_files(fake)
+    check(taken == ["labs/branching.cpp", "models/box.ecs", "tests/sampling/random_test.cpp"],
+          f"on a made-up kit without git, the release takes only the public files: {taken}")
+
+
+def check_builds_and_tests(root, logs):
+    status, output, _ = run(["make", "test"], root, os.path.join(logs, "make-test.log"))
+    results = ctest_results(output)
+    check(status == 0, "make test succeeds in the release" + ("" if status == 0 else
+                                                              ":\n" + tail(output)))
+    framework = ("sampling", "scene", "render", "grader")
+    check(all(results.get(t) == "Passed" for t in framework),
+          f"make test ran the framework's tests, which pass: {results}")
+    check(not any(name.startswith("estimators") for name in results),
+          "make test leaves the lab tests to make test-labs")
+
+    status, output, _ = run(["make", "test-labs"], root, os.path.join(logs, "make-test-labs.log"))
+    results = ctest_results(output)
+    check(status != 0, "make test-labs fails with the stubs")
+    check(all(results.get(f"estimators.lab{n}") == "Failed" for n in range(1, 5)),
+          f"each lab's tests fail with its stub: {results}")
+
+    status, output, _ = run(["make", "grade", "LAB=branching"], root,
+                            os.path.join(logs, "make-grade.log"))
+    check(status != 0 and "direct light only" in output,
+          "make grade fails the branching stub: direct light only" +
+          ("" if "direct light only" in output else ":\n" + tail(output)))
+    check("speed is not checked" in output, "make grade says speed is not checked")
+
+
+def main():
+    start = time.monotonic()
+    scratch = tempfile.mkdtemp(prefix="pathlab-release-test-")
+    logs = os.path.join(scratch, "logs")
+    os.makedirs(logs)
+    try:
+        status, output, seconds = run(["make", "student-release", f"BUILD={scratch}"], KIT,
+                                      os.path.join(logs, "make-student-release.log"))
+        tarball = os.path.join(scratch, "pathlab-student.tar.gz")
+        check(status == 0 and os.path.isfile(tarball),
+              f"make student-release writes {os.path.basename(tarball)}: {output.strip()}")
+        if failures:
+            return 1
+        with tarfile.open(tarball) as tar:
+            members = tar.getmembers()
+            names = [m.name for m in members]
+            check(all(n.startswith("pathlab/") and ".." not in n.split("/") for n in names),
+                  "every file of the tarball is under pathlab/")
+            check(all(m.isfile() for m in members), "the tarball holds only plain files")
+            unpacked = os.path.join(scratch, "unpacked")
+            if hasattr(tarfile, "data_filter"):
+                tar.extractall(unpacked, filter="data")
+            else:
+                tar.extractall(unpacked)
+        root = os.path.join(unpacked, "pathlab")
+        files = {n[len("pathlab/"):] for n in names}
+        print(f"  {len(files)} files, {os.path.getsize(tarball) / 1e6:.1f} MB", flush=True)
+
+        check_contents(root, files)
+        check_no_solution_code(root)
+        check_exclusions(scratch)
+        check_builds_and_tests(root, logs)
+    finally:
+        if args.keep:
+            print(f"kept {scratch}")
+        else:
+            shutil.rmtree(scratch, ignore_errors=True)
+    print(f"release test: {len(failures)} failure(s) in {time.monotonic() - start:.0f} s")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
