@@ -3,7 +3,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 
 .PHONY: run build test test-labs test-slow grade report bench deps clean handouts handouts-html \
-        student-release
+        student-release gradescope
 
 # The student release has no solutions/: there the lab tests (ctest label `labs`) check your own
 # labs/, which fail until you finish them, so `make test` leaves them to `make test-labs`.
@@ -59,6 +59,11 @@ handouts-html:
 # built on them, the instructor's hidden scenes or history (README: Student release).
 student-release:
 	@python3 scripts/package_kit.py student-release $(BUILD)/pathlab-student.tar.gz
+
+# The Gradescope autograder, $(BUILD)/autograder.zip: the whole kit, with setup.sh and
+# run_autograder from scripts/gradescope/ (README: Gradescope).
+gradescope:
+	@python3 scripts/package_kit.py gradescope $(BUILD)/autograder.zip
 
 clean:
 	rm -rf $(BUILD)
