@@ -8,7 +8,6 @@
 #include <stdexcept>
 
 #include <spawn.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -49,11 +48,9 @@ ChildResult runChild(const std::vector<std::string>& argv) {
     ::close(pipeEnds[0]);
 
     int status = 0;
-    struct rusage usage {};
-    while (::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
     result.exitStatus = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    result.peakRssKiB = usage.ru_maxrss;
     return result;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-/// Running another program and collecting what it printed and how much memory it used.
+/// Running another program and collecting what it printed.
 
 #include <string>
 #include <vector>

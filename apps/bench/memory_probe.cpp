@@ -7,9 +7,28 @@
 #include "pathlab/render_options.h"
 
 #include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
 #include <thread>
 
 namespace pathlab::bench {
+
+namespace {
+
+/// How the probe reports its peak, in KiB, on standard output.
+constexpr const char* PeakKey = "peak resident KiB: ";
+
+/// This process's peak resident memory since it started its program (VmHWM).
+long peakResidentKiB() {
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("VmHWM:", 0) == 0) return std::stol(line.substr(6));
+    return 0;
+}
+
+} // namespace
 
 MemoryFigures measurePeakMemory(const std::string& self, const BenchScene& scene,
                                 const BenchOptions& options) {
@@ -35,11 +54,14 @@ MemoryFigures measurePeakMemory(const std::string& self, const BenchScene& scene
         argv.push_back(std::to_string(options.threads));
     }
     const ChildResult child = runChild(argv);
-    if (child.exitStatus != 0) {
+    // The probe reports its own high-water mark: getrusage's figure for a child also counts
+    // what the parent held when the child was spawned (Linux records the pre-exec memory).
+    const size_t at = child.output.find(PeakKey);
+    if (child.exitStatus != 0 || at == std::string::npos) {
         m.note = "the probe failed: " + child.output.substr(0, 400);
         return m;
     }
-    m.peakMiB = static_cast<double>(child.peakRssKiB) / 1024.0;
+    m.peakMiB = std::stod(child.output.substr(at + std::strlen(PeakKey))) / 1024.0;
     m.measured = true;
     return m;
 }
@@ -68,6 +90,7 @@ int runMemoryProbe(const BenchScene& benchScene, const BenchOptions& options) {
         else
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
+    std::printf("%s%ld\n", PeakKey, peakResidentKiB());
     return 0;
 }
 
