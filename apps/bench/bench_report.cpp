@@ -75,10 +75,10 @@ void printPeer(const PeerComparison& c, std::FILE* out) {
     }
     std::fprintf(out,
                  "\nEmbree's pathtracer on %s (point lights x%g), %dx%d, %d spp per frame, "
-                 "fastest of %d frames, %d threads,\n  path length %d = PathLab's importance "
-                 "solution at max-depth %d\n",
-                 c.scene.c_str(), c.lightScale, c.width, c.height, c.spp, c.frames, c.threads,
-                 c.maxPathLength, c.maxPathLength - 1);
+                 "%d threads,\n  fastest of %d rounds of %d frames each, taken in turn;\n  path "
+                 "length %d = PathLab's importance solution at max-depth %d\n",
+                 c.scene.c_str(), c.lightScale, c.width, c.height, c.spp, c.threads, c.rounds,
+                 c.frames, c.maxPathLength, c.maxPathLength - 1);
     std::fprintf(out,
                  "                            samples/s   mean radiance at %d spp, 8-bit as "
                  "Embree stores it\n",
@@ -175,6 +175,7 @@ json peerJson(const PeerComparison& c) {
             {"height", c.height},
             {"spp", c.spp},
             {"frames", c.frames},
+            {"rounds", c.rounds},
             {"threads", c.threads},
             {"max_path_length", c.maxPathLength},
             {"max_depth", c.maxPathLength - 1},

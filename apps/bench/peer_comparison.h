@@ -13,8 +13,9 @@ struct PeerComparison {
     bool measured = false;
     std::string note; ///< why it was not measured
     std::string scene;
-    int width = 0, height = 0, spp = 0, frames = 0, imageSpp = 0, threads = 0;
-    int maxPathLength = 0; ///< Embree's; PathLab's importance lab runs at maxDepth one less
+    int width = 0, height = 0, spp = 0, imageSpp = 0, threads = 0;
+    int frames = 0, rounds = 0; ///< timed frames per round; each tracer's fastest counts
+    int maxPathLength = 0;      ///< Embree's; PathLab's importance lab runs at maxDepth one less
     float lightScale = 1;
     double embreeSamplesPerSecond = 0, oursSamplesPerSecond = 0;
     Color embreeMean, oursMean; ///< means of the two images as Embree stores them (8 bits)
