@@ -6,9 +6,10 @@ Usage:
   package_kit.py gradescope OUT.zip           the Gradescope autograder (README: Gradescope)
 
 The kit's files are those git tracks, as they are in the working tree (so a stray file of the
-instructor's never ships); in a kit without git, every file but the build folders. The student release is a plain copy of them minus STUDENT_EXCLUDED,
-under one top folder `pathlab/`, with no history. The autograder holds every file, solutions
-included, with scripts/gradescope/setup.sh and run_autograder at the root, as Gradescope wants.
+instructor's never ships); in a kit without git, every file but the build folders. The student
+release is a plain copy of them minus STUDENT_EXCLUDED, under one top folder `pathlab/`, with no
+history. The autograder holds every file, solutions included, with scripts/gradescope/setup.sh and
+run_autograder at the root, as Gradescope wants.
 """
 import os
 import subprocess

@@ -324,7 +324,8 @@ def main():
             summary[f"{name}: seconds"] = round(time.monotonic() - began)
             if results is not None:
                 summary[f"{name}: score"] = results.get("score")
-                summary[f"{name}: max"] = sum(t.get("max_score", 0) for t in results.get("tests", []))
+                summary[f"{name}: max"] = sum(t.get("max_score", 0)
+                                              for t in results.get("tests", []))
     finally:
         if args.keep:
             print(f"kept {scratch}")

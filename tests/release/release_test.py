@@ -18,9 +18,10 @@ Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
    the stubs failing as expected" means: `make test` (install check, configure, build with the
    tests, ctest without the labels `slow` and `labs`) succeeds and ran the framework's tests;
    `make test-labs` (ctest -L labs: the furnace and agreement tests, run on the student's own
-   labs/) fails, each of estimators.lab1 to estimators.lab4 among the failures; and
+   labs/) fails, each of estimators.lab1 to estimators.lab4 among the failures;
    `make grade LAB=branching` fails the stub with the diagnosis "direct light only" and a note
-   that speed is not checked without the solutions.
+   that speed is not checked without the solutions; and once labs/branching.cpp is done (the
+   solution copied in), estimators.lab1 passes while the other labs' tests still fail.
 """
 import argparse
 import glob
@@ -125,14 +126,16 @@ def check_contents(root, files):
 
     for lab in LABS:
         stub = os.path.join("labs", lab + ".cpp")
-        with open(os.path.join(KIT, stub), "rb") as kit, open(os.path.join(root, stub), "rb") as out:
-            check(kit.read() == out.read(), f"{stub} is the kit's stub, unchanged")
+        with open(os.path.join(KIT, stub), "rb") as kit:
+            with open(os.path.join(root, stub), "rb") as out:
+                check(kit.read() == out.read(), f"{stub} is the kit's stub, unchanged")
     for path in ("README.md", "Makefile", "CMakeLists.txt", "framework/include/pathlab/lab.h",
                  "apps/viewer/main.cpp", "grader/rubric.json", "scripts/install-deps.sh",
                  "handouts/01-branching.md", "models/cornell_box_VI2_Specular.ecs",
                  "tests/support/test_support.cpp", "tests/estimators/furnace_test.cpp"):
         check(present(path), f"the release holds {path}")
-    references = {os.path.relpath(p, KIT) for p in glob.glob(os.path.join(KIT, "grader/references/*"))}
+    references = {os.path.relpath(p, KIT)
+                  for p in glob.glob(os.path.join(KIT, "grader", "references", "*"))}
     check(references and references <= files, f"the release holds grader/references/ "
                                               f"({len(references)} files)")
 
@@ -144,7 +147,8 @@ def check_contents(root, files):
             ("history (.git)", any_named(lambda f: ".git/" in f or f.endswith(".git"))),
             ("mutant or hostile labs", any_named(lambda f: "/mutants" in f or "/hostile/" in f)),
             ("grader tests built on them",
-             any_named(lambda f: f in ("tests/grader/grader_test.py", "tests/grader/batch_test.py"))),
+             any_named(lambda f: f in ("tests/grader/grader_test.py",
+                                       "tests/grader/batch_test.py"))),
             ("archives or compiled code",
              any_named(lambda f: f.endswith((".zip", ".tar", ".gz", ".tgz", ".o", ".a", ".so")))),
             ("scenes outside models/ (hidden ones)",
@@ -217,6 +221,15 @@ def check_builds_and_tests(root, logs):
           "make grade fails the branching stub: direct light only" +
           ("" if "direct light only" in output else ":\n" + tail(output)))
     check("speed is not checked" in output, "make grade says speed is not checked")
+
+    # A student who finishes lab 1 (here: with its solution) passes lab 1's tests.
+    shutil.copy(os.path.join(KIT, "solutions", "branching.cpp"), os.path.join(root, "labs"))
+    status, output, _ = run(["make", "test-labs"], root,
+                            os.path.join(logs, "make-test-labs-lab1-done.log"))
+    results = ctest_results(output)
+    check(results.get("estimators.lab1") == "Passed" and
+          all(results.get(f"estimators.lab{n}") == "Failed" for n in range(2, 5)),
+          f"with lab 1 done, its tests pass and the others still fail: {results}")
 
 
 def main():
