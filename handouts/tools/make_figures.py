@@ -2,6 +2,7 @@
 """Makes the handouts' figures, and the numbers behind them, from the reference solutions.
 
 Usage: make_figures.py --build BUILD [--quick]
+       make_figures.py --blocks-only
 
 Everything is measured on the VI2 Cornell box with BUILD/viewer: headless renders (-o FILE.pfm
 --stats FILE.json) for images, errors and timings, and the window under a virtual X server
@@ -266,22 +267,22 @@ def fmt(x, digits=3):
     """A number for a table: DIGITS significant digits, millions as "M"."""
     if x == 0:
         return "0"
-    if abs(x) >= 1e6:
+    if abs(x) >= 1e5:
         return fmt(x / 1e6, digits) + " M"
     return f"{x:.{max(digits - 1 - math.floor(math.log10(abs(x))), 0)}f}"
 
 
-def estimators_block(rows, p):
+def estimators_block(rows, p, threads):
     best = max(rows, key=lambda r: r["efficiency"])
     lines = [
-        f"| estimator | samples/s ({p['study_size']}², {os.cpu_count()} threads) | rays per sample "
+        f"| estimator | samples/s ({p['study_size']}², {threads} threads) | rays per sample "
         f"| frame rate ({p['window_size']}² window) | noise after {p['window_frames']} frames "
-        f"| per-sample variance | RMSE after ≈{p['budgets'][-1]:g} s | efficiency 1/(MSE·s) |",
+        f"| per-sample variance | RMSE of the longest render | efficiency 1/(MSE·s) |",
         "|---|--:|--:|--:|--:|--:|--:|--:|"]
     for r in rows:
         lines.append(f"| {r['label']} | {fmt(r['samples_per_second'])} | {fmt(r['rays_per_sample'])} "
                      f"| {r['frame_rate']:.1f} fps | {r['noise']:.3f} | {fmt(r['per_sample_variance'])} "
-                     f"| {fmt(r['rmse_longest'])} | {fmt(r['efficiency'])} |")
+                     f"| {fmt(r['rmse_longest'])} in {r['seconds_longest']:.1f} s | {fmt(r['efficiency'])} |")
     lines.append("")
     lines.append(f"Most efficient in this run: **{best['label']}**. Efficiency is the median over "
                  "the convergence study's render times; labs 1–3 are measured against the "
@@ -295,22 +296,49 @@ def sweep_block(rows):
              "|--:|--:|--:|--:|--:|--:|--:|"]
     for r in rows:
         lines.append(f"| {r['continue_prob']:g} | {fmt(r['samples_per_second'])} | {fmt(r['rays_per_sample'])} "
-                     f"| {fmt(r['per_sample_variance'])} | {r['spp']} | {fmt(r['rmse'])} | {fmt(r['efficiency'])} |")
+                     f"| {fmt(r['per_sample_variance'])} | {r['spp']:g} | {fmt(r['rmse'])} | {fmt(r['efficiency'])} |")
     lines.append("")
     lines.append(f"Most efficient continueProb in this run: **{best['continue_prob']:g}**.")
     return "\n".join(lines)
 
 
-def equal_time_block(images, p):
+def equal_time_block(images, p, threads):
     parts = [f"{images[e.key]['label']}: {images[e.key]['spp']} spp in {images[e.key]['seconds']:.1f} s"
              for e in ESTIMATORS]
     return (f"Each render: {p['image_size']}×{p['image_size']} pixels, about {p['image_budget']:g} s "
-            f"of render time on {os.cpu_count()} threads. " + "; ".join(parts) + ".")
+            f"of render time on {threads} threads. " + "; ".join(parts) + ".")
 
 
-def convergence_block(rows, bias):
+def bias_block(bias):
     return (f"The depth limit's bias, the RMSE between the depth-limited and the unbiased image, "
             f"is {fmt(bias)} on this scene (the grey line in the plot).")
+
+
+def read_csv(path):
+    """Rows of a CSV written by write_csv, numbers as floats."""
+    def value(text):
+        try:
+            return float(text)
+        except ValueError:
+            return text
+    with open(path, newline="") as f:
+        return [{k: value(v) for k, v in row.items()} for row in csv.DictReader(f)]
+
+
+def write_blocks(figures):
+    """The handouts' tables, from the numbers in FIGURES (so they can be redone without
+    rendering: --blocks-only)."""
+    with open(os.path.join(figures, "run.json")) as f:
+        run = json.load(f)
+    with open(os.path.join(figures, "equal_time.json")) as f:
+        images = json.load(f)
+    with open(os.path.join(figures, "references.json")) as f:
+        reference = json.load(f)["depth_limited"]
+    bias, threads, p = reference["depth_limit_bias_rmse"], reference["threads"], run["parameters"]
+    update_blocks({"estimators-table": estimators_block(read_csv(os.path.join(figures, "estimators.csv")), p, threads),
+                   "sweep-table": sweep_block(read_csv(os.path.join(figures, "roulette_sweep.csv"))),
+                   "equal-time": equal_time_block(images, p, threads),
+                   "depth-limit-bias": bias_block(bias)})
 
 
 BLOCK = re.compile(r"(<!-- BEGIN generated: ([\w-]+) -->\n).*?(<!-- END generated: \2 -->)", re.S)
@@ -353,17 +381,25 @@ def cpu_model():
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--build", required=True, help="the build folder holding viewer")
+    parser.add_argument("--build", help="the build folder holding viewer")
     parser.add_argument("--quick", action="store_true",
                         help="tiny renders into BUILD/handouts-quick, handouts left as they are")
+    parser.add_argument("--blocks-only", action="store_true",
+                        help="render nothing: rewrite the handouts' tables from handouts/figures/")
     args = parser.parse_args()
+    figures = os.path.join(HANDOUTS, "figures")
+    if args.blocks_only:
+        write_blocks(figures)
+        return
+    if not args.build:
+        parser.error("--build is needed to render")
     build = os.path.abspath(args.build)
     p = QUICK if args.quick else FULL
-    figures = os.path.join(build, "handouts-quick") if args.quick else os.path.join(HANDOUTS, "figures")
+    if args.quick:
+        figures = os.path.join(build, "handouts-quick")
     os.makedirs(figures, exist_ok=True)
-    for tool in ["gnuplot"]:
-        if not shutil.which(tool):
-            raise SystemExit(f"make_figures: {tool} is needed (scripts/install-deps.sh installs it)")
+    if not shutil.which("gnuplot"):
+        raise SystemExit("make_figures: gnuplot is needed (scripts/install-deps.sh installs it)")
     viewer = Viewer(os.path.join(build, "viewer"), SCENE, os.path.join(build, "handouts-renders"))
     started = time.time()
     if os.getloadavg()[0] > 0.5:
@@ -379,10 +415,9 @@ def main():
     images = equal_time_images(viewer, p, figures)
 
     bias = depth_limit_bias(references)
-    estimators = estimator_rows(convergence, window)
     write_csv(os.path.join(figures, "convergence.csv"), convergence)
     write_csv(os.path.join(figures, "roulette_sweep.csv"), sweep)
-    write_csv(os.path.join(figures, "estimators.csv"), estimators)
+    write_csv(os.path.join(figures, "estimators.csv"), estimator_rows(convergence, window))
     write_json(os.path.join(figures, "equal_time.json"), images)
     write_json(os.path.join(figures, "references.json"), {
         kind: {k: v for k, v in r.items() if k not in ("pixels", "image")} | {"depth_limit_bias_rmse": bias}
@@ -395,10 +430,7 @@ def main():
     run["seconds"] = round(time.time() - started, 1)
     write_json(os.path.join(figures, "run.json"), run)
     if not args.quick:
-        update_blocks({"estimators-table": estimators_block(estimators, p),
-                       "sweep-table": sweep_block(sweep),
-                       "equal-time": equal_time_block(images, p),
-                       "depth-limit-bias": convergence_block(convergence, bias)})
+        write_blocks(figures)
     print(f"make_figures: figures in {figures} ({run['seconds']:.0f} s)")
 
 
