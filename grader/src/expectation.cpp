@@ -1,6 +1,7 @@
 #include "expectation.h"
 
 #include "hypothesis_tests.h"
+#include "noise_figure.h"
 
 #include "pathlab/image_io.h"
 #include "pathlab/input_error.h"
@@ -80,8 +81,10 @@ SceneReference measureReference(const LabRunner& solution, const std::string& sc
     ref.tiles = rubric.tiles;
     ref.maxDepth = rubric.maxDepth;
     ref.continueProb = rubric.continueProb;
-    const int varianceSeeds = 16; // per-sample variance has heavy tails: measure it well
-    const int total = 2 * seeds + 4 * varianceSeeds;
+    // The noise figure of a correct lab, as the grader measures a student's: the rubric's seeds
+    // at the rubric's spp, in several independent groups whose figures are averaged.
+    const int noiseGroups = 6;
+    const int total = 2 * seeds + 4 * noiseGroups;
     int done = 0;
     auto step = [&] { if (progress) progress(++done, total); };
     const int spp = rubric.correctnessSpp[static_cast<int>(Lab::Importance)] * sppFactor;
@@ -89,20 +92,24 @@ SceneReference measureReference(const LabRunner& solution, const std::string& sc
     ref.depthLimited = measure(solution, scenePath, Lab::Importance, rubric, seeds, spp, scratch, step);
     ref.unbiased = measure(solution, scenePath, Lab::Roulette, rubric, seeds, spp, scratch, step);
     for (Lab lab : AllLabs) {
-        std::array<double, 3> sum{};
-        for (int s = 0; s < varianceSeeds; ++s) {
-            RenderRequest r{&solution, scenePath, lab, rubric.width,
-                            rubric.height, rubric.correctnessSpp[static_cast<int>(lab)],
-                            rubric.maxDepth, rubric.continueProb, static_cast<uint64_t>(2000000 + s),
-                            1, 0, scratch};
+        const int labSpp = rubric.correctnessSpp[static_cast<int>(lab)];
+        double sum = 0;
+        for (int g = 0; g < noiseGroups; ++g) {
+            const RenderRequest r{&solution, scenePath, lab, rubric.width, rubric.height, labSpp,
+                                  rubric.maxDepth, rubric.continueProb,
+                                  static_cast<uint64_t>(2000000 + 1000 * g), rubric.seeds, 0, scratch};
             const RenderResult result = renderLab(r, {rubric.secondsPerRun * 20, rubric.memoryBytes});
             if (!result.ok)
                 throw std::runtime_error("the reference solution failed: " + result.failure);
-            for (int c = 0; c < 3; ++c) sum[c] += result.images[0].meanVariance[c] / varianceSeeds;
+            std::vector<std::vector<float>> images;
+            for (const RenderedImage& rendered : result.images) images.push_back(rendered.rgb);
+            sum += noiseFigure(images, labSpp) / noiseGroups;
             step();
         }
-        ref.variance[static_cast<int>(lab)] = sum;
+        ref.noise[static_cast<int>(lab)] = sum;
+        ref.noiseSpp[static_cast<int>(lab)] = labSpp;
     }
+    ref.noiseSeeds = rubric.seeds;
     return ref;
 }
 
@@ -111,8 +118,8 @@ void saveReference(const std::string& folder, const SceneReference& ref) {
     const std::string unbiasedImage = ref.scene + ".unbiased.exr";
     writeImage(folder + "/" + depthImage, ref.width, ref.height, ref.depthLimited.image);
     writeImage(folder + "/" + unbiasedImage, ref.width, ref.height, ref.unbiased.image);
-    nlohmann::json variance;
-    for (Lab lab : AllLabs) variance[std::string(labName(lab))] = ref.variance[static_cast<int>(lab)];
+    nlohmann::json noise;
+    for (Lab lab : AllLabs) noise[std::string(labName(lab))] = ref.noise[static_cast<int>(lab)];
     const nlohmann::json j = {
         {"scene", ref.scene},
         {"made_by", "grader make-references"},
@@ -124,7 +131,12 @@ void saveReference(const std::string& folder, const SceneReference& ref) {
         {"continue_prob", ref.continueProb},
         {"depth_limited", toJson(ref.depthLimited, depthImage)},
         {"unbiased", toJson(ref.unbiased, unbiasedImage)},
-        {"variance", variance},
+        {"noise", noise},
+        {"noise_seeds", ref.noiseSeeds},
+        {"noise_spp", ref.noiseSpp},
+        {"noise_is", "per-sample variance of the reference solutions, from the spread of the "
+                     "rubric's seeds at the rubric's spp, the noisiest 1% of pixels left out "
+                     "(grader/src/noise_figure.h)"},
     };
     writeFileAtomically(folder + "/" + ref.scene + ".json", j.dump(1) + "\n");
 }
@@ -151,8 +163,9 @@ SceneReference loadReference(const std::string& folder, const std::string& scene
         ref.depthLimited = fromJson(j.at("depth_limited"), folder, ref.width, ref.height);
         ref.unbiased = fromJson(j.at("unbiased"), folder, ref.width, ref.height);
         for (Lab lab : AllLabs)
-            ref.variance[static_cast<int>(lab)] =
-                j.at("variance").at(std::string(labName(lab))).get<std::array<double, 3>>();
+            ref.noise[static_cast<int>(lab)] = j.at("noise").at(std::string(labName(lab)));
+        ref.noiseSeeds = j.at("noise_seeds");
+        ref.noiseSpp = j.at("noise_spp").get<std::array<int, 4>>();
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ": " + e.what());
     }

@@ -2,6 +2,7 @@
 
 #include "diagnosis.h"
 #include "hypothesis_tests.h"
+#include "noise_figure.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,23 +39,15 @@ ProcessLimits limitsOf(const Rubric& r) { return {r.secondsPerRun, r.memoryBytes
 /// k independent renders of one lab on one scene.
 struct SceneRuns {
     std::vector<std::vector<double>> regionValues; ///< [statistic][seed]
-    std::vector<double> imageSum, imageSumSquares; ///< per pixel and channel, over seeds
-    int runs = 0;
-    std::string failure, failureKind; ///< see RenderResult
+    std::vector<std::vector<float>> images;        ///< one per seed
+    std::string failure, failureKind;              ///< see RenderResult
 
-    /// Per-sample variance per channel, averaged over pixels, measured from how the seeds'
-    /// images differ: the variance of a pixel's k means times spp. The grader measures it from
-    /// the images alone, so a lab cannot report a smaller one than it has.
-    std::array<double, 3> perSampleVariance(int spp) const {
-        std::array<double, 3> variance{};
-        const size_t pixels = imageSum.size() / 3;
-        const double k = runs;
-        for (size_t i = 0; i < imageSum.size(); ++i) {
-            const double mean = imageSum[i] / k;
-            const double spread = (imageSumSquares[i] / k - mean * mean) * k / (k - 1);
-            variance[i % 3] += std::max(spread, 0.0) * spp / static_cast<double>(pixels);
-        }
-        return variance;
+    /// The mean of the seeds' images, for the reports' pictures.
+    std::vector<float> meanImage() const {
+        std::vector<float> mean(images.front().size(), 0.0f);
+        for (const auto& image : images)
+            for (size_t i = 0; i < image.size(); ++i) mean[i] += image[i] / static_cast<float>(images.size());
+        return mean;
     }
 };
 
@@ -72,19 +65,10 @@ SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab l
         return runs;
     }
     for (const RenderedImage& rendered : result.images) {
-        const std::vector<float>& image = rendered.rgb;
-        const std::vector<double> means = regionMeans(image, result.width, result.height, r.tiles);
-        if (runs.regionValues.empty()) {
-            runs.regionValues.resize(means.size());
-            runs.imageSum.assign(image.size(), 0.0);
-            runs.imageSumSquares.assign(image.size(), 0.0);
-        }
+        const std::vector<double> means = regionMeans(rendered.rgb, result.width, result.height, r.tiles);
+        if (runs.regionValues.empty()) runs.regionValues.resize(means.size());
         for (size_t i = 0; i < means.size(); ++i) runs.regionValues[i].push_back(means[i]);
-        for (size_t i = 0; i < image.size(); ++i) {
-            runs.imageSum[i] += image[i];
-            runs.imageSumSquares[i] += static_cast<double>(image[i]) * image[i];
-        }
-        ++runs.runs;
+        runs.images.push_back(rendered.rgb);
     }
     return runs;
 }
@@ -129,7 +113,7 @@ struct RunFailure {
 /// rejection.
 bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, LabGrade& grade,
                         std::vector<std::string>& details, std::string& diagnosis,
-                        RunFailure& failure, std::array<double, 3>& noiseVariance) {
+                        RunFailure& failure, double& noise) {
     const Rubric& r = setup.rubric;
     std::vector<Comparison> comparisons;
     std::vector<double> allP;
@@ -140,12 +124,12 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
             failure = {"on " + scene.reference.scene + " the lab " + runs.failure, runs.failureKind};
             return false;
         }
-        if (scene.reference.scene == r.noiseScene || noiseVariance[0] < 0)
-            noiseVariance = runs.perSampleVariance(r.correctnessSpp[static_cast<int>(lab)]);
+        if (scene.reference.scene == r.noiseScene || noise < 0)
+            noise = noiseFigure(runs.images, r.correctnessSpp[static_cast<int>(lab)]);
         comparisons.push_back(compare(runs, scene.reference.forLab(lab), r.seeds));
         allP.insert(allP.end(), comparisons.back().p.begin(), comparisons.back().p.end());
         LabGrade::Pictures pictures{scene.reference.scene, r.width, r.height, {}, scene.reference.forLab(lab).image};
-        for (double v : runs.imageSum) pictures.student.push_back(static_cast<float>(v / runs.runs));
+        pictures.student = runs.meanImage();
         grade.pictures.push_back(std::move(pictures));
     }
     const std::vector<bool> rejected = holmRejections(allP, r.alpha);
@@ -211,7 +195,7 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
 }
 
 CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade,
-                             std::array<double, 3>& noiseVariance) {
+                             double& noise) {
     CheckResult check;
     check.name = "correctness";
     check.maxScore = setup.rubric.points[static_cast<int>(lab)].correctness;
@@ -219,7 +203,7 @@ CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade,
     std::string diagnosis;
     RunFailure failure;
     if (correctnessAttempt(setup, lab, setup.seedBase * 1000, grade, details, diagnosis, failure,
-                           noiseVariance)) {
+                           noise)) {
         check.passed = true;
     } else if (failure.empty()) {
         // A rejection at alpha happens to correct labs too, rarely: only a second rejection on
@@ -227,7 +211,7 @@ CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade,
         std::vector<std::string> retryDetails;
         std::string retryDiagnosis;
         if (correctnessAttempt(setup, lab, setup.seedBase * 1000 + 500, grade, retryDetails,
-                               retryDiagnosis, failure, noiseVariance))
+                               retryDiagnosis, failure, noise))
             check.passed = true;
         else if (failure.empty())
             details = retryDetails, diagnosis = retryDiagnosis;
@@ -251,13 +235,13 @@ CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade,
 
 /// The noise of the correctness runs on the noise scene against the reference solution's. Like
 /// speed, it counts only for a correct lab: a lab that renders too little light is also quiet.
-CheckResult checkNoise(const GraderSetup& setup, Lab lab, bool correct,
-                       const std::array<double, 3>& variance, LabGrade& grade) {
+CheckResult checkNoise(const GraderSetup& setup, Lab lab, bool correct, double noise,
+                       LabGrade& grade) {
     const Rubric& r = setup.rubric;
     CheckResult check;
     check.name = "noise";
     check.maxScore = r.points[static_cast<int>(lab)].noise;
-    if (variance[0] < 0) {
+    if (noise < 0) {
         check.summary = "could not be measured: the lab did not finish its renders";
         return check;
     }
@@ -265,9 +249,8 @@ CheckResult checkNoise(const GraderSetup& setup, Lab lab, bool correct,
         return s.reference.scene == r.noiseScene;
     });
     const GradingScene& noiseScene = scene != setup.scenes.end() ? *scene : setup.scenes.front();
-    const auto& reference = noiseScene.reference.variance[static_cast<int>(lab)];
-    const double student = (variance[0] + variance[1] + variance[2]) / 3;
-    const double solution = (reference[0] + reference[1] + reference[2]) / 3;
+    const double student = noise;
+    const double solution = noiseScene.reference.noise[static_cast<int>(lab)];
     const double ratio = student / solution;
     grade.studentVariance = student;
     grade.solutionVariance = solution;
@@ -441,9 +424,9 @@ LabGrade ungradedLab(const Rubric& rubric, Lab lab, bool measureSpeed, const std
 LabGrade gradeLab(const GraderSetup& setup, Lab lab) {
     LabGrade grade;
     grade.lab = lab;
-    std::array<double, 3> noiseVariance{-1, -1, -1};
-    grade.checks.push_back(checkCorrectness(setup, lab, grade, noiseVariance));
-    grade.checks.push_back(checkNoise(setup, lab, grade.checks[0].passed, noiseVariance, grade));
+    double noise = -1; // the noise figure of the correctness renders on the noise scene
+    grade.checks.push_back(checkCorrectness(setup, lab, grade, noise));
+    grade.checks.push_back(checkNoise(setup, lab, grade.checks[0].passed, noise, grade));
     if (setup.measureSpeed) grade.checks.push_back(checkSpeed(setup, lab, grade.checks[0].passed, grade));
     return grade;
 }

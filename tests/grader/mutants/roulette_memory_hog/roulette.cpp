@@ -9,7 +9,7 @@
 namespace pathlab::roulette {
 
 Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
-    static std::vector<std::vector<char>> hoard; // allocates without bound
+    static thread_local std::vector<std::vector<char>> hoard; // allocates without bound
     hoard.emplace_back(64 << 20, 1);
     const Hit hit = ctx.trace(ray);
     if (!hit) return Color();
