@@ -45,8 +45,9 @@ report: build
 bench: build
 	cd $(BUILD) && ./bench $(BENCH_ARGS)
 
-# The handouts' figures, remade from the reference solutions and timed on this machine (about
-# 6 minutes on 2 cores; run it when the machine is otherwise idle), then their HTML pages.
+# The handouts' figures, remade from the reference solutions and timed on this machine (6 to 10
+# minutes on 2 cores, more when busy; run it when the machine is otherwise idle), then their
+# HTML pages.
 handouts: build
 	python3 handouts/tools/make_figures.py --build $(BUILD)
 	python3 handouts/tools/make_html.py --out $(BUILD)/handouts
