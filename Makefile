@@ -1,6 +1,9 @@
 # PathLab: `make run` sets up, builds and renders the Cornell box; `make test` runs every test.
 BUILD ?= build
 JOBS ?= $(shell nproc)
+# Built for this machine's instruction set: a build here runs here (NATIVE=OFF for a build that
+# runs elsewhere). Images are the same either way (framework/CMakeLists.txt).
+NATIVE ?= ON
 
 .PHONY: run build test test-labs test-slow grade report bench deps clean handouts handouts-html \
         student-release gradescope
@@ -13,7 +16,7 @@ deps:
 	@scripts/install-deps.sh
 
 build: deps
-	@cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
+	@cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DPATHLAB_NATIVE=$(NATIVE) > /dev/null
 	@cmake --build $(BUILD) -j $(JOBS)
 
 run: build
