@@ -1,13 +1,14 @@
 #include "pathlab/image_io.h"
 
-#include "pathlab/input_error.h"
+#include "image_files.h"
 
-#include <OpenImageIO/imageio.h>
+#include "pathlab/input_error.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <dlfcn.h>
 #include <filesystem>
 #include <unistd.h>
 
@@ -16,6 +17,28 @@ namespace pathlab {
 namespace {
 
 namespace fs = std::filesystem;
+
+/// The image-file plug-in (image_files.h), loaded on first use from beside this program (or
+/// from the folder above: the tests live one level below it).
+const plugin::ImageFiles& imageFiles() {
+    static const plugin::ImageFiles* files = [] {
+        const fs::path program = fs::read_symlink("/proc/self/exe").parent_path();
+        std::string errors;
+        for (const fs::path& folder : {program, program.parent_path()}) {
+            const fs::path library = folder / "libpathlab_image_files.so";
+            if (!fs::exists(library)) continue;
+            if (void* handle = ::dlopen(library.c_str(), RTLD_LAZY | RTLD_LOCAL)) {
+                using Entry = const plugin::ImageFiles* (*)();
+                if (auto entry = reinterpret_cast<Entry>(::dlsym(handle, "pathlab_image_files")))
+                    return entry();
+            }
+            errors += std::string(" ") + ::dlerror();
+        }
+        throw std::runtime_error("cannot load libpathlab_image_files.so from " + program.string() +
+                                 " or the folder above:" + (errors.empty() ? " not there" : errors));
+    }();
+    return *files;
+}
 
 std::string lowerExtension(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
@@ -81,36 +104,20 @@ void checkImageOutputPath(const std::string& path, const std::string& option) {
 void writeImage(const std::string& path, int width, int height, const std::vector<float>& rgb) {
     checkImageOutputPath(path);
     const std::string temporary = temporaryNameFor(path);
-    auto out = OIIO::ImageOutput::create(temporary);
-    if (!out && lowerExtension(path) == ".pfm") {
-        if (!writePfm(temporary, width, height, rgb)) {
-            std::error_code ignored;
-            fs::remove(temporary, ignored);
-            throw InputError(path + ": cannot write the image");
-        }
-        moveIntoPlace(temporary, path);
-        return;
-    }
-    if (!out) throw InputError(path + ": OpenImageIO cannot write this format");
-
     const bool png = lowerExtension(path) == ".png";
-    OIIO::ImageSpec spec(width, height, 3, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
-    spec.attribute("oiio:ColorSpace", png ? "sRGB" : "Linear");
-    spec.attribute("Software", "PathLab");
-    bool ok = out->open(temporary, spec);
-    if (ok) {
-        if (png) {
-            std::vector<uint8_t> bytes(rgb.size());
-            for (size_t i = 0; i < rgb.size(); ++i)
-                bytes[i] = static_cast<uint8_t>(std::lround(255.0f * linearToSrgb(rgb[i])));
-            ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
-        } else {
-            ok = out->write_image(OIIO::TypeDesc::FLOAT, rgb.data());
-        }
-        ok = out->close() && ok;
+    std::string why;
+    if (png) {
+        std::vector<uint8_t> bytes(rgb.size());
+        for (size_t i = 0; i < rgb.size(); ++i)
+            bytes[i] = static_cast<uint8_t>(std::lround(255.0f * linearToSrgb(rgb[i])));
+        why = imageFiles().write(temporary, width, height, bytes.data(), true);
+    } else {
+        why = imageFiles().write(temporary, width, height, rgb.data(), false);
+        if (why == "unsupported" && lowerExtension(path) == ".pfm")
+            why = writePfm(temporary, width, height, rgb) ? "" : "cannot write the file";
     }
-    if (!ok) {
-        const std::string why = out->geterror();
+    if (why == "unsupported") throw InputError(path + ": OpenImageIO cannot write this format");
+    if (!why.empty()) {
         std::error_code ignored;
         fs::remove(temporary, ignored);
         throw InputError(path + ": cannot write the image: " + why);
@@ -122,38 +129,29 @@ void writeDisplayImage(const std::string& path, int width, int height,
                        const std::vector<unsigned char>& rgb8) {
     checkImageOutputPath(path);
     const std::string temporary = temporaryNameFor(path);
-    auto out = OIIO::ImageOutput::create(temporary);
-    if (!out) throw InputError(path + ": OpenImageIO cannot write this format");
-    OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    bool ok = out->open(temporary, spec) && out->write_image(OIIO::TypeDesc::UINT8, rgb8.data());
-    ok = out->close() && ok;
-    if (!ok) {
+    const std::string why = imageFiles().write(temporary, width, height, rgb8.data(), true);
+    if (why == "unsupported") throw InputError(path + ": OpenImageIO cannot write this format");
+    if (!why.empty()) {
         std::error_code ignored;
         fs::remove(temporary, ignored);
-        throw InputError(path + ": cannot write the image: " + out->geterror());
+        throw InputError(path + ": cannot write the image: " + why);
     }
     moveIntoPlace(temporary, path);
 }
 
 Image readImage(const std::string& path) {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw InputError(path + ": cannot read the image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
+    plugin::FilePixels pixels;
+    const std::string why = imageFiles().read(path, pixels);
+    if (!why.empty()) throw InputError(path + ": cannot read the image: " + why);
     Image image;
-    image.width = spec.width;
-    image.height = spec.height;
-    const int channels = spec.nchannels;
-    std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * channels);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
-        throw InputError(path + ": cannot read the image: " + in->geterror());
-    const bool srgb = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
-                      spec.format.basetype == OIIO::TypeDesc::UINT16;
-    image.rgb.resize(static_cast<size_t>(spec.width) * spec.height * 3);
+    image.width = pixels.width;
+    image.height = pixels.height;
+    const int channels = pixels.channels;
+    image.rgb.resize(static_cast<size_t>(pixels.width) * pixels.height * 3);
     for (size_t i = 0; i < image.rgb.size() / 3; ++i) {
         for (int c = 0; c < 3; ++c) {
-            float v = pixels[i * channels + std::min(c, channels - 1)];
-            if (srgb) v = v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+            float v = pixels.values[i * channels + std::min(c, channels - 1)];
+            if (pixels.integer) v = v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
             image.rgb[3 * i + c] = v;
         }
     }

@@ -46,7 +46,10 @@ std::string renderSandboxed(const RenderRequest& r, const ProcessLimits& limits,
     run.command = {"/pathlab/viewer"};
     const auto arguments = viewerArguments(r, "render.exr", "render.json");
     run.command.insert(run.command.end(), arguments.begin(), arguments.end());
-    run.files = {{r.runner->viewer, "/pathlab/viewer"}, {r.runner->labsLibrary, "/pathlab/labs.so"}};
+    // The viewer loads its image-file plug-in from beside itself.
+    const std::string plugin = "libpathlab_image_files.so";
+    run.files = {{r.runner->viewer, "/pathlab/viewer"}, {r.runner->labsLibrary, "/pathlab/labs.so"},
+                 {(fs::path(r.runner->viewer).parent_path() / plugin).string(), "/pathlab/" + plugin}};
     for (const std::string& file : sceneFiles(r.scene)) run.files.push_back({file, file});
     run.environment = {{"PATHLAB_LABS_LIBRARY", "/pathlab/labs.so"}};
     for (int k = 0; k < r.seeds; ++k) {
