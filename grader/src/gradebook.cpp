@@ -1,5 +1,7 @@
 #include "gradebook.h"
 
+#include "reports.h"
+
 #include "pathlab/lab_registry.h"
 #include "pathlab/render_stats.h"
 
@@ -24,20 +26,6 @@ std::string number(double value) {
     std::ostringstream out;
     out << value;
     return out.str();
-}
-
-std::string escapeHtml(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
-        }
-    }
-    return out;
 }
 
 std::string csv(const std::vector<GradebookEntry>& entries) {
@@ -112,19 +100,19 @@ std::string summaryPage(const std::vector<GradebookEntry>& entries) {
     html << "<h2>Scores</h2>\n" << histogram(entries) << "<h2>Most common diagnoses</h2>\n"
          << "<table><tr><th>submissions</th><th>lab</th><th>diagnosis</th></tr>\n";
     for (const auto& [count, key] : common)
-        html << "<tr><td>" << count << "</td><td>" << escapeHtml(key.first) << "</td><td>"
-             << escapeHtml(key.second) << "</td></tr>\n";
+        html << "<tr><td>" << count << "</td><td>" << escapeXml(key.first) << "</td><td>"
+             << escapeXml(key.second) << "</td></tr>\n";
     html << "</table>\n<h2>Submissions</h2>\n<table><tr><th>id</th><th>score</th><th>status</th></tr>\n";
     for (const GradebookEntry& e : entries) {
         const std::string link = "submissions/" + e.id + "/index.html";
         if (e.result.is_null())
-            html << "<tr><td>" << escapeHtml(e.id) << "</td><td></td><td>not graded: "
-                 << escapeHtml(e.problem) << "</td></tr>\n";
+            html << "<tr><td>" << escapeXml(e.id) << "</td><td></td><td>not graded: "
+                 << escapeXml(e.problem) << "</td></tr>\n";
         else
-            html << "<tr><td><a href=\"" << escapeHtml(link) << "\">" << escapeHtml(e.id)
+            html << "<tr><td><a href=\"" << escapeXml(link) << "\">" << escapeXml(e.id)
                  << "</a></td><td>" << number(e.result.value("score", 0.0)) << " / "
                  << number(e.result.value("max_score", 0.0)) << "</td><td>"
-                 << escapeHtml(e.result.value("status", "")) << "</td></tr>\n";
+                 << escapeXml(e.result.value("status", "")) << "</td></tr>\n";
     }
     html << "</table></body></html>\n";
     return html.str();

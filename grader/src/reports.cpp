@@ -13,6 +13,20 @@
 
 namespace pathlab::grader {
 
+std::string escapeXml(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
 double GradeReport::score() const {
     double s = 0;
     for (const LabGrade& l : labs) s += l.score();
@@ -27,19 +41,6 @@ double GradeReport::maxScore() const {
 
 namespace {
 
-std::string escapeXml(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
 
 std::string checkText(const CheckResult& c) {
     std::string text = c.summary;

@@ -17,6 +17,9 @@ struct GradeReport {
     double maxScore() const;
 };
 
+/// `text` with & < > " escaped, for XML and HTML.
+std::string escapeXml(const std::string& text);
+
 /// A table for the terminal, coloured when `colour`.
 std::string terminalReport(const GradeReport& report, bool colour);
 std::string jsonReport(const GradeReport& report);
