@@ -137,6 +137,16 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
 
     // Explain: per scene, the whole image's observed/expected per channel with a confidence
     // interval, the tiles that differ, and a likely cause where the furnace can tell.
+    std::vector<bool> sceneRejected;
+    for (size_t s = 0, offset = 0; s < setup.scenes.size(); offset += comparisons[s++].p.size())
+        sceneRejected.push_back(std::any_of(rejected.begin() + offset,
+                                            rejected.begin() + offset + comparisons[s].p.size(),
+                                            [](bool b) { return b; }));
+    // The furnace has no glass: a lab it rejects has a fault elsewhere, which the refraction
+    // check's image shows too, so only a lab that the furnace accepts is told about refraction.
+    bool furnaceRejected = false;
+    for (size_t s = 0; s < setup.scenes.size(); ++s)
+        furnaceRejected = furnaceRejected || (setup.scenes[s].isFurnace && sceneRejected[s]);
     size_t offset = 0;
     const double critical = studentCritical(r.alpha, r.seeds - 1);
     const char* channel[3] = {"red", "green", "blue"};
@@ -144,9 +154,7 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
         const GradingScene& scene = setup.scenes[s];
         const Comparison& c = comparisons[s];
         const Expectation& e = scene.reference.forLab(lab);
-        const bool sceneRejected =
-            std::any_of(rejected.begin() + offset, rejected.begin() + offset + c.p.size(), [](bool b) { return b; });
-        if (sceneRejected) {
+        if (sceneRejected[s]) {
             std::string line = scene.reference.scene + ": observed/expected";
             for (int ch = 0; ch < 3; ++ch) {
                 const double ratio = c.observed[ch].mean / e.mean[ch];
@@ -167,7 +175,7 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
             if (tileCount > 0)
                 details.push_back(scene.reference.scene + ": " + std::to_string(tileCount) + " of " +
                                   std::to_string(r.tiles * r.tiles) + " tiles differ (column,row from the top left):" + tiles);
-            if (scene.reference.scene == "refraction_check") {
+            if (scene.reference.scene == "refraction_check" && !furnaceRejected) {
                 details.push_back("likely cause: the view through the glass sphere is wrong: the Kt "
                                   "component must trace refractionRay(ray, hit), which bends the ray "
                                   "by Ni and turns into a mirror ray under total internal reflection "
