@@ -231,6 +231,7 @@ CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade,
     if (check.passed) {
         check.summary = "mean radiance matches " + expected;
     } else if (!failure.empty()) {
+        grade.rendersFinished = false;
         check.summary = "could not be checked: " + failure.text;
         check.diagnosis = failure.kind;
     } else {
@@ -435,7 +436,17 @@ LabGrade gradeLab(const GraderSetup& setup, Lab lab) {
     double noise = -1; // the noise figure of the correctness renders on the noise scene
     grade.checks.push_back(checkCorrectness(setup, lab, grade, noise));
     grade.checks.push_back(checkNoise(setup, lab, grade.checks[0].passed, noise, grade));
-    if (setup.measureSpeed) grade.checks.push_back(checkSpeed(setup, lab, grade.checks[0].passed, grade));
+    if (!setup.measureSpeed) return grade;
+    if (grade.rendersFinished) {
+        grade.checks.push_back(checkSpeed(setup, lab, grade.checks[0].passed, grade));
+    } else {
+        // A lab that crashed or hung in 64x64 renders would do the same in longer ones.
+        CheckResult speed;
+        speed.name = "speed";
+        speed.maxScore = setup.rubric.points[static_cast<int>(lab)].speed;
+        speed.summary = "not measured: the lab's correctness renders did not finish";
+        grade.checks.push_back(speed);
+    }
     return grade;
 }
 

@@ -25,6 +25,7 @@ struct LabGrade {
     std::vector<CheckResult> checks;
     double studentSamplesPerSecond = 0, solutionSamplesPerSecond = 0; ///< the timed runs' medians
     double studentVariance = 0, solutionVariance = 0; ///< per sample, on the noise scene
+    bool rendersFinished = true; ///< false when a correctness render crashed, hung or ran out
     /// For the HTML report: per scene, the student's mean image, the reference and a heat map.
     struct Pictures {
         std::string scene;
