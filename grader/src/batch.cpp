@@ -158,10 +158,7 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
     outcome.report.notes.insert(outcome.report.notes.begin(), notes.begin(), notes.end());
     std::printf("%s: %s\n", outcome.id.c_str(), outcome.status.c_str());
     std::fputs(terminalReport(outcome.report, false).c_str(), stdout);
-    if (!a.json.empty()) writeFileAtomically(a.json, jsonReport(outcome.report));
-    if (!a.junit.empty()) writeFileAtomically(a.junit, junitReport(outcome.report));
-    if (!a.gradescope.empty()) writeFileAtomically(a.gradescope, gradescopeReport(outcome.report));
-    if (!a.html.empty()) writeHtmlReport(outcome.report, a.html);
+    writeReports(a, outcome.report);
     return 0;
 }
 

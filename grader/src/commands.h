@@ -2,11 +2,15 @@
 /// The grader's commands; each returns the exit status.
 
 #include "arguments.h"
+#include "reports.h"
 #include "rubric.h"
 
 #include <string>
 
 namespace pathlab::grader {
+
+/// Writes the reports the options ask for (--json, --junit, --gradescope, --html).
+void writeReports(const Arguments& a, const GradeReport& report);
 
 /// Grades the labs of this build (or of --viewer): exit 0 when every check passed, 1 if not.
 int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scratch);
