@@ -92,11 +92,8 @@ PeerComparison comparePeer(const BenchOptions& options, int threads) {
     // Each image mean has variance (mean per-sample variance) / (pixels × spp); the two are
     // independent estimates of the same value with the same estimator, so their difference has
     // twice that variance. The 8-bit storage adds a negligible amount.
-    const int pixels = c.width * c.height;
-    Color variance;
-    for (int i = 0; i < pixels; ++i)
-        variance += image.variance(i);
-    const float n = static_cast<float>(pixels) * static_cast<float>(pixels) * c.imageSpp;
+    const Color variance = image.summary().meanVariance;
+    const float n = static_cast<float>(c.width) * static_cast<float>(c.height) * c.imageSpp;
     c.standardError = {std::sqrt(2 * variance.r / n), std::sqrt(2 * variance.g / n),
                        std::sqrt(2 * variance.b / n)};
     c.measured = true;

@@ -9,6 +9,7 @@ namespace pathlab::viewer {
 
 class FrameRate {
 public:
+    static constexpr size_t Window = 31; ///< frames the median is taken over
     void add(double seconds) {
         recent_.push_back(seconds);
         if (recent_.size() > Window) recent_.pop_front();
@@ -27,7 +28,6 @@ public:
     }
 
 private:
-    static constexpr size_t Window = 31;
     std::deque<double> recent_;
 };
 

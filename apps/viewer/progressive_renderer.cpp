@@ -1,5 +1,7 @@
 #include "progressive_renderer.h"
 
+#include "frame_rate.h"
+
 #include "pathlab/renderer.h"
 
 #include <chrono>
@@ -81,6 +83,8 @@ void ProgressiveRenderer::run() {
     ViewSettings settings;
     AccumulationBuffer buffers[2] = {AccumulationBuffer(1, 1), AccumulationBuffer(1, 1)};
     double seconds[2] = {0, 0};
+    RayCounters rays;
+    FrameRate frameRate; // of the implementation shown (buffer 0)
     int frames = 0;
     while (true) {
         {
@@ -100,6 +104,8 @@ void ProgressiveRenderer::run() {
                 resetBuffer(buffers[1], settings.split ? settings.width : 1,
                             settings.split ? settings.height : 1);
                 seconds[0] = seconds[1] = 0;
+                rays = RayCounters();
+                frameRate.clear();
                 frames = 0;
             }
         }
@@ -119,6 +125,12 @@ void ProgressiveRenderer::run() {
         const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
         if (!finished) continue; // restarted mid-pass: the partial pass is thrown away
         seconds[which] += elapsed.count();
+        const RayCounters after = renderer.rayCounters();
+        const RayCounters traced{after.intersect - before.intersect, after.occluded - before.occluded};
+        if (which == 0) {
+            rays += traced;
+            frameRate.add(elapsed.count());
+        }
         ++frames;
         framesFinished_.fetch_add(1);
 
@@ -127,11 +139,13 @@ void ProgressiveRenderer::run() {
         frame.number = frames;
         frame.spp = buffers[0].samplesPerPixel();
         if (settings.split) frame.otherSpp = buffers[1].samplesPerPixel();
+        frame.threads = renderer.threads();
         frame.frameSeconds = elapsed.count();
-        frame.raysPerSecond =
-            static_cast<double>(renderer.rayCounters().total() - before.total()) / elapsed.count();
-        frame.noise = buffers[0].meanRelativeStandardError();
-        frame.nonfinitePixels = buffers[0].nonfinitePixels();
+        frame.medianFrameSeconds = frameRate.medianSeconds();
+        frame.renderSeconds = seconds[0];
+        frame.raysPerSecond = static_cast<double>(traced.total()) / elapsed.count();
+        frame.rays = rays;
+        frame.summary = buffers[0].summary();
         if (onFrame_) onFrame_(frame);
         std::lock_guard<std::mutex> lock(mutex_);
         if (generation == generation_) {

@@ -5,6 +5,7 @@
 #include "pathlab/camera.h"
 #include "pathlab/lab_parameters.h"
 #include "pathlab/lab_registry.h"
+#include "pathlab/ray_counters.h"
 #include "pathlab/render_scene.h"
 
 #include <atomic>
@@ -39,10 +40,15 @@ struct Frame {
     std::vector<float> image;        ///< mean radiance, linear RGB, top row first
     std::vector<float> otherImage;   ///< split view: the other implementation's image
     int spp = 0, otherSpp = 0;
+    int threads = 0;                 ///< the renderer's worker threads
     double frameSeconds = 0;         ///< wall time of the last pass
+    /// The median wall time of the last 31 passes since the restart (FrameRate): the frame rate
+    /// the panel and --print-frame-rate show, steady enough to write down.
+    double medianFrameSeconds = 0;
+    double renderSeconds = 0;        ///< wall time of all passes since the restart
     double raysPerSecond = 0;        ///< of the last pass
-    float noise = 0;                 ///< mean relative standard error of the pixel estimates
-    int nonfinitePixels = 0;
+    RayCounters rays;                ///< traced since the restart
+    AccumulationBuffer::Summary summary{}; ///< mean radiance, variance, noise of `image`
 };
 
 class ProgressiveRenderer {

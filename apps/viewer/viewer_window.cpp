@@ -8,8 +8,10 @@
 #include "progressive_renderer.h"
 
 #include "pathlab/image_io.h"
+#include "pathlab/image_noise.h"
 #include "pathlab/input_error.h"
 #include "pathlab/render_scene.h"
+#include "pathlab/render_stats.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -22,6 +24,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 
 namespace pathlab::viewer {
 
@@ -40,17 +43,50 @@ const char* viewModeName(ViewMode mode) {
 
 std::string glfwProblem;
 
-/// --print-frame-rate: one line per finished frame, as Embree's tutorials print.
+double perSecond(double seconds) { return seconds > 0 ? 1.0 / seconds : 0.0; }
+
+/// --print-frame-rate: one line per finished frame, with the figures the panel shows, labelled.
 void printFrameLine(const Frame& frame) {
     const ViewSettings& s = frame.settings;
-    std::printf("frame %d: %.2f fps, %.1f ms, %d spp, %.3g rays/s, lab %s, impl %s, max-depth %d, "
-                "continue-prob %.2f, size %dx%d, %s, noise %.4f\n",
-                frame.number, 1.0 / frame.frameSeconds, 1000.0 * frame.frameSeconds, frame.spp,
-                frame.raysPerSecond, std::string(labName(s.lab)).c_str(),
+    std::printf("frame %d: median %.2f fps (%.1f ms) over the last %zu frames, this frame %.2f fps; "
+                "%d spp, %.3g rays/s, noise %.4f, efficiency %.3g; lab %s, impl %s, max-depth %d, "
+                "continue-prob %.2f, size %dx%d, %s\n",
+                frame.number, perSecond(frame.medianFrameSeconds), 1000.0 * frame.medianFrameSeconds,
+                std::min<size_t>(frame.number, FrameRate::Window), perSecond(frame.frameSeconds),
+                frame.spp, frame.raysPerSecond, frame.summary.noise,
+                renderEfficiency(frame.summary.noise, frame.renderSeconds),
+                std::string(labName(s.lab)).c_str(),
                 std::string(implementationName(s.implementation)).c_str(), s.parameters.maxDepth,
-                s.parameters.continueProb, s.width, s.height, s.split ? "split" : "single",
-                frame.noise);
+                s.parameters.continueProb, s.width, s.height, s.split ? "split" : "single");
     std::fflush(stdout);
+}
+
+/// What --stats writes for the window: a headless render's fields, for the frames shown, with
+/// the panel's median frame rate.
+RenderStats frameStats(const Frame& frame, const RenderOptions& options) {
+    const ViewSettings& v = frame.settings;
+    RenderStats s;
+    s.scene = options.sceneName;
+    s.lab = labName(v.lab);
+    s.impl = implementationName(v.implementation);
+    s.spp = frame.spp;
+    s.width = v.width;
+    s.height = v.height;
+    s.seed = v.seed;
+    s.maxDepth = v.parameters.maxDepth;
+    s.continueProb = v.parameters.continueProb;
+    s.threads = frame.threads;
+    s.seconds = frame.renderSeconds;
+    s.rays = frame.rays;
+    s.meanRadiance = frame.summary.meanRadiance;
+    s.meanVariance = frame.summary.meanVariance;
+    s.nonfinitePixels = frame.summary.nonfinitePixels;
+    s.noise = frame.summary.noise;
+    s.framesPerSecond = perSecond(frame.medianFrameSeconds);
+    s.framesPerSecondSource = "the window's median over the last " +
+                              std::to_string(std::min<size_t>(frame.number, FrameRate::Window)) +
+                              " frames, as its panel shows it";
+    return s;
 }
 
 const char* helpText = "h        this help\n"
@@ -93,14 +129,19 @@ public:
         while (!glfwWindowShouldClose(window_)) {
             glfwWaitEventsTimeout(1.0 / 60.0);
             renderer_->update(settings_);
-            if (renderer_->takeFrame(frame_, generation_)) onNewFrame();
-            draw();
+            const bool fresh = renderer_->takeFrame(frame_, generation_);
+            if (fresh) onNewFrame();
+            // Drawing only what changed leaves the cores to the render thread: an idle redraw at
+            // 60 Hz costs a software-rendered display (Xvfb, a remote desktop) a share of them.
+            if (fresh || std::exchange(inputSeen_, false) || finishing_) draw();
             if (done_) break;
         }
+        if (!options_.statsFile.empty()) writeStats();
         return status_;
     }
 
     void onKey(int key, int action, int mods) {
+        inputSeen_ = true;
         if (action == GLFW_RELEASE) return;
         const bool repeat = action == GLFW_REPEAT;
         const float step = 0.02f * length(settings_.camera.lookAt - settings_.camera.position);
@@ -149,17 +190,23 @@ public:
         (void)mods;
     }
 
+    /// The window must be drawn again (uncovered, or input the panel may show).
+    void onRefresh() { inputSeen_ = true; }
+
     void onFramebufferSize(int width, int height) {
+        inputSeen_ = true;
         if (width > 0 && height > 0) settings_.width = width, settings_.height = height;
     }
 
     void onMouseButton(int button, int action) {
+        inputSeen_ = true;
         if (button != GLFW_MOUSE_BUTTON_LEFT) return;
         dragging_ = action == GLFW_PRESS && !ImGui::GetIO().WantCaptureMouse;
         glfwGetCursorPos(window_, &lastX_, &lastY_);
     }
 
     void onCursor(double x, double y) {
+        inputSeen_ = true;
         if (!dragging_) return;
         settings_.camera = orbit(settings_.camera, static_cast<float>(x - lastX_) * 0.005f,
                                  static_cast<float>(y - lastY_) * 0.005f);
@@ -196,7 +243,6 @@ private:
     }
 
     void onNewFrame() {
-        frameRate_.add(frame_.frameSeconds);
         const ViewSettings& s = frame_.settings;
         uploadImage();
         if (options_.frames > 0 && frame_.number >= options_.frames && s == settings_) {
@@ -281,23 +327,24 @@ private:
         ImGui::SetNextWindowBgAlpha(0.6f);
         ImGui::Begin("PathLab", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
         const ViewSettings& s = frame_.settings;
-        ImGui::Text("%.2f fps  %.1f ms/frame (median)", frameRate_.framesPerSecond(),
-                    1000.0 * frameRate_.medianSeconds());
+        ImGui::Text("%.2f fps  %.1f ms/frame (median)", perSecond(frame_.medianFrameSeconds),
+                    1000.0 * frame_.medianFrameSeconds);
         ImGui::Text("%d spp   %.3g rays/s", frame_.spp, frame_.raysPerSecond);
         ImGui::Text("lab %s (%s)", std::string(labName(settings_.lab)).c_str(),
                     std::string(implementationName(settings_.implementation)).c_str());
         ImGui::Text("maxDepth %d   continueProb %.2f", settings_.parameters.maxDepth,
                     settings_.parameters.continueProb);
-        ImGui::Text("noise %.4f (mean relative std. error)", frame_.noise);
+        ImGui::Text("noise %.4f (relative std. error)  efficiency %.3g", frame_.summary.noise,
+                    renderEfficiency(frame_.summary.noise, frame_.renderSeconds));
         ImGui::Text("%dx%d  view: %s", s.width, s.height, viewModeName(mode_));
         if (mode_ == ViewMode::Split)
             ImGui::Text("student %d spp | solution %d spp", frame_.spp, frame_.otherSpp);
         if (mode_ == ViewMode::Difference)
             ImGui::Text("|image - ref| / ref: black 0, blue .125, green .25, yellow .375, red .5+;"
                         " median %.3f", medianDifference_);
-        if (frame_.nonfinitePixels > 0)
+        if (frame_.summary.nonfinitePixels > 0)
             ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "%d pixels got NaN/inf samples",
-                               frame_.nonfinitePixels);
+                               frame_.summary.nonfinitePixels);
         ImGui::Text("h: help");
         ImGui::End();
         if (showHelp_) {
@@ -308,6 +355,21 @@ private:
         }
         ImGui::Render();
         ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+    }
+
+    void writeStats() {
+        if (frame_.number == 0) {
+            std::fprintf(stderr, "viewer: --stats %s: no frame was finished, nothing written\n",
+                         options_.statsFile.c_str());
+            status_ = 2;
+            return;
+        }
+        try {
+            writeRenderStats(options_.statsFile, frameStats(frame_, options_));
+        } catch (const InputError& error) {
+            std::fprintf(stderr, "viewer: %s\n", error.what());
+            status_ = 2;
+        }
     }
 
     void screenshot(const std::string& requested) {
@@ -340,9 +402,9 @@ private:
     Image reference_;
     Frame frame_;
     uint64_t generation_ = 0;
-    FrameRate frameRate_;
     std::vector<unsigned char> rgba_;
     unsigned texture_ = 0;
+    bool inputSeen_ = true; // the first loop draws the panel before any frame
     bool hasImage_ = false, showHelp_ = false, finishing_ = false, done_ = false, dragging_ = false;
     ViewMode mode_ = ViewMode::Image;
     float medianDifference_ = 0;
@@ -413,6 +475,7 @@ int runViewerWindow(const pathlab::RenderOptions& options) {
     glfwSetCursorPosCallback(session.window, [](GLFWwindow* w, double x, double y) {
         windowOf(w)->onCursor(x, y);
     });
+    glfwSetWindowRefreshCallback(session.window, [](GLFWwindow* w) { windowOf(w)->onRefresh(); });
     // ImGui chains to the callbacks above (install_callbacks = true).
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();

@@ -1,5 +1,8 @@
 #include "pathlab/accumulation_buffer.h"
 
+#include "pathlab/image_noise.h"
+
+#include <algorithm>
 #include <cmath>
 
 namespace pathlab {
@@ -28,34 +31,22 @@ Color AccumulationBuffer::variance(int pixel) const {
     return {std::fmax(v.r, 0.0f), std::fmax(v.g, 0.0f), std::fmax(v.b, 0.0f)};
 }
 
-Color AccumulationBuffer::meanRadiance() const {
-    double r = 0, g = 0, b = 0;
-    for (size_t i = 0; i < sum_.size(); ++i) {
-        r += sum_[i].r, g += sum_[i].g, b += sum_[i].b;
-    }
-    const double n = static_cast<double>(sum_.size()) * std::max(samplesPerPixel_, 1);
-    return {static_cast<float>(r / n), static_cast<float>(g / n), static_cast<float>(b / n)};
-}
-
-int AccumulationBuffer::nonfinitePixels() const {
-    int count = 0;
-    for (uint8_t flag : nonfinite_) count += flag;
-    return count;
-}
-
-float AccumulationBuffer::meanRelativeStandardError() const {
-    if (samplesPerPixel_ < 2) return 0.0f;
-    double total = 0;
-    long counted = 0;
+AccumulationBuffer::Summary AccumulationBuffer::summary() const {
+    double radiance[3] = {0, 0, 0}, sampleVariance[3] = {0, 0, 0};
+    int nonfinite = 0;
     for (int i = 0; i < static_cast<int>(sum_.size()); ++i) {
         const Color m = mean(i), v = variance(i);
-        for (int c = 0; c < 3; ++c) {
-            if (m[c] <= 1e-6f) continue; // black pixels have no relative error
-            total += std::sqrt(v[c] / samplesPerPixel_) / m[c];
-            ++counted;
-        }
+        for (int c = 0; c < 3; ++c) radiance[c] += m[c], sampleVariance[c] += v[c];
+        nonfinite += nonfinite_[i];
     }
-    return counted > 0 ? static_cast<float>(total / counted) : 0.0f;
+    const double pixels = std::max<double>(1, static_cast<double>(sum_.size()));
+    auto perPixel = [&](const double* total) {
+        return Color(static_cast<float>(total[0] / pixels), static_cast<float>(total[1] / pixels),
+                     static_cast<float>(total[2] / pixels));
+    };
+    Summary s{perPixel(radiance), perPixel(sampleVariance), nonfinite, 0};
+    s.noise = imageNoise(s.meanVariance, s.meanRadiance, samplesPerPixel_);
+    return s;
 }
 
 std::vector<float> AccumulationBuffer::meanImage() const {

@@ -37,12 +37,12 @@ HeadlessResult renderHeadless(const RenderOptions& options, const RenderScene& s
     s.threads = renderer.threads();
     s.seconds = elapsed.count();
     s.rays = renderer.rayCounters();
-    s.meanRadiance = result.image.meanRadiance();
-    Color variance;
-    const int pixels = options.width * options.height;
-    for (int i = 0; i < pixels; ++i) variance += result.image.variance(i);
-    s.meanVariance = variance / static_cast<float>(pixels);
-    s.nonfinitePixels = result.image.nonfinitePixels();
+    const AccumulationBuffer::Summary summary = result.image.summary();
+    s.meanRadiance = summary.meanRadiance;
+    s.meanVariance = summary.meanVariance;
+    s.nonfinitePixels = summary.nonfinitePixels;
+    s.noise = summary.noise;
+    setHeadlessFrameRate(s);
     return result;
 }
 

@@ -250,13 +250,16 @@ headless
   -o FILE                render --spp samples per pixel and write FILE (.exr .pfm .hdr: linear
                          radiance; .png: sRGB, clamped), no window
   --spp N                samples per pixel for -o (default 16)
-  --stats FILE.json      write what was measured (time, rays, mean radiance)
+  --stats FILE.json      write what was measured: time, samples/s, frame rate, rays, mean
+                         radiance, noise, efficiency (with the window: after --frames or at
+                         quit, the panel's figures)
   --seeds K              render K independent images, for seeds S to S+K-1, each to FILE
                          and FILE.json with -SEED before the extension (one process, one
                          scene load: how the grader renders its seeds)
 window
   --spp-per-frame N      samples per pixel added each frame (default 1)
-  --print-frame-rate     print frame rate, spp and rays/s every frame
+  --print-frame-rate     print the panel's figures every frame: median frame rate, spp,
+                         rays/s, noise, efficiency
   --frames N --screenshot FILE
                          run N frames, save the image, quit
   --capture-window FILE.png

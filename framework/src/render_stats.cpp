@@ -1,5 +1,6 @@
 #include "pathlab/render_stats.h"
 
+#include "pathlab/image_noise.h"
 #include "pathlab/input_error.h"
 
 #include <nlohmann/json.hpp>
@@ -16,6 +17,15 @@ double RenderStats::samplesPerSecond() const {
 
 double RenderStats::raysPerSecond() const {
     return seconds > 0 ? static_cast<double>(rays.total()) / seconds : 0.0;
+}
+
+double RenderStats::efficiency() const { return renderEfficiency(noise, seconds); }
+
+void setHeadlessFrameRate(RenderStats& stats) {
+    const double pixels = static_cast<double>(stats.width) * stats.height;
+    stats.framesPerSecond = pixels > 0 ? stats.samplesPerSecond() / pixels : 0;
+    stats.framesPerSecondSource = "samples_per_second / (width x height): headless, as the "
+                                  "window at this size with 1 spp per frame";
 }
 
 void writeFileAtomically(const std::string& path, const std::string& text) {
@@ -61,8 +71,47 @@ void writeRenderStats(const std::string& path, const RenderStats& s) {
         {"mean_radiance", rgb(s.meanRadiance)},
         {"mean_variance", rgb(s.meanVariance)},
         {"nonfinite_pixels", s.nonfinitePixels},
+        {"noise", s.noise},
+        {"efficiency", s.efficiency()},
+        {"frames_per_second", s.framesPerSecond},
+        {"frames_per_second_source", s.framesPerSecondSource},
     };
     writeFileAtomically(path, json.dump(2) + "\n");
+}
+
+RenderStats readRenderStats(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw InputError(path + ": cannot read the file");
+    try {
+        const nlohmann::json j = nlohmann::json::parse(in);
+        auto rgb = [&](const char* key) {
+            const nlohmann::json& c = j.at(key);
+            return Color(c.at(0).get<float>(), c.at(1).get<float>(), c.at(2).get<float>());
+        };
+        RenderStats s;
+        s.scene = j.at("scene").get<std::string>();
+        s.lab = j.at("lab").get<std::string>();
+        s.impl = j.at("impl").get<std::string>();
+        s.spp = j.at("spp").get<int>();
+        s.width = j.at("width").get<int>();
+        s.height = j.at("height").get<int>();
+        s.seed = j.at("seed").get<uint64_t>();
+        s.maxDepth = j.at("max_depth").get<int>();
+        s.continueProb = j.at("continue_prob").get<float>();
+        s.threads = j.at("threads").get<int>();
+        s.seconds = j.at("seconds").get<double>();
+        s.rays.intersect = j.at("rays").at("intersect").get<uint64_t>();
+        s.rays.occluded = j.at("rays").at("occluded").get<uint64_t>();
+        s.meanRadiance = rgb("mean_radiance");
+        s.meanVariance = rgb("mean_variance");
+        s.nonfinitePixels = j.at("nonfinite_pixels").get<int>();
+        s.noise = j.at("noise").get<double>();
+        s.framesPerSecond = j.at("frames_per_second").get<double>();
+        s.framesPerSecondSource = j.at("frames_per_second_source").get<std::string>();
+        return s;
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(path + ": not the stats a viewer writes (" + e.what() + ")");
+    }
 }
 
 } // namespace pathlab

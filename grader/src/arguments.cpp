@@ -29,7 +29,12 @@ options
   --no-speed          skip the frame-rate check
   --json FILE --junit FILE --gradescope FILE --html DIR
                       reports (the terminal table is always printed)
-  --report FILE.md    a lab report: your frame rates, ratios and noise beside the reference's
+  --report FILE.md    a lab report: your notebook's figures (frame rate, noise, efficiency) and
+                      the ratios between labs, beside the reference solutions'
+
+make-references
+  --only-figures      measure only lab_figures.json: the reference solutions' notebook figures
+                      and timed runs on this machine (about a minute)
 
 batch
   --out DIR           gradebook.csv, summary.html, batch.log and submissions/ID/ (feedback)
@@ -98,6 +103,7 @@ Arguments parseArguments(int argc, char** argv) {
         else if (arg == "--seed") a.seed = static_cast<uint64_t>(number(arg, value(i), 0));
         else if (arg == "--threads") a.threads = static_cast<int>(number(arg, value(i), 0));
         else if (arg == "--no-speed") a.speed = false;
+        else if (arg == "--only-figures") a.onlyFigures = true;
         else if (arg == "--json") a.json = value(i);
         else if (arg == "--junit") a.junit = value(i);
         else if (arg == "--gradescope") a.gradescope = value(i);

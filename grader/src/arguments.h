@@ -21,6 +21,7 @@ struct Arguments {
     uint64_t seed = 1;
     int threads = 0;
     bool speed = true;
+    bool onlyFigures = false;   ///< make-references: only lab_figures.json
     // batch
     int jobs = 1;
     bool force = false;

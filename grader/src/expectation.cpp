@@ -1,7 +1,7 @@
 #include "expectation.h"
 
 #include "hypothesis_tests.h"
-#include "noise_figure.h"
+#include "seed_variance.h"
 
 #include "pathlab/image_io.h"
 #include "pathlab/input_error.h"
@@ -103,7 +103,7 @@ SceneReference measureReference(const LabRunner& solution, const std::string& sc
                 throw std::runtime_error("the reference solution failed: " + result.failure);
             std::vector<std::vector<float>> images;
             for (const RenderedImage& rendered : result.images) images.push_back(rendered.rgb);
-            sum += noiseFigure(images, labSpp) / noiseGroups;
+            sum += trimmedSampleVariance(images, labSpp) / noiseGroups;
             step();
         }
         ref.noise[static_cast<int>(lab)] = sum;
@@ -136,7 +136,7 @@ void saveReference(const std::string& folder, const SceneReference& ref) {
         {"noise_spp", ref.noiseSpp},
         {"noise_is", "per-sample variance of the reference solutions, from the spread of the "
                      "rubric's seeds at the rubric's spp, the noisiest 1% of pixels left out "
-                     "(grader/src/noise_figure.h)"},
+                     "(grader/src/seed_variance.h)"},
     };
     writeFileAtomically(folder + "/" + ref.scene + ".json", j.dump(1) + "\n");
 }

@@ -28,7 +28,7 @@ struct SceneReference {
     float continueProb = 0;
     Expectation depthLimited;      ///< labs 1-3, at maxDepth
     Expectation unbiased;          ///< lab 4
-    std::array<double, 4> noise{}; ///< each lab's solution's noiseFigure at the rubric's seeds and spp
+    std::array<double, 4> noise{}; ///< each lab's solution's trimmedSampleVariance at the rubric's seeds and spp
     int noiseSeeds = 0;            ///< the seeds and spp (by lab) the noise was measured at
     std::array<int, 4> noiseSpp{};
 

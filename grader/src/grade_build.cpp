@@ -3,20 +3,59 @@
 #include "commands.h"
 #include "expectation.h"
 #include "grading_scenes.h"
+#include "lab_figures.h"
 #include "progress_bar.h"
 #include "reports.h"
 
+#include "pathlab/input_error.h"
 #include "pathlab/render_stats.h"
 
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <unistd.h>
 
 namespace pathlab::grader {
 
+namespace {
+
+std::string labFiguresPath(const Arguments& a) { return a.references + "/lab_figures.json"; }
+
+/// The reference solutions' notebook figures and timed runs on this machine.
+void makeLabFigures(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
+    GraderSetup setup;
+    setup.solution = {a.solutionViewer, Implementation::Solution, "", {}, {}};
+    setup.rubric = rubric;
+    setup.scratch = scratch;
+    setup.threads = a.threads;
+    LabFigures figures;
+    figures.machine = thisMachine(a.threads);
+    {
+        ProgressBar bar("lab figures: timed runs", "labs");
+        for (Lab lab : AllLabs) {
+            figures.timedSamplesPerSecond[static_cast<int>(lab)] =
+                timedSamplesPerSecond(setup, setup.solution, lab);
+            bar.update(static_cast<int>(lab) + 1, static_cast<int>(AllLabs.size()));
+        }
+    }
+    std::fprintf(stderr, "lab figures: the notebook's renders ...\n");
+    figures.notebook = measureNotebook(setup.solution, notebookEstimators({AllLabs.begin(), AllLabs.end()}, rubric),
+                                       rubric, a.threads, scratch);
+    for (const auto& [key, f] : figures.notebook)
+        if (!f.failure.empty()) throw std::runtime_error("the reference solution " + key + " failed: " + f.failure);
+    saveLabFigures(labFiguresPath(a), figures, rubric);
+    std::printf("wrote %s (%s)\n", labFiguresPath(a).c_str(), figures.machine.describe().c_str());
+}
+
+} // namespace
+
 int makeReferences(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
     std::filesystem::create_directories(a.references);
+    if (a.onlyFigures) {
+        makeLabFigures(a, rubric, scratch);
+        return 0;
+    }
     const LabRunner solution{a.solutionViewer, Implementation::Solution, "", {}, {}};
     for (const std::string& scene : rubric.scenes) {
         ProgressBar bar(scene, "renders");
@@ -26,6 +65,7 @@ int makeReferences(const Arguments& a, const Rubric& rubric, const std::string& 
         saveReference(a.references, ref);
         std::printf("wrote %s/%s.json\n", a.references.c_str(), scene.c_str());
     }
+    makeLabFigures(a, rubric, scratch);
     return 0;
 }
 
@@ -47,9 +87,21 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
     setup.threads = a.threads;
     setup.measureSpeed = a.speed && PATHLAB_HAS_SOLUTIONS;
     GradeReport report;
-    if (a.speed && !setup.measureSpeed)
+    std::optional<LabFigures> stored;
+    try {
+        stored = loadLabFigures(labFiguresPath(a), rubric);
+    } catch (const InputError& e) {
+        if (!setup.measureSpeed || !a.report.empty()) report.notes.push_back(e.what());
+    }
+    if (a.speed && !setup.measureSpeed) {
         report.notes.push_back("speed is not checked: this build has no reference solutions to "
                                "time your labs against (your instructor's grader does it)");
+        setup.timeWithoutSolutions = true;
+        if (stored) {
+            setup.storedSolutionSamplesPerSecond = stored->timedSamplesPerSecond;
+            report.ratiosReference = "the reference solutions on " + stored->machine.describe();
+        }
+    }
     setup.scenes = gradingScenes(rubric, a.references, a.scenesDir, "", setup.solution, scratch, report.notes);
     for (Lab lab : a.labs) {
         std::fprintf(stderr, "grading %s ...\n", std::string(labName(lab)).c_str());
@@ -59,7 +111,12 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
     std::fputs(terminalReport(report, ::isatty(STDOUT_FILENO)).c_str(), stdout);
     writeReports(a, report);
     if (!a.report.empty()) {
-        writeFileAtomically(a.report, labReport(report, rubric.speedWidth, rubric.speedHeight, rubric.noiseScene));
+        std::fprintf(stderr, "measuring the lab notebook's figures ...\n");
+        LabFigures yours;
+        yours.machine = thisMachine(a.threads);
+        yours.notebook = measureNotebook(setup.student, notebookEstimators(a.labs, rubric), rubric,
+                                         a.threads, scratch);
+        writeFileAtomically(a.report, labReport(report, rubric, yours, stored));
         std::printf("lab report: %s\n", a.report.c_str());
     }
     return report.score() == report.maxScore() ? 0 : 1;

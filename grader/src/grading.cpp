@@ -2,7 +2,7 @@
 
 #include "diagnosis.h"
 #include "hypothesis_tests.h"
-#include "noise_figure.h"
+#include "seed_variance.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,13 +16,19 @@ namespace pathlab::grader {
 
 double LabGrade::score() const {
     double s = 0;
-    for (const CheckResult& c : checks) s += c.score;
+    for (const CheckResult& c : checks) s += c.gradedHere ? c.score : 0;
     return s;
 }
 
 double LabGrade::maxScore() const {
     double s = 0;
-    for (const CheckResult& c : checks) s += c.maxScore;
+    for (const CheckResult& c : checks) s += c.gradedHere ? c.maxScore : 0;
+    return s;
+}
+
+double LabGrade::pointsNotGradedHere() const {
+    double s = 0;
+    for (const CheckResult& c : checks) s += c.gradedHere ? 0 : c.maxScore;
     return s;
 }
 
@@ -125,7 +131,7 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
             return false;
         }
         if (scene.reference.scene == r.noiseScene || noise < 0)
-            noise = noiseFigure(runs.images, r.correctnessSpp[static_cast<int>(lab)]);
+            noise = trimmedSampleVariance(runs.images, r.correctnessSpp[static_cast<int>(lab)]);
         comparisons.push_back(compare(runs, scene.reference.forLab(lab), r.seeds));
         allP.insert(allP.end(), comparisons.back().p.begin(), comparisons.back().p.end());
         LabGrade::Pictures pictures{scene.reference.scene, r.width, r.height, {}, scene.reference.forLab(lab).image};
@@ -326,14 +332,15 @@ private:
 };
 
 /// The fixed cost of a run (start-up, loading, building Embree's BVH), measured by rendering one
-/// pixel, so that samples/s counts rendering alone and cannot be reported by the lab itself.
+/// pixel of `lab`, so that samples/s counts rendering alone and cannot be reported by the lab
+/// itself.
 double startupSeconds(const GraderSetup& setup, const LabRunner& runner, const std::string& scene,
-                      int threads) {
+                      Lab lab, int threads) {
     static std::map<std::string, double> measured; // per scene, once per grading
     if (const auto known = measured.find(scene); known != measured.end()) return known->second;
     std::vector<double> seconds;
     for (int i = 0; i < 3; ++i) {
-        RenderRequest request{&runner, scene, Lab::Uniform, 1, 1, 1, setup.rubric.maxDepth,
+        RenderRequest request{&runner, scene, lab, 1, 1, 1, setup.rubric.maxDepth,
                               setup.rubric.continueProb, 1, 1, threads, setup.scratch};
         const RenderResult r = renderLab(request, limitsOf(setup.rubric));
         if (r.ok) seconds.push_back(r.process.seconds);
@@ -341,40 +348,102 @@ double startupSeconds(const GraderSetup& setup, const LabRunner& runner, const s
     return measured[scene] = median(seconds);
 }
 
-CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade& grade) {
+/// The rubric's timed renders: where, how many threads, and the start-up to subtract (measured
+/// with `startupRunner`'s `lab`).
+struct TimedSeries {
+    std::string scene;
+    int threads = 0;
+    double startup = 0;
+};
+
+TimedSeries timedSeries(const GraderSetup& setup, const LabRunner& startupRunner, Lab lab) {
+    const Rubric& r = setup.rubric;
+    const auto scene = std::find_if(setup.scenes.begin(), setup.scenes.end(), [&](const GradingScene& s) {
+        return s.reference.scene == r.speedScene;
+    });
+    TimedSeries series;
+    series.scene = scene != setup.scenes.end() ? scene->path
+                                               : std::string(PATHLAB_MODELS_DIR) + "/" + r.speedScene + ".ecs";
+    series.threads = setup.timing.threads > 0 ? setup.timing.threads : setup.threads;
+    series.startup = startupSeconds(setup, startupRunner, series.scene, lab, series.threads);
+    return series;
+}
+
+/// One timed render (run number `run` of a series): samples/s from its wall time minus the
+/// start-up, and its image's mean radiance.
+struct TimedRun {
+    RenderResult result;
+    double samplesPerSecond = 0, meanRadiance = 0;
+};
+
+TimedRun timedRun(const GraderSetup& setup, const TimedSeries& series, const LabRunner& runner,
+                  Lab lab, int run) {
+    const Rubric& r = setup.rubric;
+    RenderRequest request{&runner, series.scene, lab, r.speedWidth, r.speedHeight,
+                          r.speedSpp[static_cast<int>(lab)], r.maxDepth, r.continueProb,
+                          static_cast<uint64_t>(77 + run), 1, series.threads, setup.scratch};
+    TimedRun timed{renderLab(request, limitsOf(r))};
+    if (!timed.result.ok) return timed;
+    const double samples = static_cast<double>(request.width) * request.height * request.spp;
+    timed.samplesPerSecond = samples / std::max(timed.result.process.seconds - series.startup, 1e-3);
+    timed.meanRadiance = imageMean(timed.result.image());
+    return timed;
+}
+
+/// Speed in a build without the reference solutions: the student's timed runs alone, for the
+/// ratios between labs; the check itself is the instructor's grader's.
+CheckResult timeWithoutSolutions(const GraderSetup& setup, Lab lab, LabGrade& grade) {
     const Rubric& r = setup.rubric;
     CheckResult check;
     check.name = "speed";
     check.maxScore = r.points[static_cast<int>(lab)].speed;
-    const auto scene = std::find_if(setup.scenes.begin(), setup.scenes.end(), [&](const GradingScene& s) {
-        return s.reference.scene == r.speedScene;
-    });
-    const std::string path = scene != setup.scenes.end() ? scene->path : setup.scenes.front().path;
+    check.gradedHere = false;
+    const LabRunner runner = timedRunner(setup.student, setup.timing);
+    const TimedSeries series = timedSeries(setup, runner, lab);
+    std::vector<double> samplesPerSecond;
+    for (int run = 0; run < r.speedRuns; ++run) {
+        const TimedRun timed = timedRun(setup, series, runner, lab, run);
+        if (!timed.result.ok) break;
+        samplesPerSecond.push_back(timed.samplesPerSecond);
+    }
+    grade.studentSamplesPerSecond = samplesPerSecond.size() == static_cast<size_t>(r.speedRuns)
+                                        ? median(samplesPerSecond) : 0;
+    grade.solutionSamplesPerSecond = setup.storedSolutionSamplesPerSecond[static_cast<int>(lab)];
+    check.summary = format("graded by the instructor: this build has no reference solutions to "
+                           "time your lab against (at least %.2f of the reference's samples/s on "
+                           "the same machine)", r.minSpeedRatio);
+    if (grade.studentSamplesPerSecond > 0)
+        check.details.push_back(format("yours on this machine: %.3g samples/s in the grader's "
+                                       "timed runs; compare labs through the ratios below",
+                                       grade.studentSamplesPerSecond));
+    return check;
+}
+
+CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade& grade) {
+    if (!setup.measureSpeed) return timeWithoutSolutions(setup, lab, grade);
+    const Rubric& r = setup.rubric;
+    CheckResult check;
+    check.name = "speed";
+    check.maxScore = r.points[static_cast<int>(lab)].speed;
     const LabRunner studentRunner = timedRunner(setup.student, setup.timing);
     const LabRunner solutionRunner = timedRunner(setup.solution, setup.timing);
-    const int threads = setup.timing.threads > 0 ? setup.timing.threads : setup.threads;
     const TimingLock lock(setup.timing.lockFile);
-    const double startup = startupSeconds(setup, solutionRunner, path, threads);
-    const double samples = static_cast<double>(r.speedWidth) * r.speedHeight * r.speedSpp[static_cast<int>(lab)];
+    const TimedSeries series = timedSeries(setup, solutionRunner, Lab::Uniform);
     std::vector<double> student, solution;
     std::vector<double> studentMeans, solutionMeans; // whole-image radiance of each timed run
     for (int run = 0; run < r.speedRuns; ++run) {
         // Interleaved A B A B: a slow spell of a shared machine hits both alike.
         for (const LabRunner* runner : {&studentRunner, &solutionRunner}) {
             const bool isStudent = runner == &studentRunner;
-            RenderRequest request{runner, path, lab, r.speedWidth, r.speedHeight,
-                                  r.speedSpp[static_cast<int>(lab)], r.maxDepth, r.continueProb,
-                                  static_cast<uint64_t>(77 + run), 1, threads, setup.scratch};
-            const RenderResult result = renderLab(request, limitsOf(r));
-            if (!result.ok) {
+            const TimedRun timed = timedRun(setup, series, *runner, lab, run);
+            if (!timed.result.ok) {
                 check.summary = std::string(isStudent ? "the lab " : "the reference ") +
-                                result.failure + " in a timed run";
-                check.diagnosis = isStudent ? result.failureKind : "the reference failed";
+                                timed.result.failure + " in a timed run";
+                check.diagnosis = isStudent ? timed.result.failureKind : "the reference failed";
                 return check;
             }
-            const double seconds = std::max(result.process.seconds - startup, 1e-3);
-            (isStudent ? student : solution).push_back(samples / seconds);
-            (isStudent ? studentMeans : solutionMeans).push_back(imageMean(result.image()));
+            (isStudent ? student : solution).push_back(timed.samplesPerSecond);
+            (isStudent ? studentMeans : solutionMeans).push_back(timed.meanRadiance);
         }
     }
     grade.studentSamplesPerSecond = median(student);
@@ -430,13 +499,25 @@ LabGrade ungradedLab(const Rubric& rubric, Lab lab, bool measureSpeed, const std
     return grade;
 }
 
+double timedSamplesPerSecond(const GraderSetup& setup, const LabRunner& runner, Lab lab) {
+    const LabRunner timed = timedRunner(runner, setup.timing);
+    const TimedSeries series = timedSeries(setup, timed, lab);
+    std::vector<double> samplesPerSecond;
+    for (int run = 0; run < setup.rubric.speedRuns; ++run) {
+        const TimedRun one = timedRun(setup, series, timed, lab, run);
+        if (!one.result.ok) return 0;
+        samplesPerSecond.push_back(one.samplesPerSecond);
+    }
+    return median(samplesPerSecond);
+}
+
 LabGrade gradeLab(const GraderSetup& setup, Lab lab) {
     LabGrade grade;
     grade.lab = lab;
     double noise = -1; // the noise figure of the correctness renders on the noise scene
     grade.checks.push_back(checkCorrectness(setup, lab, grade, noise));
     grade.checks.push_back(checkNoise(setup, lab, grade.checks[0].passed, noise, grade));
-    if (!setup.measureSpeed) return grade;
+    if (!setup.measureSpeed && !setup.timeWithoutSolutions) return grade;
     if (grade.rendersFinished) {
         grade.checks.push_back(checkSpeed(setup, lab, grade.checks[0].passed, grade));
     } else {
@@ -444,6 +525,7 @@ LabGrade gradeLab(const GraderSetup& setup, Lab lab) {
         CheckResult speed;
         speed.name = "speed";
         speed.maxScore = setup.rubric.points[static_cast<int>(lab)].speed;
+        speed.gradedHere = setup.measureSpeed;
         speed.summary = "not measured: the lab's correctness renders did not finish";
         grade.checks.push_back(speed);
     }

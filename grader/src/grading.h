@@ -5,6 +5,7 @@
 #include "render_run.h"
 #include "rubric.h"
 
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -18,6 +19,9 @@ struct CheckResult {
     std::string summary;         ///< one line
     std::vector<std::string> details; ///< what to look at, in words
     std::string diagnosis;       ///< a failure's cause in a few words, for a class's summary
+    /// False for a check this build cannot make (speed, without the reference solutions to time
+    /// against): the instructor's grader makes it, and its points are not in this build's totals.
+    bool gradedHere = true;
 };
 
 struct LabGrade {
@@ -35,7 +39,8 @@ struct LabGrade {
     std::vector<Pictures> pictures;
 
     double score() const;
-    double maxScore() const;
+    double maxScore() const;       ///< of the checks graded here
+    double pointsNotGradedHere() const;
 };
 
 /// A scene to grade on: its .ecs path and what it is compared with.
@@ -64,9 +69,18 @@ struct GraderSetup {
     uint64_t seedBase = 1;
     int threads = 0;
     bool measureSpeed = true;
+    /// A build without the solutions cannot check speed (measureSpeed false), but it still times
+    /// the student's labs, for the speed ratios between them; the reference's ratios then come
+    /// from the stored figures (lab_figures.json, by lab; 0 where none).
+    bool timeWithoutSolutions = false;
+    std::array<double, 4> storedSolutionSamplesPerSecond{};
 };
 
 LabGrade gradeLab(const GraderSetup& setup, Lab lab);
+
+/// The median samples/s of the rubric's timed runs of one lab with `runner`'s labs alone (for
+/// the stored reference figures); 0 if a run failed.
+double timedSamplesPerSecond(const GraderSetup& setup, const LabRunner& runner, Lab lab);
 
 /// A lab that could not be graded at all (not submitted, does not compile): every check fails
 /// with `reason` as its summary and diagnosis.

@@ -80,14 +80,14 @@ std::string readRendered(const RenderRequest& r, uint64_t seed, RenderedImage& r
                          std::string& kind) {
     const auto [imageName, statsName] = outputNames(r, seed);
     try {
-        std::ifstream in(r.scratch + "/" + statsName);
+        rendered.statsFile = r.scratch + "/" + statsName;
+        std::ifstream in(rendered.statsFile);
         const nlohmann::json s = nlohmann::json::parse(in);
         if (const int nonfinite = s.at("nonfinite_pixels"); nonfinite > 0) {
             kind = "NaN or infinite radiance";
             return "returned NaN or infinite radiance in " + std::to_string(nonfinite) +
                    " pixels (a division by a zero probability?)";
         }
-        for (int c = 0; c < 3; ++c) rendered.meanVariance[c] = s.at("mean_variance").at(c);
         const Image read = readImage(r.scratch + "/" + imageName);
         // The lab runs in the process that writes this file: what it holds is checked, not trusted.
         if (read.width != r.width || read.height != r.height)

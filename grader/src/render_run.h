@@ -41,10 +41,12 @@ struct RenderRequest {
     std::string scratch;           ///< a folder for the images and stats
 };
 
-/// One seed's image and what the viewer reported with it.
+/// One seed's image, and where the viewer's --stats for it are. Those come from the lab's own
+/// process: grading never scores by them (a lab could write anything there), only the student's
+/// lab report quotes them (readRenderStats).
 struct RenderedImage {
     std::vector<float> rgb;        ///< linear RGB, top row first
-    std::array<double, 3> meanVariance{}; ///< per-sample variance, averaged over pixels
+    std::string statsFile;         ///< in the request's scratch folder, until the next render
 };
 
 struct RenderResult {

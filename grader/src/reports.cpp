@@ -39,8 +39,25 @@ double GradeReport::maxScore() const {
     return s;
 }
 
+double GradeReport::pointsNotGradedHere() const {
+    double s = 0;
+    for (const LabGrade& l : labs) s += l.pointsNotGradedHere();
+    return s;
+}
+
 namespace {
 
+
+/// "8/8", or "8/8 (+2 speed: graded by the instructor)" where a check is not graded here.
+std::string scoreText(double score, double maxScore, double notGradedHere) {
+    char text[128];
+    if (notGradedHere > 0)
+        std::snprintf(text, sizeof text, "%g/%g (+%g speed: graded by the instructor)", score,
+                      maxScore, notGradedHere);
+    else
+        std::snprintf(text, sizeof text, "%g/%g", score, maxScore);
+    return text;
+}
 
 std::string checkText(const CheckResult& c) {
     std::string text = c.summary;
@@ -79,19 +96,17 @@ std::string readBytes(const std::string& path) {
 } // namespace
 
 std::vector<LabRatio> labRatios(const GradeReport& report) {
-    auto rate = [&](Lab lab, bool student) {
-        for (const LabGrade& l : report.labs)
-            if (l.lab == lab) return student ? l.studentSamplesPerSecond : l.solutionSamplesPerSecond;
-        return 0.0;
-    };
+    const LabGrade* branching = nullptr;
+    for (const LabGrade& l : report.labs)
+        if (l.lab == Lab::Branching) branching = &l;
     std::vector<LabRatio> ratios;
-    const std::pair<Lab, Lab> pairs[] = {{Lab::Uniform, Lab::Branching},
-                                         {Lab::Importance, Lab::Uniform},
-                                         {Lab::Roulette, Lab::Importance}};
-    for (auto [a, b] : pairs) {
-        if (rate(a, true) > 0 && rate(b, true) > 0)
-            ratios.push_back({std::string(labName(a)) + "/" + std::string(labName(b)),
-                              rate(a, true) / rate(b, true), rate(a, false) / rate(b, false)});
+    if (!branching || !(branching->studentSamplesPerSecond > 0)) return ratios;
+    for (const LabGrade& l : report.labs) {
+        if (l.lab == Lab::Branching || !(l.studentSamplesPerSecond > 0)) continue;
+        const bool referenceKnown = l.solutionSamplesPerSecond > 0 && branching->solutionSamplesPerSecond > 0;
+        ratios.push_back({std::string(labName(l.lab)) + "/branching",
+                          l.studentSamplesPerSecond / branching->studentSamplesPerSecond,
+                          referenceKnown ? l.solutionSamplesPerSecond / branching->solutionSamplesPerSecond : 0});
     }
     return ratios;
 }
@@ -107,28 +122,39 @@ std::string terminalReport(const GradeReport& report, bool colour) {
     for (const LabGrade& lab : report.labs) {
         out << std::string(labName(lab.lab)) << std::string(12 - labName(lab.lab).size(), ' ');
         for (const CheckResult& c : lab.checks) {
-            std::snprintf(line, sizeof line, "%s %g/%g", c.passed ? "pass" : "FAIL", c.score, c.maxScore);
+            if (c.gradedHere)
+                std::snprintf(line, sizeof line, "%s %g/%g", c.passed ? "pass" : "FAIL", c.score, c.maxScore);
+            else
+                std::snprintf(line, sizeof line, "(+%g)", c.maxScore);
             std::string cell = line;
             cell.resize(std::max<size_t>(cell.size() + 1, 13), ' ');
-            out << (c.passed ? green : red) << cell << reset;
+            out << (!c.gradedHere ? "" : c.passed ? green : red) << cell << reset;
         }
-        std::snprintf(line, sizeof line, "%g/%g\n", lab.score(), lab.maxScore());
-        out << line;
+        out << scoreText(lab.score(), lab.maxScore(), lab.pointsNotGradedHere()) << "\n";
     }
-    std::snprintf(line, sizeof line, "total %g/%g in %.0f s\n", report.score(), report.maxScore(), report.seconds);
+    out << "total " << scoreText(report.score(), report.maxScore(), report.pointsNotGradedHere());
+    std::snprintf(line, sizeof line, " in %.0f s\n", report.seconds);
     out << line;
     for (const LabGrade& lab : report.labs)
         for (const CheckResult& c : lab.checks)
-            out << "\n" << labName(lab.lab) << " " << c.name << ": " << (c.passed ? "" : red)
-                << checkText(c) << reset;
+            out << "\n" << labName(lab.lab) << " " << c.name << ": "
+                << (c.passed || !c.gradedHere ? "" : red) << checkText(c) << reset;
     out << "\n";
     const auto ratios = labRatios(report);
     if (!ratios.empty()) {
-        out << "\nspeed ratios (samples/s)      yours   reference\n";
+        out << "\nspeed ratios between labs: samples/s in the grader's timed runs ÷ branching's\n"
+            << "                              yours   reference\n";
         for (const LabRatio& r : ratios) {
-            std::snprintf(line, sizeof line, "  %-26s %6.2f   %6.2f\n", r.name.c_str(), r.student, r.reference);
+            std::snprintf(line, sizeof line, "  %-26s %6.2f   ", r.name.c_str(), r.student);
+            out << line;
+            if (r.reference > 0) std::snprintf(line, sizeof line, "%6.2f\n", r.reference);
+            else std::snprintf(line, sizeof line, "%6s\n", "-");
             out << line;
         }
+        out << "  reference: " << (report.ratiosReference.empty()
+                                       ? "the reference solutions, timed now beside your labs"
+                                       : report.ratiosReference)
+            << "\n  (compare the ratios, not the samples/s: those depend on the machine)\n";
     }
     for (const std::string& note : report.notes) out << "note: " << note << "\n";
     return out.str();
@@ -140,7 +166,8 @@ std::string jsonReport(const GradeReport& report) {
         nlohmann::json checks = nlohmann::json::array();
         for (const CheckResult& c : lab.checks)
             checks.push_back({{"name", c.name}, {"score", c.score}, {"max_score", c.maxScore},
-                              {"passed", c.passed}, {"summary", c.summary}, {"details", c.details}});
+                              {"passed", c.passed}, {"graded_here", c.gradedHere},
+                              {"summary", c.summary}, {"details", c.details}});
         labs.push_back({{"lab", labName(lab.lab)}, {"score", lab.score()}, {"max_score", lab.maxScore()},
                         {"checks", checks},
                         {"samples_per_second", {{"student", lab.studentSamplesPerSecond},
@@ -150,7 +177,9 @@ std::string jsonReport(const GradeReport& report) {
     for (const LabRatio& r : labRatios(report))
         ratios[r.name] = {{"student", r.student}, {"reference", r.reference}};
     const nlohmann::json j = {{"kit_version", PATHLAB_VERSION}, {"score", report.score()},
-                              {"max_score", report.maxScore()}, {"seconds", report.seconds},
+                              {"max_score", report.maxScore()},
+                              {"points_not_graded_here", report.pointsNotGradedHere()},
+                              {"seconds", report.seconds},
                               {"labs", labs}, {"speed_ratios", ratios}, {"notes", report.notes}};
     return j.dump(2) + "\n";
 }
@@ -158,7 +187,7 @@ std::string jsonReport(const GradeReport& report) {
 std::string junitReport(const GradeReport& report) {
     int tests = 0, failures = 0;
     for (const LabGrade& lab : report.labs)
-        for (const CheckResult& c : lab.checks) ++tests, failures += !c.passed;
+        for (const CheckResult& c : lab.checks) ++tests, failures += c.gradedHere && !c.passed;
     std::ostringstream out;
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
         << "<testsuites tests=\"" << tests << "\" failures=\"" << failures << "\" time=\"" << report.seconds << "\">\n"
@@ -166,7 +195,9 @@ std::string junitReport(const GradeReport& report) {
     for (const LabGrade& lab : report.labs) {
         for (const CheckResult& c : lab.checks) {
             out << "    <testcase classname=\"" << labName(lab.lab) << "\" name=\"" << escapeXml(c.name) << "\">\n";
-            if (!c.passed)
+            if (!c.gradedHere)
+                out << "      <skipped message=\"" << escapeXml(c.summary) << "\"/>\n";
+            else if (!c.passed)
                 out << "      <failure message=\"" << escapeXml(c.summary) << "\">" << escapeXml(checkText(c)) << "</failure>\n";
             else
                 out << "      <system-out>" << escapeXml(checkText(c)) << "</system-out>\n";
@@ -181,12 +212,13 @@ std::string gradescopeReport(const GradeReport& report) {
     nlohmann::json tests = nlohmann::json::array();
     for (const LabGrade& lab : report.labs)
         for (const CheckResult& c : lab.checks)
-            tests.push_back({{"name", std::string(labName(lab.lab)) + ": " + c.name},
-                             {"score", c.score},
-                             {"max_score", c.maxScore},
-                             {"status", c.passed ? "passed" : "failed"},
-                             {"output", checkText(c)},
-                             {"visibility", "visible"}});
+            if (c.gradedHere)
+                tests.push_back({{"name", std::string(labName(lab.lab)) + ": " + c.name},
+                                 {"score", c.score},
+                                 {"max_score", c.maxScore},
+                                 {"status", c.passed ? "passed" : "failed"},
+                                 {"output", checkText(c)},
+                                 {"visibility", "visible"}});
     const nlohmann::json j = {{"score", report.score()},
                               {"execution_time", static_cast<int>(report.seconds + 0.5)},
                               {"output", terminalReport(report, false)},
@@ -218,12 +250,15 @@ void writeHtmlReport(const GradeReport& report, const std::string& folder) {
     html << "<!doctype html><html><head><meta charset=\"utf-8\"><title>PathLab grade</title><style>"
             "body{font-family:sans-serif;max-width:1100px;margin:auto}td,th{padding:4px 10px;text-align:left}"
             ".pass{color:#080}.fail{color:#b00}pre{background:#f4f4f4;padding:8px;white-space:pre-wrap}"
-            "</style></head><body>\n<h1>PathLab grade: " << report.score() << " / " << report.maxScore() << "</h1>\n"
+            "</style></head><body>\n<h1>PathLab grade: "
+         << escapeXml(scoreText(report.score(), report.maxScore(), report.pointsNotGradedHere())) << "</h1>\n"
          << "<table><tr><th>lab</th><th>check</th><th>score</th><th>result</th></tr>\n";
     for (const LabGrade& lab : report.labs)
         for (const CheckResult& c : lab.checks)
             html << "<tr><td>" << labName(lab.lab) << "</td><td>" << c.name << "</td><td>" << c.score << " / "
-                 << c.maxScore << "</td><td class=\"" << (c.passed ? "pass\">pass" : "fail\">FAIL") << "</td></tr>\n";
+                 << c.maxScore << "</td><td class=\""
+                 << (!c.gradedHere ? "\">graded by the instructor" : c.passed ? "pass\">pass" : "fail\">FAIL")
+                 << "</td></tr>\n";
     html << "</table>\n";
     for (const LabGrade& lab : report.labs) {
         html << "<h2>" << labName(lab.lab) << "</h2>\n";

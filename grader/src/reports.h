@@ -2,7 +2,9 @@
 /// The grader's verdict in the formats people and platforms read.
 
 #include "grading.h"
+#include "lab_figures.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,9 +14,13 @@ struct GradeReport {
     std::vector<LabGrade> labs;
     double seconds = 0;
     std::vector<std::string> notes; ///< e.g. references measured on the fly
+    /// Where the reference's side of the speed ratios comes from, when not from timing the
+    /// solutions beside the student's labs now: "the reference solutions on <machine>".
+    std::string ratiosReference;
 
     double score() const;
-    double maxScore() const;
+    double maxScore() const;       ///< of the checks graded here
+    double pointsNotGradedHere() const;
 };
 
 /// `text` with & < > " escaped, for XML and HTML.
@@ -27,15 +33,17 @@ std::string junitReport(const GradeReport& report);
 /// Gradescope's results.json: score, execution_time, output, tests[] (name, score, max_score,
 /// status, output, visibility).
 std::string gradescopeReport(const GradeReport& report);
-/// A Markdown lab report for a student to hand in: per lab, samples/s, frame rate and noise,
-/// theirs beside the reference's, and the speed ratios between labs.
-std::string labReport(const GradeReport& report, int speedWidth, int speedHeight,
-                      const std::string& noiseScene);
+/// A Markdown lab report for a student to hand in: the notebook's figures (frame rate, noise,
+/// efficiency) of each lab beside the reference solutions' stored ones, the ratios between labs,
+/// and the grader's verdicts.
+std::string labReport(const GradeReport& report, const Rubric& rubric, const LabFigures& yours,
+                      const std::optional<LabFigures>& reference);
 /// Writes DIR/index.html, one self-contained page (images embedded).
 void writeHtmlReport(const GradeReport& report, const std::string& folder);
 
-/// The speed ratios between labs the handouts ask for (uniform/branching, ...), from the
-/// labs graded: {name, student ratio, reference ratio}.
+/// The speed ratios between labs the notebook asks for (each lab's samples/s ÷ branching's), from
+/// the grader's timed runs of the labs graded: {name, student ratio, reference ratio (0 when
+/// unknown)}.
 struct LabRatio {
     std::string name;
     double student, reference;

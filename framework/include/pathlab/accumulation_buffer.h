@@ -37,13 +37,14 @@ public:
     Color mean(int pixel) const;
     /// The sample variance of the pixel's samples (unbiased, per channel).
     Color variance(int pixel) const;
-    /// The whole image's mean radiance per channel.
-    Color meanRadiance() const;
-    /// Pixels with at least one NaN or infinite sample.
-    int nonfinitePixels() const;
-    /// The mean over pixels of the relative standard error of the pixel means (per channel
-    /// average), a single noise figure: halves when the samples per pixel are quadrupled.
-    float meanRelativeStandardError() const;
+    /// The figures of the whole image so far, from one pass over its pixels.
+    struct Summary {
+        Color meanRadiance;    ///< per channel, over the pixels
+        Color meanVariance;    ///< the per-sample variance, per channel, averaged over the pixels
+        int nonfinitePixels;   ///< pixels with at least one NaN or infinite sample
+        double noise;          ///< imageNoise (pathlab/image_noise.h)
+    };
+    Summary summary() const;
 
     /// The image as linear RGB floats, row-major from the top-left corner.
     std::vector<float> meanImage() const;

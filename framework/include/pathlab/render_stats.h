@@ -21,14 +21,28 @@ struct RenderStats {
     Color meanRadiance;
     Color meanVariance;            ///< per-sample variance averaged over pixels, per channel
     int nonfinitePixels = 0;
+    double noise = 0;              ///< imageNoise of the image (pathlab/image_noise.h)
+    /// Frames per second of the window at this size, one sample per pixel per frame: the panel's
+    /// median when the window measured it, samples/s ÷ (width × height) for a headless render.
+    double framesPerSecond = 0;
+    std::string framesPerSecondSource; ///< which of the two, in words
 
     double samplesPerSecond() const;
     double raysPerSecond() const;
+    double efficiency() const;     ///< renderEfficiency(noise, seconds)
 };
 
-/// Writes `stats` as one JSON object with the fields DESIGN.md lists (plus max_depth,
-/// continue_prob, threads and mean_variance). Atomic, like images.
+/// The frame rate of a headless render: samples/s ÷ (width × height), what the window would show
+/// at that size with one sample per pixel per frame.
+void setHeadlessFrameRate(RenderStats& stats);
+
+/// Writes `stats` as one JSON object: the fields the README lists under "--stats". Atomic, like
+/// images.
 void writeRenderStats(const std::string& path, const RenderStats& stats);
+
+/// Reads what writeRenderStats wrote. Throws InputError naming the file and the field that is
+/// missing or of the wrong type.
+RenderStats readRenderStats(const std::string& path);
 
 /// Writes `text` to `path` through a temporary file in the same folder and a rename.
 void writeFileAtomically(const std::string& path, const std::string& text);

@@ -1,6 +1,10 @@
 #pragma once
-/// The noise check's figure: how noisy one sample of a lab is, measured from the images of
-/// independent seeds alone, robustly.
+/// The noise check's statistic: how noisy one sample of a lab is, measured from the images of
+/// independent seeds alone, robustly. It is not the noise figure students read off the panel
+/// (pathlab/image_noise.h). The grader takes nothing from a lab's process but its images, never
+/// the figures it reports about itself, so it measures the variance from the spread of
+/// independent seeds' images; and it decides a verdict between two labs, which one rare firefly
+/// must not decide.
 
 #include <vector>
 
@@ -18,6 +22,6 @@ constexpr double NoiseTrimmedShare = 0.01;
 /// firefly in one pixel: a correct lab failed the check that way once in about 70 gradings. A
 /// bug that makes a lab noisier (a uniform pick where an importance pick belongs) raises the
 /// variance of most pixels, and the trimmed mean sees it as clearly as the plain one.
-double noiseFigure(const std::vector<std::vector<float>>& images, int spp);
+double trimmedSampleVariance(const std::vector<std::vector<float>>& images, int spp);
 
 } // namespace pathlab::grader

@@ -1,10 +1,10 @@
-#include "noise_figure.h"
+#include "seed_variance.h"
 
 #include <algorithm>
 
 namespace pathlab::grader {
 
-double noiseFigure(const std::vector<std::vector<float>>& images, int spp) {
+double trimmedSampleVariance(const std::vector<std::vector<float>>& images, int spp) {
     if (images.size() < 2 || images.front().empty()) return 0;
     const size_t values = images.front().size(), pixels = values / 3;
     const double k = static_cast<double>(images.size());
