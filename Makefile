@@ -19,8 +19,11 @@ build: deps
 	@cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DPATHLAB_NATIVE=$(NATIVE) > /dev/null
 	@cmake --build $(BUILD) -j $(JOBS)
 
+# The Cornell box, in a window where there is a display, otherwise headless into an image file:
+# the reference solution of lab 3 in the kit; your labs/ (lab 1, or LAB=uniform and so on) in
+# the student release.
 run: build
-	@scripts/run-default-scene.sh $(BUILD)
+	@scripts/run-default-scene.sh $(BUILD) $(LAB)
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE '$(TEST_EXCLUDED)'
@@ -29,18 +32,33 @@ test: build
 test-labs: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L labs
 
-# The long validations (ctest label `slow`): mutants that need the frame-rate check, and 200
-# gradings of correct labs to measure the grader's false-fail rate.
-test-slow: build
-	cd $(BUILD) && ctest --output-on-failure -L slow
-
 # Grade the labs in labs/ (all four; LAB=uniform for one).
 grade: build
 	cd $(BUILD) && ./grader $(if $(LAB),--lab $(LAB))
 
-# Grade them and write lab-report.md: your frame rates, ratios and noise beside the reference's.
+# Grade them and write lab-report.md: your notebook's figures (frame rate, noise, efficiency) and
+# the ratios between labs, beside the reference solutions'.
 report: build
 	cd $(BUILD) && ./grader --report $(CURDIR)/lab-report.md
+
+# Only the HTML pages (self-contained, in $(BUILD)/handouts/), from the figures as they are.
+handouts-html:
+	python3 handouts/tools/make_html.py --out $(BUILD)/handouts
+
+clean:
+	rm -rf $(BUILD)
+
+# The targets below need the reference solutions: the student release, which has none, says so.
+ifeq ($(wildcard solutions/),)
+test-slow bench handouts student-release gradescope:
+	@echo "make $@: needs the reference solutions (solutions/), which the student release does not have" >&2
+	@exit 2
+else
+
+# The long validations (ctest label `slow`): mutants that need the frame-rate check, and 200
+# gradings of correct labs to measure the grader's false-fail rate.
+test-slow: build
+	cd $(BUILD) && ctest --output-on-failure -L slow
 
 # PathLab's speed beside Embree's raw ray traversal and Embree's own pathtracer: one table per
 # scene (apps/bench; `./bench --help`). BENCH_ARGS="--json bench.json" keeps the figures as JSON.
@@ -55,19 +73,14 @@ handouts: build
 	python3 handouts/tools/make_figures.py --build $(BUILD)
 	python3 handouts/tools/make_html.py --out $(BUILD)/handouts
 
-# Only the HTML pages (self-contained, in $(BUILD)/handouts/), from the figures as they are.
-handouts-html:
-	python3 handouts/tools/make_html.py --out $(BUILD)/handouts
-
-# The student release, $(BUILD)/pathlab-student.tar.gz: the kit without solutions/, the tests
-# built on them, the instructor's hidden scenes or history (README: Student release).
+# The student release, $(BUILD)/pathlab-student.tar.gz: the kit without solutions/, the tests and
+# tools built on them, the instructor's hidden scenes and documents or history, with
+# README-student.md as its README (docs/instructor-guide.md: The student release).
 student-release:
 	@python3 scripts/package_kit.py student-release $(BUILD)/pathlab-student.tar.gz
 
 # The Gradescope autograder, $(BUILD)/autograder.zip: the whole kit, with setup.sh and
-# run_autograder from scripts/gradescope/ (README: Gradescope).
+# run_autograder from scripts/gradescope/ (docs/instructor-guide.md: Gradescope).
 gradescope:
 	@python3 scripts/package_kit.py gradescope $(BUILD)/autograder.zip
-
-clean:
-	rm -rf $(BUILD)
+endif

@@ -2,14 +2,15 @@
 """The kit's two packages, made from this folder's files as they are.
 
 Usage:
-  package_kit.py student-release OUT.tar.gz   the student release (README: Student release)
-  package_kit.py gradescope OUT.zip           the Gradescope autograder (README: Gradescope)
+  package_kit.py student-release OUT.tar.gz   the student release (docs/instructor-guide.md: The student release)
+  package_kit.py gradescope OUT.zip           the Gradescope autograder (docs/instructor-guide.md: Gradescope)
 
 The kit's files are those git tracks, as they are in the working tree (so a stray file of the
 instructor's never ships); in a kit without git, every file but the build folders. The student
-release is a plain copy of them minus STUDENT_EXCLUDED, under one top folder `pathlab/`, with no
-history. The autograder holds every file, solutions included, with scripts/gradescope/setup.sh and
-run_autograder at the root, as Gradescope wants.
+release is a copy of them minus STUDENT_EXCLUDED, under one top folder `pathlab/`, with no
+history, and with README-student.md as its README.md. The autograder holds every file,
+solutions included, with scripts/gradescope/setup.sh and run_autograder at the root, as
+Gradescope wants.
 """
 import os
 import subprocess
@@ -20,7 +21,9 @@ import zipfile
 KIT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 # What the student release leaves out: everything that holds solution code (mutants and hostile
-# labs are solutions with one change), the tests that need it, and the instructor's hidden scenes.
+# labs are solutions with one change), the tests and tools that need it (they run only where
+# solutions/ is), the instructor's hidden scenes, and what only instructors and maintainers use:
+# their documents, the cluster and Gradescope scripts, the packaging itself.
 STUDENT_EXCLUDED = (
     "solutions/",
     "tests/grader/mutants/",
@@ -30,9 +33,25 @@ STUDENT_EXCLUDED = (
     "tests/grader/batch_test.py",
     "tests/release/",
     "tests/gradescope/",
+    "tests/bench/",
+    "tests/viewer/",
     "grader/hidden_scenes/",
+    "grader/slurm/",
+    "apps/bench/",
+    "docs/",
+    "handouts/tools/make_figures.py",
+    "handouts/tools/viewer_runs.py",
+    "handouts/tools/pfm.py",
+    "handouts/tools/convergence.gp",
+    "handouts/tools/roulette_sweep.gp",
+    "scripts/gradescope/",
+    "scripts/package_kit.py",
+    "README.md",
 )
+# The students' README, which the release holds as README.md in place of the kit's.
+STUDENT_README = "README-student.md"
 RELEASE_FOLDER = "pathlab"
+README_NAME = "README.md"
 
 
 def kit_files(root=KIT):
@@ -57,7 +76,10 @@ def kit_files(root=KIT):
 
 
 def student_files(root=KIT):
-    return [f for f in kit_files(root) if not f.startswith(STUDENT_EXCLUDED)]
+    """{name in the release: file in the kit}, sorted by name."""
+    files = {(README_NAME if f == STUDENT_README else f): f
+             for f in kit_files(root) if not f.startswith(STUDENT_EXCLUDED)}
+    return dict(sorted(files.items()))
 
 
 def write_atomically(path, write):
@@ -85,8 +107,8 @@ def student_release(out, root=KIT):
 
     def write(path):
         with tarfile.open(path, "w:gz") as tar:
-            for f in files:
-                tar.add(os.path.join(root, f), arcname=f"{RELEASE_FOLDER}/{f}", recursive=False,
+            for name, f in files.items():
+                tar.add(os.path.join(root, f), arcname=f"{RELEASE_FOLDER}/{name}", recursive=False,
                         filter=normalised)
 
     write_atomically(out, write)

@@ -1,15 +1,67 @@
 #!/usr/bin/env bash
-# `make run`: the VI2 Cornell box in the window when there is a display, otherwise rendered
-# headless to an image whose path is printed.
-set -euo pipefail
+# `make run [LAB=NAME]`: the VI2 Cornell box in the window where there is a display, otherwise
+# rendered headless to an image whose path is printed. The student release, which has no
+# solutions, renders the student's own labs/ (lab 1 unless LAB names another) and says which
+# steps of that lab are still to write; the instructor's kit renders the reference solution of
+# lab 3 (or of LAB).
+set -uo pipefail
 build=${1:-build}
-cd "$build"
+lab=${2:-}
+kit=$(cd "$(dirname "$0")/.." && pwd)
 scene=models/cornell_box_VI2_Specular.ecs
-if [ -n "${DISPLAY:-}" ]; then
-    exec ./viewer -c "$scene"
+declare -A handout=([branching]=01-branching.md [uniform]=02-uniform-pick.md
+                    [importance]=03-importance-pick.md [roulette]=04-russian-roulette.md)
+
+if [ -d "$kit/solutions" ]; then
+    lab=${lab:-importance}
+    whose=(--solution)
+    what="the reference solution of $lab"
+    spp=256
+else
+    lab=${lab:-branching}
+    whose=()
+    what="your labs/$lab.cpp"
+    spp=64
 fi
-image=cornell_box_VI2_Specular.png
-echo "make run: no display (DISPLAY is not set), rendering headless with the reference solution"
-./viewer -c "$scene" --lab importance --solution --spp 256 -o "$image"
+if [ -z "${handout[$lab]:-}" ]; then
+    echo "make run: LAB=$lab is not a lab: branching, uniform, importance or roulette" >&2
+    exit 2
+fi
+
+# The steps of the student's lab still marked PATHLAB_TODO, in one line.
+if [ ${#whose[@]} -eq 0 ]; then
+    todo=$(grep -o 'PATHLAB_TODO("lab[0-9.]*")' "$kit/labs/$lab.cpp" | grep -o 'lab[0-9.]*' | tr '\n' ' ')
+    if [ -n "$todo" ]; then
+        echo "make run: labs/$lab.cpp has steps still to write: ${todo% } (handouts/${handout[$lab]});" \
+             "until you write them the image shows what the steps before them give (the stub: direct light only)"
+    else
+        echo "make run: labs/$lab.cpp has no PATHLAB_TODO left"
+    fi
+fi
+
+cd "$build" || exit 2
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+    echo "make run: opening the window on $what (h: help, q: quit)"
+    problems=$(mktemp)
+    # Its error output goes to the terminal as it comes, and to $problems for the test below.
+    { ./viewer -c "$scene" --lab "$lab" "${whose[@]}" 2>&1 1>&3 3>&- | tee "$problems" >&2
+      status=${PIPESTATUS[0]}; } 3>&1
+    # A display variable that leads nowhere (a stale ssh -X, say): render headless instead.
+    if [ $status -ne 2 ] || ! grep -q "^viewer: no display" "$problems"; then
+        rm -f "$problems"
+        exit $status
+    fi
+    rm -f "$problems"
+fi
+
+image=$lab.png
+echo "make run: no display, so rendering $what headless, $spp samples per pixel"
+problems=$(mktemp)
+./viewer -c "$scene" --lab "$lab" "${whose[@]}" --spp "$spp" -o "$image" 2> "$problems"
+status=$?
+# The TODO warnings are summed up above; anything else the viewer says is shown as it is.
+grep -v "TODO(lab[0-9.]*) is not done yet" "$problems" >&2
+rm -f "$problems"
+[ $status -eq 0 ] || exit $status
 echo "make run: the image is $(pwd)/$image"
-echo "make run: your own labs/ code: cd $build && ./viewer -c $scene --lab branching -o mine.png"
+echo "make run: another lab: make run LAB=uniform; the viewer's options: cd $build && ./viewer --help"

@@ -11,11 +11,16 @@ handouts/figures/ (each plot beside the .csv of its numbers):
 
   equal_time_LAB.png, equal_time.json   one image per estimator, all given the same render time
   direct_light_only.png                 what the stubs render: emission and direct light only
-  convergence.png, convergence.csv      RMSE against a high-spp reference versus render time
+  convergence.png, convergence.csv      relative RMSE against a high-spp reference versus render
+                                        time, beside each render's own noise figure
   estimators.csv                        samples/s, frame rate, noise and efficiency per estimator
   roulette_sweep.png, roulette_sweep.csv
-                                        samples/s, RMSE at equal time and efficiency 1/(MSE*time)
-                                        over continueProb
+                                        samples/s, relative RMSE at equal time and efficiency
+                                        1/(relative MSE * time) over continueProb
+
+Errors are relative, as the viewer's noise figure is (framework/include/pathlab/image_noise.h):
+an RMSE over the reference image's mean radiance. The noise figure estimates that same relative
+RMSE from a render's own samples, so the two columns of convergence.csv can be compared.
   references.json, run.json             the two references, and the machine and its load
 
 and rewrites the handouts' generated blocks (between "<!-- BEGIN generated: NAME -->" and
@@ -76,10 +81,10 @@ FULL = {
     "image_size": 512,           # the equal-time images
     "image_budget": 8.0,
     "window_size": 512,          # the frame-rate table: the window as a student sees it
-    "window_frames": 64,
+    "window_frames": [64, 256],  # the panel is read after these frames
 }
 QUICK = dict(FULL, study_size=32, reference_spp=64, budgets=[0.02, 0.05], sweep_budget=0.05,
-             sweep_seeds=1, image_size=48, image_budget=0.05, window_size=64, window_frames=4)
+             sweep_seeds=1, image_size=48, image_budget=0.05, window_size=64, window_frames=[4, 16])
 
 REFERENCE_Q = 0.8        # continueProb of the unbiased reference: finite variance on this scene
 REFERENCE_SEEDS = {"depth_limited": 900001, "unbiased": 900002}
@@ -99,6 +104,7 @@ def make_references(viewer, p):
                               REFERENCE_SEEDS[kind], continue_prob=q)
         stats["pixels"] = read_pfm(stats["image"])
         stats["variance_of_mean"] = mean3(stats["mean_variance"]) / stats["spp"]
+        stats["brightness"] = mean3(stats["mean_radiance"])  # what errors are relative to
         references[kind] = stats
         print(f"reference {kind}: {lab} {stats['spp']} spp, {stats['seconds']:.1f} s", flush=True)
     return references
@@ -109,6 +115,11 @@ def error_against(stats, reference):
     renders E[(X - R)^2] = E[(X - mu)^2] + Var(R), so this estimates the image's MSE alone."""
     raw = mean_squared_error(read_pfm(stats["image"]), reference["pixels"])
     return max(raw - reference["variance_of_mean"], 1e-12), raw
+
+
+def relative(mse, reference):
+    """An MSE relative to the reference image's brightness, squared: what noise² estimates."""
+    return mse / reference["brightness"] ** 2
 
 
 def spp_for(budget, samples_per_second, size):
@@ -126,16 +137,20 @@ def convergence_study(viewer, p, references):
             spp = spp_for(budget, throughput[e.key], p["study_size"])
             stats = viewer.render(f"convergence_{e.key}_{step}", e.lab, spp, p["study_size"],
                                   100 + 10 * index + step, continue_prob=e.continue_prob)
-            mse, raw = error_against(stats, references[e.reference])
+            reference = references[e.reference]
+            mse, raw = error_against(stats, reference)
             rows.append({"estimator": e.key, "label": e.label, "reference": e.reference,
                          "budget_seconds": budget, "spp": spp,
                          "seconds": round(stats["seconds"], 4),
                          "samples_per_second": round(stats["samples_per_second"]),
                          "rays_per_sample": round(rays_per_sample(stats), 3),
-                         "per_sample_variance": round(mean3(stats["mean_variance"]), 5),
+                         "noise": round(stats["noise"], 5),
+                         "noise_per_sample": round(stats["noise"] * math.sqrt(spp), 4),
+                         "relative_rmse": round(math.sqrt(relative(mse, reference)), 6),
                          "rmse": round(math.sqrt(mse), 6), "rmse_uncorrected": round(math.sqrt(raw), 6),
-                         "efficiency": round(1 / (mse * stats["seconds"]), 2)})
-            print(f"convergence {e.key} {budget} s: {spp} spp, RMSE {math.sqrt(mse):.4f}", flush=True)
+                         "efficiency": round(1 / (relative(mse, reference) * stats["seconds"]), 3)})
+            print(f"convergence {e.key} {budget} s: {spp} spp, relative RMSE "
+                  f"{rows[-1]['relative_rmse']:.4f}, noise {stats['noise']:.4f}", flush=True)
     # One estimator's rows together, in time order: the plot draws each as one line.
     order = {e.key: i for i, e in enumerate(ESTIMATORS)}
     return sorted(rows, key=lambda r: (order[r["estimator"]], r["budget_seconds"]))
@@ -159,17 +174,18 @@ def roulette_sweep(viewer, p, references):
             renders[q].append(viewer.render(f"sweep_{q:g}_{s}", "roulette", spp[q],
                                             p["study_size"], 200 + 10 * index + s, continue_prob=q))
     rows = []
+    reference = references["unbiased"]
     for q in sweep:
         runs = renders[q]
-        mse = mean3([error_against(r, references["unbiased"])[0] for r in runs])
+        mse = relative(mean3([error_against(r, reference)[0] for r in runs]), reference)
         seconds = mean3([r["seconds"] for r in runs])
         rows.append({"continue_prob": q, "spp": spp[q], "seconds": round(seconds, 4),
                      "samples_per_second": round(mean3([r["samples_per_second"] for r in runs])),
                      "rays_per_sample": round(mean3([rays_per_sample(r) for r in runs]), 3),
-                     "per_sample_variance": round(mean3([mean3(r["mean_variance"]) for r in runs]), 4),
-                     "rmse": round(math.sqrt(mse), 6),
-                     "efficiency": round(1 / (mse * seconds), 2)})
-        print(f"sweep continueProb {q}: {spp[q]} spp, RMSE {math.sqrt(mse):.4f}", flush=True)
+                     "noise_per_sample": round(mean3([r["noise"] * math.sqrt(spp[q]) for r in runs]), 4),
+                     "relative_rmse": round(math.sqrt(mse), 6),
+                     "efficiency": round(1 / (mse * seconds), 3)})
+        print(f"sweep continueProb {q}: {spp[q]} spp, relative RMSE {math.sqrt(mse):.4f}", flush=True)
     return rows
 
 
@@ -232,34 +248,39 @@ def gnuplot(script, figures, **variables):
 
 
 def depth_limit_bias(references):
-    """RMSE between the depth-limited and the unbiased image, without the references' noise:
-    the error labs 1-3 keep however long they run, if the unbiased image is the goal."""
+    """Relative RMSE between the depth-limited and the unbiased image, without the references'
+    noise: the error labs 1-3 keep however long they run, if the unbiased image is the goal."""
     raw = mean_squared_error(references["depth_limited"]["pixels"],
                              references["unbiased"]["pixels"])
     noise = sum(r["variance_of_mean"] for r in references.values())
-    return math.sqrt(max(raw - noise, 0.0))
+    return math.sqrt(relative(max(raw - noise, 0.0), references["unbiased"]))
 
 
 def slope_guide(convergence):
     """k for the plot's k/sqrt(t) line: half of lab 3's typical RMSE*sqrt(t), so the line runs
     parallel to, and below, the curves of unbiased estimators with finite variance."""
-    products = [r["rmse"] * math.sqrt(r["seconds"]) for r in convergence
+    products = [r["relative_rmse"] * math.sqrt(r["seconds"]) for r in convergence
                 if r["estimator"] == "importance"]
     return 0.5 * statistics.median(products)
 
 
-def estimator_rows(convergence, window):
+def estimator_rows(convergence, window, p):
+    """One row per estimator: speed from the convergence study's headless renders, and what the
+    window's panel showed after each of p["window_frames"] frames."""
+    early, late = p["window_frames"]
     rows = []
     for e in ESTIMATORS:
         mine = [r for r in convergence if r["estimator"] == e.key]
+        panel = window[e.key]
         rows.append({"estimator": e.key, "label": e.label,
                      "samples_per_second": round(statistics.median(r["samples_per_second"] for r in mine)),
                      "rays_per_sample": mine[-1]["rays_per_sample"],
-                     "frame_rate": round(window[e.key]["frame_rate"], 2),
-                     "noise": window[e.key]["noise"], "noise_spp": window[e.key]["spp"],
-                     "per_sample_variance": round(statistics.median(r["per_sample_variance"] for r in mine), 5),
-                     "rmse_longest": mine[-1]["rmse"], "seconds_longest": mine[-1]["seconds"],
-                     "efficiency": round(statistics.median(r["efficiency"] for r in mine), 1)})
+                     "frame_rate": round(panel[early]["frame_rate"], 2),
+                     "noise": panel[early]["noise"], "noise_spp": early,
+                     "noise_late": panel[late]["noise"], "noise_late_spp": late,
+                     "efficiency": panel[early]["efficiency"],
+                     "relative_rmse_longest": mine[-1]["relative_rmse"],
+                     "seconds_longest": mine[-1]["seconds"]})
     return rows
 
 
@@ -274,29 +295,33 @@ def fmt(x, digits=3):
 
 def estimators_block(rows, p, threads):
     best = max(rows, key=lambda r: r["efficiency"])
+    early, late = int(rows[0]["noise_spp"]), int(rows[0]["noise_late_spp"])
     lines = [
         f"| estimator | samples/s ({p['study_size']}², {threads} threads) | rays per sample "
-        f"| frame rate ({p['window_size']}² window) | noise after {p['window_frames']} frames "
-        f"| per-sample variance | RMSE of the longest render | efficiency 1/(MSE·s) |",
+        f"| frame rate ({p['window_size']}² window) | noise after {early} frames "
+        f"| noise after {late} frames | efficiency after {early} frames "
+        f"| relative RMSE of the longest render |",
         "|---|--:|--:|--:|--:|--:|--:|--:|"]
     for r in rows:
         lines.append(f"| {r['label']} | {fmt(r['samples_per_second'])} | {fmt(r['rays_per_sample'])} "
-                     f"| {r['frame_rate']:.1f} fps | {r['noise']:.3f} | {fmt(r['per_sample_variance'])} "
-                     f"| {fmt(r['rmse_longest'])} in {r['seconds_longest']:.1f} s | {fmt(r['efficiency'])} |")
+                     f"| {r['frame_rate']:.1f} fps | {r['noise']:.3f} | {r['noise_late']:.3f} "
+                     f"| {fmt(r['efficiency'])} "
+                     f"| {fmt(r['relative_rmse_longest'])} in {r['seconds_longest']:.1f} s |")
     lines.append("")
-    lines.append(f"Most efficient in this run: **{best['label']}**. Efficiency is the median over "
-                 "the convergence study's render times; labs 1–3 are measured against the "
-                 "depth-limited image, lab 4 against the unbiased one.")
+    lines.append(f"Most efficient in this run: **{best['label']}**. Frame rate, noise and "
+                 f"efficiency 1/(noise²·s) as the window's panel shows them at "
+                 f"{p['window_size']}×{p['window_size']}; labs 1–3 converge to the depth-limited "
+                 "image, lab 4 to the unbiased one.")
     return "\n".join(lines)
 
 
 def sweep_block(rows):
     best = max(rows, key=lambda r: r["efficiency"])
-    lines = ["| continueProb | samples/s | rays per sample | per-sample variance | spp | RMSE at equal time | efficiency 1/(MSE·s) |",
+    lines = ["| continueProb | samples/s | rays per sample | noise of one sample (noise × √spp) | spp | relative RMSE at equal time | efficiency 1/(relative MSE·s) |",
              "|--:|--:|--:|--:|--:|--:|--:|"]
     for r in rows:
         lines.append(f"| {r['continue_prob']:g} | {fmt(r['samples_per_second'])} | {fmt(r['rays_per_sample'])} "
-                     f"| {fmt(r['per_sample_variance'])} | {r['spp']:g} | {fmt(r['rmse'])} | {fmt(r['efficiency'])} |")
+                     f"| {fmt(r['noise_per_sample'])} | {r['spp']:g} | {fmt(r['relative_rmse'])} | {fmt(r['efficiency'])} |")
     lines.append("")
     lines.append(f"Most efficient continueProb in this run: **{best['continue_prob']:g}**.")
     return "\n".join(lines)
@@ -310,8 +335,8 @@ def equal_time_block(images, p, threads):
 
 
 def bias_block(bias):
-    return (f"The depth limit's bias, the RMSE between the depth-limited and the unbiased image, "
-            f"is {fmt(bias)} on this scene (the grey line in the plot).")
+    return (f"The depth limit's bias, the relative RMSE between the depth-limited and the unbiased "
+            f"image, is {fmt(bias)} on this scene (the grey line in the plot).")
 
 
 def read_csv(path):
@@ -334,7 +359,7 @@ def write_blocks(figures):
         images = json.load(f)
     with open(os.path.join(figures, "references.json")) as f:
         reference = json.load(f)["depth_limited"]
-    bias, threads, p = reference["depth_limit_bias_rmse"], reference["threads"], run["parameters"]
+    bias, threads, p = reference["depth_limit_bias_relative_rmse"], reference["threads"], run["parameters"]
     update_blocks({"estimators-table": estimators_block(read_csv(os.path.join(figures, "estimators.csv")), p, threads),
                    "sweep-table": sweep_block(read_csv(os.path.join(figures, "roulette_sweep.csv"))),
                    "equal-time": equal_time_block(images, p, threads),
@@ -417,10 +442,10 @@ def main():
     bias = depth_limit_bias(references)
     write_csv(os.path.join(figures, "convergence.csv"), convergence)
     write_csv(os.path.join(figures, "roulette_sweep.csv"), sweep)
-    write_csv(os.path.join(figures, "estimators.csv"), estimator_rows(convergence, window))
+    write_csv(os.path.join(figures, "estimators.csv"), estimator_rows(convergence, window, p))
     write_json(os.path.join(figures, "equal_time.json"), images)
     write_json(os.path.join(figures, "references.json"), {
-        kind: {k: v for k, v in r.items() if k not in ("pixels", "image")} | {"depth_limit_bias_rmse": bias}
+        kind: {k: v for k, v in r.items() if k not in ("pixels", "image")} | {"depth_limit_bias_relative_rmse": bias}
         for kind, r in references.items()})
     gnuplot("convergence.gp", figures, data="convergence.csv", out="convergence.png", bias=bias,
             guide=slope_guide(convergence))

@@ -1,4 +1,5 @@
-# The Russian-roulette sweep: samples/s, RMSE at equal time and efficiency over continueProb.
+# The Russian-roulette sweep: samples/s, relative RMSE at equal time and efficiency over
+# continueProb.
 # Variables (gnuplot -e): data (roulette_sweep.csv), out (PNG).
 set terminal pngcairo size 1500,480 font "sans,11"
 set output out
@@ -15,13 +16,13 @@ set yrange [0:*]
 plot data using 1:($4/1e6) skip 1 with linespoints pt 7 lw 2 lc rgb "#1b9e77"
 
 set title "error at equal time"
-set ylabel "RMSE"
+set ylabel "relative RMSE"
 set logscale y
 set yrange [*:*]
 plot data using 1:7 skip 1 with linespoints pt 7 lw 2 lc rgb "#d95f02"
 
 set title "efficiency (higher is better)"
-set ylabel "1 / (MSE x seconds)"
+set ylabel "1 / (relative MSE x seconds)"
 plot data using 1:8 skip 1 with linespoints pt 7 lw 2 lc rgb "#7570b3"
 
 unset multiplot

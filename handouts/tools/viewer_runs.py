@@ -2,7 +2,6 @@
 import json
 import os
 import re
-import statistics
 import subprocess
 import tempfile
 
@@ -66,24 +65,27 @@ def start_xvfb():
     return server, ":" + number.decode().strip()
 
 
-FRAME_LINE = re.compile(r"frame (\d+): ([\d.]+) fps, .* (\d+) spp, .* noise ([\d.]+)")
+FRAME_LINE = re.compile(r"frame (\d+): median ([\d.]+) fps .* (\d+) spp, .* noise ([\d.]+), "
+                        r"efficiency ([\d.e+-]+);")
 
 
 def window_measurement(viewer, display, lab, size, frames, continue_prob=None):
-    """What a student reads off the window's panel after FRAMES frames (one sample per pixel
-    each): the median frame rate of the last 31 frames, as the panel shows it, and the noise
-    figure (mean relative standard error of the pixel estimates)."""
+    """What a student reads off the window's panel (one sample per pixel per frame): after each
+    of FRAMES, {"frame_rate": the panel's median frame rate, "noise", "efficiency", "spp"}."""
     with tempfile.TemporaryDirectory() as tmp:
         run = subprocess.run(
             [viewer.executable, *viewer.estimator_options(lab, continue_prob), "--size",
-             str(size), str(size), "--print-frame-rate", "--frames", str(frames),
+             str(size), str(size), "--print-frame-rate", "--frames", str(max(frames)),
              "--screenshot", os.path.join(tmp, "window.exr")],
             env=dict(os.environ, DISPLAY=display), capture_output=True, text=True, check=True,
-            timeout=600)
-    lines = [FRAME_LINE.search(line) for line in run.stdout.splitlines()]
-    lines = [m for m in lines if m]
-    if len(lines) < frames:
-        raise RuntimeError(f"the window printed {len(lines)} frame lines, expected {frames}")
-    frame_rates = [float(m.group(2)) for m in lines[-31:]]
-    return {"frame_rate": statistics.median(frame_rates), "noise": float(lines[-1].group(4)),
-            "spp": int(lines[-1].group(3))}
+            timeout=1200)
+    panel = {}
+    for line in run.stdout.splitlines():
+        m = FRAME_LINE.search(line)
+        if m and int(m.group(1)) in frames:
+            panel[int(m.group(1))] = {"frame_rate": float(m.group(2)), "spp": int(m.group(3)),
+                                      "noise": float(m.group(4)), "efficiency": float(m.group(5))}
+    missing = sorted(set(frames) - set(panel))
+    if missing:
+        raise RuntimeError(f"the window printed no line for frames {missing}")
+    return panel

@@ -1,14 +1,18 @@
 #!/usr/bin/env python3
-"""The handouts: they render, link only to what exists, quote only commands that run, and
-explain every step of the lab stubs.
+"""The handouts and the students' README: they render, link only to what exists, quote only
+commands that run, and the handouts explain every step of the lab stubs.
 
 Usage: handouts_test.py --build BUILD --source SOURCE
+
+The students' README is README-student.md in the instructor's kit and README.md in the student
+release (which has no solutions/): this test runs in both, so what they claim is checked where
+students read it.
 
 Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
 - every handouts/*.md renders to HTML with pandoc (handouts/tools/make_html.py), without a
   warning, its formulas as MathML and its figures embedded;
-- every link and image of a handout names a file that exists, and every #anchor a heading of the
-  page it points to; every kit path quoted in `code` exists;
+- every link and image of a handout or the README names a file that exists, and every #anchor a
+  heading of the page it points to; every kit path quoted in `code` exists;
 - every generated block (make handouts) holds numbers;
 - every command quoted in a ```sh block, and every `./viewer`, `./grader`, `make` or `ctest`
   command quoted inline, runs: viewer renders at 16x16 pixels and 1 spp into a scratch folder,
@@ -40,7 +44,7 @@ FENCE = re.compile(r"^```(\w*)\n(.*?)^```", re.M | re.S)
 INLINE_CODE = re.compile(r"`([^`\n]+)`")
 LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)(?:\s+\"[^\"]*\")?\)")
 KIT_FOLDERS = ("labs/", "solutions/", "framework/", "models/", "handouts/", "grader/", "tests/",
-               "scripts/", "apps/")
+               "scripts/", "apps/", "docs/")
 
 
 def prose(markdown):
@@ -75,13 +79,13 @@ def check_rendering(source, handouts, pages):
 
 
 def anchors(pages, name):
-    path = os.path.join(pages, name[:-3] + ".html")
+    path = os.path.join(pages, os.path.basename(name)[:-3] + ".html")
     return set(re.findall(r"id=\"([^\"]+)\"", read(path))) if os.path.exists(path) else set()
 
 
-def check_links(source, handouts, pages):
-    folder = os.path.join(source, "handouts")
-    for path in handouts:
+def check_links(source, documents, pages):
+    for path in documents:
+        folder = os.path.dirname(path)
         name = os.path.basename(path)
         markdown = read(path)
         bad = []
@@ -125,7 +129,8 @@ class CommandRunner:
         if program == "cd":
             target = args[0] if args else ""
             self.cwd = self.build if target in ("build", "build/") else \
-                self.source if target == ".." and self.cwd == self.build else None
+                self.source if target == ".." and self.cwd == self.build else \
+                self.source if target == "pathlab" else None  # the release's folder
             return self.cwd is not None, f"cd {target}"
         if program == "make":
             return self.make(args)
@@ -137,6 +142,9 @@ class CommandRunner:
             return self.ctest(args)
         if program in ("python3", "python"):
             return self.python(args)
+        if program == "tar":
+            # How the student release is unpacked: tests/release/ checks the tarball's layout.
+            return args[:1] == ["xzf"] and args[1:] == ["pathlab-student.tar.gz"], "tar xzf"
         if program.startswith("scripts/"):
             path = os.path.join(self.source, program)
             return os.access(path, os.X_OK), f"{program} is executable"
@@ -211,8 +219,8 @@ class CommandRunner:
 INLINE_COMMAND = re.compile(r"^(\./viewer|\./grader|make|ctest) ")
 
 
-def check_commands(source, build, handouts, scratch):
-    for path in handouts:
+def check_commands(source, build, documents, scratch):
+    for path in documents:
         name = os.path.basename(path)
         markdown = read(path)
         runner = CommandRunner(source, build, scratch)
@@ -278,12 +286,16 @@ def main():
     source, build = os.path.abspath(args.source), os.path.abspath(args.build)
     handouts = sorted(glob.glob(os.path.join(source, "handouts", "*.md")))
     check(len(handouts) >= 6, f"handouts/ has its handouts ({len(handouts)} files)")
+    in_release = not os.path.isdir(os.path.join(source, "solutions"))
+    readme = os.path.join(source, "README.md" if in_release else "README-student.md")
+    check("make run" in read(readme) and "pathlab-student.tar.gz" in read(readme),
+          f"{os.path.relpath(readme, source)} is the students' README")
     with tempfile.TemporaryDirectory() as tmp:
         pages, scratch = os.path.join(tmp, "pages"), os.path.join(tmp, "scratch")
         os.makedirs(scratch)
         check_rendering(source, handouts, pages)
-        check_links(source, handouts, pages)
-        check_commands(source, build, handouts, scratch)
+        check_links(source, handouts + [readme], pages)
+        check_commands(source, build, handouts + [readme], scratch)
     check_todos(source, handouts)
     print(f"{len(failures)} failed" if failures else "all passed")
     return 1 if failures else 0

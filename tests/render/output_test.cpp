@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -35,7 +36,7 @@ TEST_CASE("EXR, PFM and HDR keep linear radiance; PNG is sRGB-encoded and clampe
     CHECK(files == 4); // no temporary files left behind
 }
 
-TEST_CASE("--stats writes the fields DESIGN.md lists", "[render][stats][solutions]") {
+TEST_CASE("--stats writes the fields the README lists", "[render][stats][solutions]") {
     const std::string dir = test::temporaryFolder("stats");
     const auto run = test::runViewer("-c " + test::modelPath("furnace.ecs") +
                                      " --size 16 8 --spp 2 --lab roulette --solution --seed 3"
@@ -60,6 +61,22 @@ TEST_CASE("--stats writes the fields DESIGN.md lists", "[render][stats][solution
     CHECK(stats["mean_radiance"].size() == 3);
     CHECK(stats["nonfinite_pixels"] == 0);
     CHECK(stats["continue_prob"].get<double>() == Approx(0.5));
+    // The figures a student writes down, each from the others as the README defines them.
+    const double variance = (stats["mean_variance"][0].get<double>() + stats["mean_variance"][1].get<double>() +
+                             stats["mean_variance"][2].get<double>()) / 3;
+    const double radiance = (stats["mean_radiance"][0].get<double>() + stats["mean_radiance"][1].get<double>() +
+                             stats["mean_radiance"][2].get<double>()) / 3;
+    CHECK(stats["noise"].get<double>() == Approx(std::sqrt(variance / 2) / radiance));
+    CHECK(stats["efficiency"].get<double>() ==
+          Approx(1 / (std::pow(stats["noise"].get<double>(), 2) * stats["seconds"].get<double>())));
+    CHECK(stats["frames_per_second"].get<double>() ==
+          Approx(stats["samples_per_second"].get<double>() / (16 * 8)));
+    CHECK(stats["frames_per_second_source"].get<std::string>().find("headless") != std::string::npos);
+    // And what the viewer writes, the grader's report reads back.
+    const RenderStats read = readRenderStats(dir + "/f.json");
+    CHECK(read.noise == Approx(stats["noise"].get<double>()));
+    CHECK(read.framesPerSecond == Approx(stats["frames_per_second"].get<double>()));
+    CHECK(read.rays.occluded == stats["rays"]["occluded"].get<uint64_t>());
     // The image on disk is the one the stats describe.
     const Image image = readImage(dir + "/f.exr");
     double sum = 0;
