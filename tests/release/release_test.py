@@ -5,8 +5,9 @@ Usage: release_test.py --source KIT [--keep]
 
 Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
 1. The tarball unpacks into one folder, pathlab/, with the framework, the stubs of labs/ as they
-   are, the models, the grader with its rubric and references, the handouts and scripts; and
-   without solutions/, .git, the grader's mutant and hostile labs or the tests built on them,
+   are, the models, the grader with its rubric and references, the handouts and scripts, and the
+   students' README (README-student.md) as its README.md; and without solutions/, .git, the
+   grader's mutant and hostile labs or the tests built on them, the instructors' documents,
    archives or compiled code, or any scene but the kit's public ones in models/ (no hidden ones).
 2. No solution code in any file: every line of solutions/*.cpp that is code (comments dropped),
    longer than 25 characters and not also a line of a stub (the stubs share the skeleton: the
@@ -14,14 +15,20 @@ Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
    normalised, in every text file of the release. The same search finds them in the kit's
    mutants (solutions with one bug), so it can fail.
 3. The packaging's exclusions, on a made-up kit without git: only its public files are taken.
-4. Unpacked, the release builds and tests itself as a student would. "It passes its own tests,
-   the stubs failing as expected" means: `make test` (install check, configure, build with the
-   tests, ctest without the labels `slow` and `labs`) succeeds and ran the framework's tests;
-   `make test-labs` (ctest -L labs: the furnace and agreement tests, run on the student's own
-   labs/) fails, each of estimators.lab1 to estimators.lab4 among the failures;
-   `make grade LAB=branching` fails the stub with the diagnosis "direct light only" and a note
-   that speed is not checked without the solutions; and once labs/branching.cpp is done (the
-   solution copied in), estimators.lab1 passes while the other labs' tests still fail.
+4. Unpacked, the release works as a student's first commands expect, without a display: `make
+   run` (install check, configure, the first build, then a headless render of the student's lab
+   1) exits 0, names the image it wrote, which exists, and lists lab 1's steps still to write.
+   "It passes its own tests, the stubs failing as expected" means: `make test` (ctest without
+   the labels `slow` and `labs`) succeeds and ran the framework's tests and the handouts' (which
+   check the students' README and handouts from the release); `make test-labs` (ctest -L labs:
+   the lab tests, run on the student's own labs/) fails, each of estimators.lab1 to
+   estimators.lab4 among the failures; `make grade LAB=branching` fails the stub with the
+   diagnosis "direct light only" and a note that speed is not checked without the solutions;
+   once labs/branching.cpp is done (the solution copied in), estimators.lab1 passes while the
+   other labs' tests still fail; and with all four labs done, `make grade` passes with the speed
+   points shown apart and prints the speed ratios between labs beside the reference's, and `make
+   report` writes lab-report.md with every figure filled in.
+5. The targets that need the solutions say so in one line and exit non-zero (`make bench`).
 """
 import argparse
 import glob
@@ -93,10 +100,11 @@ def text_files(root):
     return texts
 
 
-def run(command, cwd, log):
+def run(command, cwd, log, env=None):
     """Runs a command, its output to log; returns (exit status, output, seconds)."""
     # A make above this test (make test) must not hand its job server or level to this one.
-    env = {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
+    env = {k: v for k, v in (env or os.environ).items()
+           if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
     start = time.monotonic()
     result = subprocess.run(command, cwd=cwd, env=env, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, text=True, errors="replace")
@@ -129,10 +137,15 @@ def check_contents(root, files):
         with open(os.path.join(KIT, stub), "rb") as kit:
             with open(os.path.join(root, stub), "rb") as out:
                 check(kit.read() == out.read(), f"{stub} is the kit's stub, unchanged")
+    with open(os.path.join(KIT, "README-student.md"), "rb") as kit:
+        with open(os.path.join(root, "README.md"), "rb") as out:
+            check(kit.read() == out.read(), "README.md is the students' README (README-student.md)")
     for path in ("README.md", "Makefile", "CMakeLists.txt", "framework/include/pathlab/lab.h",
                  "apps/viewer/main.cpp", "grader/rubric.json", "scripts/install-deps.sh",
                  "handouts/01-branching.md", "models/cornell_box_VI2_Specular.ecs",
-                 "tests/support/test_support.cpp", "tests/estimators/furnace_test.cpp"):
+                 "tests/support/test_support.cpp", "tests/estimators/furnace_test.cpp",
+                 "tests/handouts/handouts_test.py", "handouts/tools/make_html.py",
+                 "grader/references/lab_figures.json", "scripts/run-default-scene.sh"):
         check(present(path), f"the release holds {path}")
     references = {os.path.relpath(p, KIT)
                   for p in glob.glob(os.path.join(KIT, "grader", "references", "*"))}
@@ -149,6 +162,8 @@ def check_contents(root, files):
             ("grader tests built on them",
              any_named(lambda f: f in ("tests/grader/grader_test.py",
                                        "tests/grader/batch_test.py"))),
+            ("instructors' or maintainers' documents, or the kit's README",
+             any_named(lambda f: f.startswith("docs/") or f == "README-student.md")),
             ("archives or compiled code",
              any_named(lambda f: f.endswith((".zip", ".tar", ".gz", ".tgz", ".o", ".a", ".so")))),
             ("scenes outside models/ (hidden ones)",
@@ -193,9 +208,31 @@ def check_exclusions(scratch):
                  "tests/sampling/random_test.cpp", "build/viewer", "build-release/viewer"):
         os.makedirs(os.path.dirname(os.path.join(fake, path)), exist_ok=True)
         open(os.path.join(fake, path), "w").close()
+    for path in ("README.md", "README-student.md", "docs/instructor-guide.md"):
+        with open(os.path.join(fake, path), "w") as f:
+            f.write(path)
     taken = package_kit.student_files(fake)
-    check(taken == ["labs/branching.cpp", "models/box.ecs", "tests/sampling/random_test.cpp"],
-          f"on a made-up kit without git, the release takes only the public files: {taken}")
+    check(taken == {"README.md": "README-student.md", "labs/branching.cpp": "labs/branching.cpp",
+                    "models/box.ecs": "models/box.ecs",
+                    "tests/sampling/random_test.cpp": "tests/sampling/random_test.cpp"},
+          f"on a made-up kit without git, the release takes only the public files, the "
+          f"students' README as its README: {taken}")
+
+
+def without_display():
+    return {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
+
+
+def check_first_run(root, logs):
+    status, output, seconds = run(["make", "run"], root, os.path.join(logs, "make-run.log"),
+                                  without_display())
+    image = re.search(r"make run: the image is (\S+)", output)
+    check(status == 0 and image and os.path.isfile(image.group(1)),
+          f"make run without a display exits 0 and writes the image it names, in {seconds:.0f} s "
+          f"with the first build" + ("" if status == 0 else ":\n" + tail(output)))
+    check("labs/branching.cpp has steps still to write: lab1.1 lab1.2 lab1.3 lab1.4 lab1.5" in output,
+          "make run lists lab 1's steps still to write")
+    check("is not done yet" not in output, "make run sums the TODO warnings up in that one line")
 
 
 def check_builds_and_tests(root, logs):
@@ -203,9 +240,9 @@ def check_builds_and_tests(root, logs):
     results = ctest_results(output)
     check(status == 0, "make test succeeds in the release" + ("" if status == 0 else
                                                               ":\n" + tail(output)))
-    framework = ("sampling", "scene", "render", "grader")
+    framework = ("sampling", "scene", "render", "grader", "handouts")
     check(all(results.get(t) == "Passed" for t in framework),
-          f"make test ran the framework's tests, which pass: {results}")
+          f"make test ran the framework's and the handouts' tests, which pass: {results}")
     check(not any(name.startswith("estimators") for name in results),
           "make test leaves the lab tests to make test-labs")
 
@@ -222,6 +259,10 @@ def check_builds_and_tests(root, logs):
           ("" if "direct light only" in output else ":\n" + tail(output)))
     check("speed is not checked" in output, "make grade says speed is not checked")
 
+    status, output, _ = run(["make", "bench"], root, os.path.join(logs, "make-bench.log"))
+    check(status != 0 and "needs the reference solutions" in output,
+          f"make bench says it needs the solutions: {output.strip()[-120:]!r}")
+
     # A student who finishes lab 1 (here: with its solution) passes lab 1's tests.
     shutil.copy(os.path.join(KIT, "solutions", "branching.cpp"), os.path.join(root, "labs"))
     status, output, _ = run(["make", "test-labs"], root,
@@ -230,6 +271,30 @@ def check_builds_and_tests(root, logs):
     check(results.get("estimators.lab1") == "Passed" and
           all(results.get(f"estimators.lab{n}") == "Failed" for n in range(2, 5)),
           f"with lab 1 done, its tests pass and the others still fail: {results}")
+
+
+def check_finished_labs(root, logs):
+    """All four labs done (the solutions copied in): the local grade and the lab report."""
+    for lab in LABS:
+        shutil.copy(os.path.join(KIT, "solutions", lab + ".cpp"), os.path.join(root, "labs"))
+    status, output, _ = run(["make", "grade"], root, os.path.join(logs, "make-grade-done.log"))
+    check(status == 0 and "total 32/32 (+8 speed: graded by the instructor)" in output,
+          "make grade passes the four labs and shows the speed points apart" +
+          ("" if status == 0 else ":\n" + tail(output)))
+    ratios = re.findall(r"^  (uniform|importance|roulette)/branching\s+(\d+\.\d+)\s+(\d+\.\d+)$",
+                        output, re.M)
+    check(len(ratios) == 3, f"make grade prints the speed ratios between labs, yours and the "
+                            f"reference's: {ratios}")
+    status, output, _ = run(["make", "report"], root, os.path.join(logs, "make-report.log"))
+    report_path = os.path.join(root, "lab-report.md")
+    report = open(report_path).read() if os.path.exists(report_path) else ""
+    check(status == 0 and report, "make report writes lab-report.md")
+    rows = [line for line in report.splitlines() if line.startswith("| ") and "---" not in line]
+    empty = [line for line in rows if re.search(r"\|\s*(–|-|not measured[^|]*)?\s*\|", line)]
+    check(len(rows) >= 5 + 5 + 4 and not empty,
+          f"every figure of lab-report.md is filled in ({len(rows)} table rows): {empty[:3]}")
+    check("grader/references/lab_figures.json" in report and "cores" in report,
+          "the report names the machine the reference's figures were measured on")
 
 
 def main():
@@ -263,7 +328,9 @@ def main():
         check_contents(root, files)
         check_no_solution_code(root)
         check_exclusions(scratch)
+        check_first_run(root, logs)
         check_builds_and_tests(root, logs)
+        check_finished_labs(root, logs)
     finally:
         if args.keep:
             print(f"kept {scratch}")
