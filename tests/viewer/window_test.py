@@ -7,6 +7,11 @@ the script exits non-zero if any failed.
 Statistical check: the screenshot's mean radiance against a headless render of the same scene,
 spp and seed, per channel, z-test at alpha = 1e-4 (|z| < 3.89) with the headless render's
 standard error. (The two are in fact bit-identical: the same sample streams.)
+
+The figures a student writes down are one measurement wherever they are read: after N frames the
+panel's noise and efficiency (--print-frame-rate prints the panel's figures), the window's --stats
+and a headless render of N spp give the same noise, and the frame rate printed is the median the
+panel shows, labelled as such.
 """
 import json
 import os
@@ -70,6 +75,43 @@ def screenshot_matches_headless(env, tmp):
         z = (window[c] - s["mean_radiance"][c]) / se
         check(abs(z) < 3.89, f"channel {c}: window {window[c]:.5f} vs headless "
                              f"{s['mean_radiance'][c]:.5f}, z = {z:.2f}")
+
+
+FRAME_LINE = re.compile(r"^frame (\d+): median ([\d.]+) fps \(([\d.]+) ms\) over the last (\d+) frames, "
+                        r"this frame ([\d.]+) fps; (\d+) spp, .* noise ([\d.]+), efficiency ")
+
+
+def panel_stats_and_headless_agree(env, tmp):
+    common = ["-c", SCENE, "--size", "96", "72", "--lab", "uniform", "--solution", "--seed", "8"]
+    window_stats = os.path.join(tmp, "window.json")
+    run = subprocess.run([VIEWER, *common, "--frames", "40", "--print-frame-rate", "--stats",
+                          window_stats, "--screenshot", os.path.join(tmp, "w.pfm")],
+                         env=env, capture_output=True, text=True, timeout=120)
+    lines = [FRAME_LINE.match(line) for line in run.stdout.splitlines()]
+    lines = [m for m in lines if m]
+    check(run.returncode == 0 and len(lines) == 40,
+          f"--print-frame-rate prints one labelled line per frame ({len(lines)} of 40)")
+    if not lines or not os.path.exists(window_stats):
+        return
+    last = lines[-1]
+    check(int(last.group(4)) == 31 and abs(1000 / float(last.group(2)) - float(last.group(3))) < 0.2,
+          f"the printed frame rate is the median of the last 31 frames: {last.group(0)}")
+    w = json.load(open(window_stats))
+    check(abs(w["frames_per_second"] - float(last.group(2))) < 0.01 and
+          "median" in w["frames_per_second_source"],
+          f"the window's --stats holds the panel's median frame rate, labelled: "
+          f"{w['frames_per_second']:.2f} ({w['frames_per_second_source']})")
+    headless_stats = os.path.join(tmp, "headless40.json")
+    subprocess.run([VIEWER, *common, "--spp", "40", "-o", os.path.join(tmp, "h.pfm"), "--stats",
+                    headless_stats], check=True, capture_output=True)
+    h = json.load(open(headless_stats))
+    panel = float(last.group(7))
+    check(abs(panel - w["noise"]) < 1e-4 and abs(w["noise"] - h["noise"]) < 1e-9,
+          f"after 40 frames the panel's noise {panel}, the window's --stats {w['noise']:.6f} and "
+          f"a headless render of 40 spp {h['noise']:.6f} agree")
+    check("samples_per_second / (width x height)" in h["frames_per_second_source"] and
+          abs(h["frames_per_second"] - h["samples_per_second"] / (96 * 72)) < 1e-6 * h["frames_per_second"],
+          "a headless render's frame rate is samples/s / pixels, labelled as such")
 
 
 class Viewer:
@@ -143,6 +185,7 @@ def main():
         env = dict(os.environ, DISPLAY=display)
         with tempfile.TemporaryDirectory() as tmp:
             screenshot_matches_headless(env, tmp)
+            panel_stats_and_headless_agree(env, tmp)
         keys_change_what_the_viewer_reports(env)
     finally:
         server.terminate()
