@@ -209,6 +209,7 @@ def check_exclusions(scratch):
         os.makedirs(os.path.dirname(os.path.join(fake, path)), exist_ok=True)
         open(os.path.join(fake, path), "w").close()
     for path in ("README.md", "README-student.md", "docs/instructor-guide.md"):
+        os.makedirs(os.path.dirname(os.path.join(fake, path)), exist_ok=True)
         with open(os.path.join(fake, path), "w") as f:
             f.write(path)
     taken = package_kit.student_files(fake)
