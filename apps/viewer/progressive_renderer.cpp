@@ -137,15 +137,13 @@ void ProgressiveRenderer::run() {
         Frame frame;
         frame.settings = settings;
         frame.number = frames;
-        frame.spp = buffers[0].samplesPerPixel();
         if (settings.split) frame.otherSpp = buffers[1].samplesPerPixel();
-        frame.threads = renderer.threads();
         frame.frameSeconds = elapsed.count();
         frame.medianFrameSeconds = frameRate.medianSeconds();
-        frame.renderSeconds = seconds[0];
         frame.raysPerSecond = static_cast<double>(traced.total()) / elapsed.count();
-        frame.rays = rays;
-        frame.summary = buffers[0].summary();
+        frame.stats = renderStats({"", settings.lab, settings.implementation, settings.parameters,
+                                   settings.seed},
+                                  buffers[0], renderer.threads(), seconds[0], rays);
         if (onFrame_) onFrame_(frame);
         std::lock_guard<std::mutex> lock(mutex_);
         if (generation == generation_) {

@@ -5,8 +5,8 @@
 #include "pathlab/camera.h"
 #include "pathlab/lab_parameters.h"
 #include "pathlab/lab_registry.h"
-#include "pathlab/ray_counters.h"
 #include "pathlab/render_scene.h"
+#include "pathlab/render_stats.h"
 
 #include <atomic>
 #include <condition_variable>
@@ -39,16 +39,15 @@ struct Frame {
     int number = 0;                  ///< frames finished since the last restart
     std::vector<float> image;        ///< mean radiance, linear RGB, top row first
     std::vector<float> otherImage;   ///< split view: the other implementation's image
-    int spp = 0, otherSpp = 0;
-    int threads = 0;                 ///< the renderer's worker threads
+    int otherSpp = 0;                ///< split view: the other implementation's spp
     double frameSeconds = 0;         ///< wall time of the last pass
     /// The median wall time of the last 31 passes since the restart (FrameRate): the frame rate
     /// the panel and --print-frame-rate show, steady enough to write down.
     double medianFrameSeconds = 0;
-    double renderSeconds = 0;        ///< wall time of all passes since the restart
     double raysPerSecond = 0;        ///< of the last pass
-    RayCounters rays;                ///< traced since the restart
-    AccumulationBuffer::Summary summary{}; ///< mean radiance, variance, noise of `image`
+    /// `image` as --stats describes a render: its spp, the seconds and rays of all its passes
+    /// since the restart, its noise (no scene name, no frame rate: the window knows those).
+    RenderStats stats;
 };
 
 class ProgressiveRenderer {

@@ -8,7 +8,6 @@
 #include "progressive_renderer.h"
 
 #include "pathlab/image_io.h"
-#include "pathlab/image_noise.h"
 #include "pathlab/input_error.h"
 #include "pathlab/render_scene.h"
 #include "pathlab/render_stats.h"
@@ -53,8 +52,7 @@ void printFrameLine(const Frame& frame) {
                 "continue-prob %.2f, size %dx%d, %s\n",
                 frame.number, perSecond(frame.medianFrameSeconds), 1000.0 * frame.medianFrameSeconds,
                 std::min<size_t>(frame.number, FrameRate::Window), perSecond(frame.frameSeconds),
-                frame.spp, frame.raysPerSecond, frame.summary.noise,
-                renderEfficiency(frame.summary.noise, frame.renderSeconds),
+                frame.stats.spp, frame.raysPerSecond, frame.stats.noise, frame.stats.efficiency(),
                 std::string(labName(s.lab)).c_str(),
                 std::string(implementationName(s.implementation)).c_str(), s.parameters.maxDepth,
                 s.parameters.continueProb, s.width, s.height, s.split ? "split" : "single");
@@ -64,24 +62,8 @@ void printFrameLine(const Frame& frame) {
 /// What --stats writes for the window: a headless render's fields, for the frames shown, with
 /// the panel's median frame rate.
 RenderStats frameStats(const Frame& frame, const RenderOptions& options) {
-    const ViewSettings& v = frame.settings;
-    RenderStats s;
+    RenderStats s = frame.stats;
     s.scene = options.sceneName;
-    s.lab = labName(v.lab);
-    s.impl = implementationName(v.implementation);
-    s.spp = frame.spp;
-    s.width = v.width;
-    s.height = v.height;
-    s.seed = v.seed;
-    s.maxDepth = v.parameters.maxDepth;
-    s.continueProb = v.parameters.continueProb;
-    s.threads = frame.threads;
-    s.seconds = frame.renderSeconds;
-    s.rays = frame.rays;
-    s.meanRadiance = frame.summary.meanRadiance;
-    s.meanVariance = frame.summary.meanVariance;
-    s.nonfinitePixels = frame.summary.nonfinitePixels;
-    s.noise = frame.summary.noise;
     s.framesPerSecond = perSecond(frame.medianFrameSeconds);
     s.framesPerSecondSource = "the window's median over the last " +
                               std::to_string(std::min<size_t>(frame.number, FrameRate::Window)) +
@@ -329,22 +311,22 @@ private:
         const ViewSettings& s = frame_.settings;
         ImGui::Text("%.2f fps  %.1f ms/frame (median)", perSecond(frame_.medianFrameSeconds),
                     1000.0 * frame_.medianFrameSeconds);
-        ImGui::Text("%d spp   %.3g rays/s", frame_.spp, frame_.raysPerSecond);
+        ImGui::Text("%d spp   %.3g rays/s", frame_.stats.spp, frame_.raysPerSecond);
         ImGui::Text("lab %s (%s)", std::string(labName(settings_.lab)).c_str(),
                     std::string(implementationName(settings_.implementation)).c_str());
         ImGui::Text("maxDepth %d   continueProb %.2f", settings_.parameters.maxDepth,
                     settings_.parameters.continueProb);
-        ImGui::Text("noise %.4f (relative std. error)  efficiency %.3g", frame_.summary.noise,
-                    renderEfficiency(frame_.summary.noise, frame_.renderSeconds));
+        ImGui::Text("noise %.4f (relative std. error)  efficiency %.3g", frame_.stats.noise,
+                    frame_.stats.efficiency());
         ImGui::Text("%dx%d  view: %s", s.width, s.height, viewModeName(mode_));
         if (mode_ == ViewMode::Split)
-            ImGui::Text("student %d spp | solution %d spp", frame_.spp, frame_.otherSpp);
+            ImGui::Text("student %d spp | solution %d spp", frame_.stats.spp, frame_.otherSpp);
         if (mode_ == ViewMode::Difference)
             ImGui::Text("|image - ref| / ref: black 0, blue .125, green .25, yellow .375, red .5+;"
                         " median %.3f", medianDifference_);
-        if (frame_.summary.nonfinitePixels > 0)
+        if (frame_.stats.nonfinitePixels > 0)
             ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "%d pixels got NaN/inf samples",
-                               frame_.summary.nonfinitePixels);
+                               frame_.stats.nonfinitePixels);
         ImGui::Text("h: help");
         ImGui::End();
         if (showHelp_) {
@@ -379,11 +361,11 @@ private:
         try {
             if (!requested.empty()) {
                 writeImage(requested, w, h, frame_.image);
-                std::printf("screenshot %s (%d spp)\n", requested.c_str(), frame_.spp);
+                std::printf("screenshot %s (%d spp)\n", requested.c_str(), frame_.stats.spp);
             } else {
                 const std::string base = "pathlab-" + std::string(labName(s.lab)) + "-" +
                                          std::string(implementationName(s.implementation)) + "-" +
-                                         std::to_string(frame_.spp) + "spp";
+                                         std::to_string(frame_.stats.spp) + "spp";
                 writeImage(base + ".exr", w, h, frame_.image);
                 writeImage(base + ".png", w, h, frame_.image);
                 std::printf("screenshot %s.exr and %s.png\n", base.c_str(), base.c_str());

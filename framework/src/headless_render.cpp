@@ -24,25 +24,10 @@ HeadlessResult renderHeadless(const RenderOptions& options, const RenderScene& s
                         options.parameters, options.seed, options.spp);
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
 
-    RenderStats& s = result.stats;
-    s.scene = options.sceneName;
-    s.lab = labName(options.lab);
-    s.impl = implementationName(options.implementation);
-    s.spp = options.spp;
-    s.width = options.width;
-    s.height = options.height;
-    s.seed = options.seed;
-    s.maxDepth = options.parameters.maxDepth;
-    s.continueProb = options.parameters.continueProb;
-    s.threads = renderer.threads();
-    s.seconds = elapsed.count();
-    s.rays = renderer.rayCounters();
-    const AccumulationBuffer::Summary summary = result.image.summary();
-    s.meanRadiance = summary.meanRadiance;
-    s.meanVariance = summary.meanVariance;
-    s.nonfinitePixels = summary.nonfinitePixels;
-    s.noise = summary.noise;
-    setHeadlessFrameRate(s);
+    result.stats = renderStats({options.sceneName, options.lab, options.implementation,
+                                options.parameters, options.seed},
+                               result.image, renderer.threads(), elapsed.count(), renderer.rayCounters());
+    setHeadlessFrameRate(result.stats);
     return result;
 }
 

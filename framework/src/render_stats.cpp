@@ -21,6 +21,29 @@ double RenderStats::raysPerSecond() const {
 
 double RenderStats::efficiency() const { return renderEfficiency(noise, seconds); }
 
+RenderStats renderStats(const RenderedWhat& what, const AccumulationBuffer& image, int threads,
+                        double seconds, const RayCounters& rays) {
+    RenderStats s;
+    s.scene = what.scene;
+    s.lab = labName(what.lab);
+    s.impl = implementationName(what.implementation);
+    s.spp = image.samplesPerPixel();
+    s.width = image.width();
+    s.height = image.height();
+    s.seed = what.seed;
+    s.maxDepth = what.parameters.maxDepth;
+    s.continueProb = what.parameters.continueProb;
+    s.threads = threads;
+    s.seconds = seconds;
+    s.rays = rays;
+    const AccumulationBuffer::Summary summary = image.summary();
+    s.meanRadiance = summary.meanRadiance;
+    s.meanVariance = summary.meanVariance;
+    s.nonfinitePixels = summary.nonfinitePixels;
+    s.noise = summary.noise;
+    return s;
+}
+
 void setHeadlessFrameRate(RenderStats& stats) {
     const double pixels = static_cast<double>(stats.width) * stats.height;
     stats.framesPerSecond = pixels > 0 ? stats.samplesPerSecond() / pixels : 0;

@@ -62,7 +62,7 @@ def solutions_pass(tmp):
         for lab in report["labs"]:
             for c in lab["checks"]:
                 check(c["passed"], f"solution {lab['lab']}: {c['name']} passes ({c['summary']})")
-        check(set(report["speed_ratios"]) == {"uniform/branching", "importance/uniform", "roulette/importance"},
+        check(set(report["speed_ratios"]) == {"uniform/branching", "importance/branching", "roulette/branching"},
               "the speed ratios between labs are reported")
     # Gradescope's results.json: the fields and types its specification asks for.
     g = json.load(open(out["gradescope.json"]))
@@ -76,13 +76,28 @@ def solutions_pass(tmp):
     suites = ET.parse(out["xml"]).getroot()
     check(suites.tag == "testsuites" and len(suites.findall(".//testcase")) == 12
           and not suites.findall(".//failure"), "the JUnit XML parses: 12 test cases, no failures")
-    # The lab report: a row per lab with its numbers, and the three ratios between labs.
-    rows = [line.split("|")[1:-1] for line in open(out["md"]) if line.startswith("| ")]
-    labs = [r for r in rows if r[0].strip() in ("branching", "uniform", "importance", "roulette")]
-    ratios = [r for r in rows if "/" in r[0]]
-    check(len(labs) == 4 and all(r[1].strip() == "yes" and float(r[4]) > 0.5 and "fps" in r[5]
-                                 and float(r[9]) < 1.5 for r in labs) and len(ratios) == 3,
-          "the lab report has each lab's samples/s, frame rate and noise, and the ratios between labs")
+    # The lab report: each notebook row's figures, yours and the reference's, the ratios between
+    # labs, and the checks; its noise is the figure a headless render of the same lab prints.
+    rows = [[cell.strip() for cell in line.split("|")[1:-1]] for line in open(out["md"])
+            if line.startswith("| ") and "---" not in line]
+    figures = [r for r in rows if len(r) == 8 and r[1] in ("yes", "**no**")]
+    check(len(figures) == 5 and all(r[1] == "yes" and "fps" in r[2] and "fps" in r[3]
+                                    and float(r[4]) > 0 and float(r[5]) > 0 for r in figures),
+          f"the lab report has the five notebook rows, yours and the reference's: {figures}")
+    ratios = [r for r in rows if len(r) == 7 and r[0] != "estimator"]
+    check(len(ratios) == 5 and all(float(r[1]) > 0 for r in ratios),
+          "the lab report has the ratios between labs")
+    importance = next((r for r in figures if r[0].startswith("importance")), None)
+    stats = os.path.join(tmp, "report-importance.json")
+    subprocess.run([os.path.join(args.build, "viewer_solutions_as_student"), "-c",
+                    os.path.join(args.source, "models", "cornell_box_VI2_Specular.ecs"),
+                    "--lab", "importance", "--size", "512", "512", "--spp", "64", "--seed", "64",
+                    "-o", os.path.join(tmp, "report-importance.pfm"), "--stats", stats],
+                   check=True, capture_output=True)
+    headless = json.load(open(stats))["noise"]
+    check(importance is not None and importance[4] == f"{headless:.3f}",
+          f"the report's noise of lab 3 ({importance[4] if importance else None}) is a headless "
+          f"render's ({headless:.3f})")
     html = open(os.path.join(out["html"], "index.html")).read()
     check(html.count("data:image/png;base64,") >= 12, "the HTML report embeds its images")
 

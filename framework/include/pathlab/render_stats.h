@@ -1,7 +1,10 @@
 #pragma once
 /// What a headless render measured, written as JSON for scripts and the grader.
 
+#include "pathlab/accumulation_buffer.h"
 #include "pathlab/color.h"
+#include "pathlab/lab_parameters.h"
+#include "pathlab/lab_registry.h"
 #include "pathlab/ray_counters.h"
 
 #include <cstdint>
@@ -31,6 +34,19 @@ struct RenderStats {
     double raysPerSecond() const;
     double efficiency() const;     ///< renderEfficiency(noise, seconds)
 };
+
+/// What to say of one render: what was rendered (scene, lab, implementation, parameters, seed),
+/// the image so far (its size, spp and summary), and what it cost. The frame rate is left to the
+/// caller: the window measures its own, a headless render has setHeadlessFrameRate.
+struct RenderedWhat {
+    std::string scene;
+    Lab lab;
+    Implementation implementation;
+    LabParameters parameters;
+    uint64_t seed;
+};
+RenderStats renderStats(const RenderedWhat& what, const AccumulationBuffer& image, int threads,
+                        double seconds, const RayCounters& rays);
 
 /// The frame rate of a headless render: samples/s ÷ (width × height), what the window would show
 /// at that size with one sample per pixel per frame.
