@@ -33,7 +33,7 @@ if [ ${#whose[@]} -eq 0 ]; then
     todo=$(grep -o 'PATHLAB_TODO("lab[0-9.]*")' "$kit/labs/$lab.cpp" | grep -o 'lab[0-9.]*' | tr '\n' ' ')
     if [ -n "$todo" ]; then
         echo "make run: labs/$lab.cpp has steps still to write: ${todo% } (handouts/${handout[$lab]});" \
-             "until you write them the image shows what the steps before them give (the stub: direct light only)"
+             "each adds nothing to the image until you write it (the stub renders direct light only)"
     else
         echo "make run: labs/$lab.cpp has no PATHLAB_TODO left"
     fi
