@@ -142,7 +142,7 @@ std::string terminalReport(const GradeReport& report, bool colour) {
     out << "\n";
     const auto ratios = labRatios(report);
     if (!ratios.empty()) {
-        out << "\nspeed ratios between labs: samples/s in the grader's timed runs ÷ branching's\n"
+        out << "\nspeed ratios between labs: samples/s in the grader's timed runs (roulette as graded) ÷ branching's\n"
             << "                              yours   reference\n";
         for (const LabRatio& r : ratios) {
             std::snprintf(line, sizeof line, "  %-26s %6.2f   ", r.name.c_str(), r.student);
