@@ -47,6 +47,9 @@ struct RenderedImage {
     std::array<double, 3> meanVariance{}; ///< per-sample variance, averaged over pixels
 };
 
+/// RenderResult::failureKind of a render whose image holds NaN or infinite values.
+inline constexpr const char* NonfiniteRadianceFailure = "NaN or infinite radiance";
+
 struct RenderResult {
     bool ok = false;
     std::string failure;           ///< why not ok, in words for the student
