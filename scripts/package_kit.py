@@ -28,6 +28,7 @@ STUDENT_EXCLUDED = (
     "tests/grader/hostile/",
     "tests/grader/grader_test.py",
     "tests/grader/batch_test.py",
+    "tests/estimators/catches_mutants.py",
     "tests/release/",
     "tests/gradescope/",
     "grader/hidden_scenes/",
