@@ -28,6 +28,11 @@ std::string todo(Lab lab, const StepTable& steps) {
            std::to_string(steps[static_cast<int>(lab)]);
 }
 
+/// A cause for the student, ending with the lab's step it is about.
+std::string withStep(const std::string& cause, Lab lab, const StepTable& step) {
+    return cause + " (" + todo(lab, step) + ")";
+}
+
 /// How a (possibly wrong) lab behaves in a furnace, in the few numbers that decide its value.
 struct Behaviour {
     double diffuseWeight = 1; ///< a diffuse bounce's weight relative to Kd, in expectation
@@ -71,39 +76,42 @@ struct Candidate {
 std::vector<Candidate> candidates(Lab lab) {
     const double pi = 3.14159265358979;
     std::vector<Candidate> list;
-    auto add = [&](std::string cause, const std::function<void(Behaviour&)>& change) {
+    // A cause ends with the lab's step it is about, where the lab has one.
+    auto add = [&](const std::string& cause, const StepTable* step,
+                   const std::function<void(Behaviour&)>& change) {
         Behaviour b;
         change(b);
-        list.push_back({std::move(cause), b});
+        list.push_back({step ? withStep(cause, lab, *step) : cause, b});
     };
-    add("no bounce rays yet: the lab renders direct light only (its steps from " +
-            todo(lab, FirstBounceStep) + " on are still open)",
-        [](Behaviour& b) { b.diffuseWeight = b.mirrorWeight = 0; });
+    const std::string firstBounce = todo(lab, FirstBounceStep);
+    add("no bounce rays yet: the lab renders direct light only (its steps from " + firstBounce +
+            " on are still open)",
+        nullptr, [](Behaviour& b) { b.diffuseWeight = b.mirrorWeight = 0; });
     add("emission after a specular bounce missing: a ray that left a mirror or a refraction "
         "(RayKind::Specular) must add hit.emitted, since next-event estimation never finds a "
-        "light in one exact direction (" + todo(lab, EmissionStep) + ")",
-        [](Behaviour& b) { b.emissionAfterSpecular = false; });
+        "light in one exact direction",
+        &EmissionStep, [](Behaviour& b) { b.emissionAfterSpecular = false; });
     add("emission counted twice: it is added after diffuse bounces too, although next-event "
-        "estimation already counted it (" + todo(lab, EmissionStep) + ")",
-        [](Behaviour& b) { b.emissionAfterDiffuse = true; });
+        "estimation already counted it",
+        &EmissionStep, [](Behaviour& b) { b.emissionAfterDiffuse = true; });
     add("no next-event estimation: ctx.directLight(hit), given in the lab file, is missing",
-        [](Behaviour& b) { b.directWeight = 0; });
-    add("no next-event estimation, with emission added after every bounce instead (" +
-            todo(lab, EmissionStep) + " adds it after camera and specular rays only)",
-        [](Behaviour& b) { b.directWeight = 0, b.emissionAfterDiffuse = true; });
+        nullptr, [](Behaviour& b) { b.directWeight = 0; });
+    add("no next-event estimation, with emission added after every bounce instead: emission "
+        "belongs after camera and specular rays only, beside ctx.directLight(hit)",
+        &EmissionStep, [](Behaviour& b) { b.directWeight = 0, b.emissionAfterDiffuse = true; });
     add("a factor of pi: the diffuse bounce is weighted by pi*Kd; with cosine sampling the weight "
-        "is Kd alone (" + todo(lab, DiffuseWeightStep) + ")",
-        [&](Behaviour& b) { b.diffuseWeight = pi; });
+        "is Kd alone",
+        &DiffuseWeightStep, [&](Behaviour& b) { b.diffuseWeight = pi; });
     add("a factor of 1/pi: the diffuse bounce is weighted by Kd/pi; with cosine sampling the "
-        "weight is Kd alone (" + todo(lab, DiffuseWeightStep) + ")",
-        [&](Behaviour& b) { b.diffuseWeight = 1 / pi; });
-    add("direct light weighted by an extra pi", [&](Behaviour& b) { b.directWeight = pi; });
+        "weight is Kd alone",
+        &DiffuseWeightStep, [&](Behaviour& b) { b.diffuseWeight = 1 / pi; });
+    add("direct light weighted by an extra pi", nullptr,
+        [&](Behaviour& b) { b.directWeight = pi; });
     if (isDepthLimited(lab)) {
-        add("depth off by one: one bounce too many (the test should be depth < maxDepth, with "
-            "the primary hit at depth 0; " + todo(lab, DepthLimitStep) + ")",
-            [](Behaviour& b) { b.depthShift = 1; });
-        add("depth off by one: one bounce too few (the primary hit is depth 0; " +
-                todo(lab, DepthLimitStep) + ")",
+        add("depth off by one: one bounce too many: the test should be depth < maxDepth, with the "
+            "primary hit at depth 0",
+            &DepthLimitStep, [](Behaviour& b) { b.depthShift = 1; });
+        add("depth off by one: one bounce too few: the primary hit is depth 0", &DepthLimitStep,
             [](Behaviour& b) { b.depthShift = -1; });
     }
     // A wrong pick weight scales whichever component is picked.
@@ -111,20 +119,17 @@ std::vector<Candidate> candidates(Lab lab) {
         return [w](Behaviour& b) { b.diffuseWeight = b.mirrorWeight = w; };
     };
     if (lab == Lab::Uniform) {
-        add("forgot to divide by the pick probability 1/3 (" + todo(lab, ProbabilityDivisionStep) + ")",
+        add("forgot to divide by the pick probability 1/3", &ProbabilityDivisionStep,
             pickWeight(1.0 / 3));
-        add("divided by the pick probability twice (" + todo(lab, ProbabilityDivisionStep) + ")",
-            pickWeight(3));
+        add("divided by the pick probability twice", &ProbabilityDivisionStep, pickWeight(3));
     }
     if (lab == Lab::Importance)
-        add("divided by 1/3 instead of the chosen component's probability (" +
-                todo(lab, ProbabilityDivisionStep) + ")",
-            pickWeight(3));
+        add("divided by 1/3 instead of the chosen component's probability",
+            &ProbabilityDivisionStep, pickWeight(3));
     if (lab == Lab::Roulette) {
-        add("Russian-roulette weight missing: a continued path must be divided by continueProb "
-            "(" + todo(lab, ProbabilityDivisionStep) + ")",
-            [](Behaviour& b) { b.rouletteDivisions = 0; });
-        add("divided by continueProb twice (" + todo(lab, ProbabilityDivisionStep) + ")",
+        add("Russian-roulette weight missing: a continued path must be divided by continueProb",
+            &ProbabilityDivisionStep, [](Behaviour& b) { b.rouletteDivisions = 0; });
+        add("divided by continueProb twice", &ProbabilityDivisionStep,
             [](Behaviour& b) { b.rouletteDivisions = 2; });
     }
     return list;
@@ -192,7 +197,8 @@ std::vector<std::string> likelyFurnaceCauses(Lab lab,
     std::stable_sort(matches.begin(), matches.end(),
                      [](const auto& x, const auto& y) { return x.first < y.first; });
     std::vector<std::string> causes;
-    for (auto& match : matches) causes.push_back(std::move(match.second));
+    for (auto& match : matches)
+        causes.push_back(std::move(match.second));
     return causes;
 }
 
@@ -200,15 +206,17 @@ std::string likelyNonfiniteCause(Lab lab) {
     if (NearBlackStopStep[static_cast<int>(lab)] == 0)
         return "a division by zero (0/0 is NaN, x/0 infinite) or a value used before it is set, "
                "in the lab's own arithmetic";
-    return "a division by zero: on a surface with no component at all (the light's material has "
-           "only Ke) the strengths sum to 0 and total/strength is 0/0; the near-black stop must "
-           "return before the pick (" + todo(lab, NearBlackStopStep) + ")";
+    return withStep("a division by zero: on a surface with no component at all (the light's "
+                    "material has only Ke) the strengths sum to 0 and total/strength is 0/0; the "
+                    "near-black stop must return before the pick",
+                    lab, NearBlackStopStep);
 }
 
 std::string likelyRefractionCause(Lab lab) {
-    return "the view through the glass sphere is wrong: the Kt component must trace "
-           "refractionRay(ray, hit), which bends the ray by Ni and turns into a mirror ray under "
-           "total internal reflection (" + todo(lab, RefractionStep) + ")";
+    return withStep("the view through the glass sphere is wrong: the Kt component must trace "
+                    "refractionRay(ray, hit), which bends the ray by Ni and turns into a mirror "
+                    "ray under total internal reflection",
+                    lab, RefractionStep);
 }
 
 } // namespace pathlab::grader

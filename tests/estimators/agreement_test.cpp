@@ -23,18 +23,18 @@ TEST_CASE("the solutions of labs 1-3 agree on the VI2 Cornell box (Welch test, a
     test::Estimate estimates[3];
     for (int i = 0; i < 3; ++i) {
         // Independent seeds per lab, so the test compares independent estimates.
-        estimates[i] = test::estimateOf(test::render(
-            {"-c", test::modelPath("cornell_box_VI2_Specular.ecs"), "--size", "64", "64", "--spp",
-             i == 0 ? "16" : "64", "--seed", std::to_string(100 + i), "--lab",
-             std::string(labName(labs[i])), "--solution"}));
+        estimates[i] = test::estimateOf(
+            test::render({"-c", test::modelPath("cornell_box_VI2_Specular.ecs"), "--size", "64",
+                          "64", "--spp", i == 0 ? "16" : "64", "--seed", std::to_string(100 + i),
+                          "--lab", std::string(labName(labs[i])), "--solution"}));
     }
     const double critical = test::normalCritical(1e-4);
     for (int i = 0; i < 3; ++i) {
         for (int j = i + 1; j < 3; ++j) {
             for (int c = 0; c < 3; ++c) {
                 const double difference = estimates[i].mean[c] - estimates[j].mean[c];
-                const double se = std::hypot(estimates[i].standardError[c],
-                                             estimates[j].standardError[c]);
+                const double se =
+                    std::hypot(estimates[i].standardError[c], estimates[j].standardError[c]);
                 INFO(labName(labs[i]) << " vs " << labName(labs[j]) << " channel " << c << ": "
                                       << estimates[i].mean[c] << " vs " << estimates[j].mean[c]
                                       << ", Welch z " << difference / se);

@@ -80,7 +80,8 @@ std::string likelyCauses(const LabRun& run, const grader::FurnaceObservation& ow
     if (causes.empty()) return "";
     std::ostringstream text;
     text << " This value" << others.str() << (observations.size() > 1 ? " match: " : " matches: ");
-    for (size_t i = 0; i < causes.size(); ++i) text << (i == 0 ? "" : "; or: ") << causes[i];
+    for (size_t i = 0; i < causes.size(); ++i)
+        text << (i == 0 ? "" : "; or: ") << causes[i];
     text << ".";
     return text.str();
 }
@@ -97,9 +98,9 @@ void checkFurnaceValue(const LabRun& run, double expected, const std::string& fo
     const double critical = normalCritical(Alpha);
     if (std::fabs(z) < critical && std::fabs(mean - expected) < 0.02 * expected) return;
     std::ostringstream message;
-    message << std::setprecision(5) << run.description() << ": observed " << mean << " ± " << standardError
-            << " (standard error), expected " << expected << " = " << formula << "; z = " << z
-            << " (a correct lab gives |z| < " << critical << ", within 2%).";
+    message << std::setprecision(5) << run.description() << ": observed " << mean << " ± "
+            << standardError << " (standard error), expected " << expected << " = " << formula
+            << "; z = " << z << " (a correct lab gives |z| < " << critical << ", within 2%).";
     if (model) message << likelyCauses(run, own);
     FAIL_CHECK(message.str());
 }
@@ -115,16 +116,22 @@ std::string LabRun::description() const {
         text << "--max-depth " << s.maxDepth;
     else
         text << "--continue-prob " << s.continueProb;
-    text << ", " << s.width << "x" << s.height << " pixels at " << s.spp << " spp, seed "
-         << s.seed;
+    text << ", " << s.width << "x" << s.height << " pixels at " << s.spp << " spp, seed " << s.seed;
     return text.str();
 }
 
 LabRun renderLab(Lab lab, const std::string& scene, int size, int spp, uint64_t seed,
                  const std::vector<std::string>& options) {
-    std::vector<std::string> arguments = {"-c", modelPath(scene), "--size", std::to_string(size),
-                                          std::to_string(size), "--spp", std::to_string(spp),
-                                          "--seed", std::to_string(seed), "--lab",
+    std::vector<std::string> arguments = {"-c",
+                                          modelPath(scene),
+                                          "--size",
+                                          std::to_string(size),
+                                          std::to_string(size),
+                                          "--spp",
+                                          std::to_string(spp),
+                                          "--seed",
+                                          std::to_string(seed),
+                                          "--lab",
                                           std::string(labName(lab))};
     arguments.insert(arguments.end(), options.begin(), options.end());
     return {lab, scene, renderLabUnderTest(arguments)};

@@ -33,8 +33,7 @@ TEST_CASE("lab 1 branching: the mirror furnace sees emission after specular boun
     checkMirrorFurnace(Lab::Branching);
 }
 
-TEST_CASE("lab 2 uniform pick: the mirror furnace sees emission after specular bounces",
-          "[lab2]") {
+TEST_CASE("lab 2 uniform pick: the mirror furnace sees emission after specular bounces", "[lab2]") {
     checkMirrorFurnace(Lab::Uniform);
 }
 

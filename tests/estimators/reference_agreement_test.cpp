@@ -27,9 +27,9 @@ using namespace pathlab::test;
 namespace {
 
 const grader::SceneReference& vi2Reference() {
-    static const grader::SceneReference reference = grader::loadReference(
-        PATHLAB_GRADER_DIR "/references", "cornell_box_VI2_Specular",
-        grader::loadRubric(PATHLAB_GRADER_DIR "/rubric.json"));
+    static const grader::SceneReference reference =
+        grader::loadReference(PATHLAB_GRADER_DIR "/references", "cornell_box_VI2_Specular",
+                              grader::loadRubric(PATHLAB_GRADER_DIR "/rubric.json"));
     return reference;
 }
 

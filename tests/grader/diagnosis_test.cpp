@@ -57,8 +57,7 @@ TEST_CASE("the diffuse furnace names known bugs with the lab's step", "[grader]"
     CHECK(contains(likeliest(Lab::Uniform, {{diffuse, 1.5995, 0.002}}),
                    "pick probability 1/3 (TODO lab2.4)"));
     // One bounce too many: the series runs to a^(maxDepth+2).
-    CHECK(contains(likeliest(Lab::Branching, {{diffuse, 1.96875, 0.002}}),
-                   "one bounce too many"));
+    CHECK(contains(likeliest(Lab::Branching, {{diffuse, 1.96875, 0.002}}), "one bounce too many"));
     CHECK(contains(likeliest(Lab::Importance, {{diffuse, 1.96875, 0.002}}), "TODO lab3.2"));
     // Emission after diffuse bounces too: Le once more at depths 1 to D, 0.875 more.
     CHECK(contains(likeliest(Lab::Importance, {{diffuse, 2.8125, 0.002}}),
@@ -80,17 +79,17 @@ TEST_CASE("the mirror furnace names missing emission after specular bounces", "[
     // alone: no Kd, so next-event estimation adds nothing.
     for (Lab lab : AllLabs) {
         const std::string step = "(TODO lab" + std::to_string(static_cast<int>(lab) + 1) + ".1)";
-        const std::string cause = likeliest(lab, {{diffuse, correctFurnaceValue(lab, diffuse), 0.002},
-                                                  {mirror, 1.0, 0.0}});
+        const std::string cause = likeliest(
+            lab, {{diffuse, correctFurnaceValue(lab, diffuse), 0.002}, {mirror, 1.0, 0.0}});
         CHECK(contains(cause, "emission after a specular bounce missing"));
         CHECK(contains(cause, step));
     }
     // Alone, the mirror furnace cannot tell that bug from a lab without bounces, which also
     // shows Le; the diffuse furnace can (1 + a for the stub).
-    const std::vector<std::string> alone = likelyFurnaceCauses(Lab::Branching, {{mirror, 1.0, 0.0}});
+    const std::vector<std::string> alone =
+        likelyFurnaceCauses(Lab::Branching, {{mirror, 1.0, 0.0}});
     REQUIRE(alone.size() == 2);
-    const std::string stub =
-        likeliest(Lab::Branching, {{diffuse, 1.5, 0.002}, {mirror, 1.0, 0.0}});
+    const std::string stub = likeliest(Lab::Branching, {{diffuse, 1.5, 0.002}, {mirror, 1.0, 0.0}});
     CHECK(contains(stub, "direct light only"));
     // A bug the mirror furnace cannot see is still found when it accepts the lab.
     CHECK(contains(likeliest(Lab::Branching, {{diffuse, 2.8125, 0.002}, {mirror, 1.875, 0.0}}),
