@@ -17,8 +17,8 @@ Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
 4. Unpacked, the release builds and tests itself as a student would. "It passes its own tests,
    the stubs failing as expected" means: `make test` (install check, configure, build with the
    tests, ctest without the labels `slow` and `labs`) succeeds and ran the framework's tests;
-   `make test-labs` (ctest -L labs: the furnace and agreement tests, run on the student's own
-   labs/) fails, each of estimators.lab1 to estimators.lab4 among the failures;
+   `make test-labs` (ctest -L labs: each lab's furnace, NaN and reference tests, run on the
+   student's own labs/) fails, each of estimators.lab1 to estimators.lab4 among the failures;
    `make grade LAB=branching` fails the stub with the diagnosis "direct light only" and a note
    that speed is not checked without the solutions; and once labs/branching.cpp is done (the
    solution copied in), estimators.lab1 passes while the other labs' tests still fail.
