@@ -28,7 +28,8 @@ run: build
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE '$(TEST_EXCLUDED)'
 
-# The lab tests: the furnace and agreement tests of each lab (`ctest -L lab2` for one).
+# The lab tests: each lab's furnaces and mirror furnace, its NaN check and its agreement with the
+# grader's stored reference of the VI2 box (`ctest -L lab2` for one).
 test-labs: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L labs
 

@@ -224,12 +224,12 @@ def cornell_box_diffuse():
     return n
 
 
-def furnace(name, albedo, inner=None):
+def closed_sphere(name, wall, description, inner=None):
+    """A closed sphere (radius 1, facing inward) of the material `wall` = (name, keys), the camera
+    inside; optionally an `inner` sphere (radius 0.3, facing outward) of another material."""
     mesh = Mesh()
-    mesh.sphere(mesh.group("enclosure", "wall"), (0.0, 0.0, 0.0), 1.0, 64, 32, outward=False, smooth=False)
-    materials = [("wall", [("Kd", (albedo,) * 3), ("Ke", (1.0, 1.0, 1.0))])]
-    description = f"Furnace: a closed sphere of diffuse albedo {albedo} emitting Le = 1; " \
-                  f"radiance everywhere 1/(1-a) = {1 / (1 - albedo):g}."
+    mesh.sphere(mesh.group("enclosure", wall[0]), (0.0, 0.0, 0.0), 1.0, 64, 32, outward=False, smooth=False)
+    materials = [wall]
     if inner:
         material, keys = inner
         mesh.sphere(mesh.group("inner_sphere", material), (0.0, 0.0, 0.0), 0.3, 32, 16,
@@ -242,6 +242,25 @@ def furnace(name, albedo, inner=None):
     write_ecs(os.path.join(HERE, name + ".ecs"), description,
               f"-i {name}.obj\n-vp 0 0 -0.7\n-vi 0 0 0\n-vu 0 1 0\n-fov 90\n")
     return n
+
+
+def furnace(name, albedo, inner=None):
+    """Diffuse walls of albedo a emitting Le = 1: the radiance is Le/(1-a) everywhere."""
+    return closed_sphere(name, ("wall", [("Kd", (albedo,) * 3), ("Ke", (1.0, 1.0, 1.0))]),
+                         f"Furnace: a closed sphere of diffuse albedo {albedo} emitting Le = 1; "
+                         f"radiance everywhere 1/(1-a) = {1 / (1 - albedo):g}.", inner)
+
+
+def mirror_furnace(reflectance):
+    """Perfect-mirror walls (Ks = s, no Kd, no Kt) emitting Le = 1. Every path meets only mirror
+    reflections and next-event estimation finds nothing (no Kd), so the light is counted only
+    through the emission seen after specular bounces: a lab that leaves it out gives exactly Le."""
+    s = reflectance
+    return closed_sphere("mirror_furnace", ("wall", [("Ks", (s,) * 3), ("Ke", (1.0, 1.0, 1.0))]),
+                         f"Mirror furnace: a closed sphere of perfect mirror walls (Ks = s = {s:g}, "
+                         f"no Kd, no Kt) emitting Le = 1;\n"
+                         f"radiance everywhere 1/(1-s) = {1 / (1 - s):g}; with a depth limit D, "
+                         f"(1-s^(D+1))/(1-s); without emission after specular bounces, 1.")
 
 
 def refraction_check():
@@ -275,6 +294,7 @@ def main():
         "furnace_mirror": furnace("furnace_mirror", 0.5, ("mirror", [("Ks", (1.0, 1.0, 1.0))])),
         "refraction_check": refraction_check(),
         "furnace_glass": furnace("furnace_glass", 0.5, ("glass", [("Kt", (1.0, 1.0, 1.0)), ("Ni", 1.5)])),
+        "mirror_furnace": mirror_furnace(0.5),
     }
     for name, triangles in counts.items():
         print(f"{name}: {triangles} triangles")

@@ -1,26 +1,60 @@
 #pragma once
-/// Likely causes of a wrong mean, recognised by the value a bug gives in the furnace.
+/// Likely causes of a wrong image, each naming the step of the lab it is about: recognised by
+/// the values known bugs give in the furnaces, or by NaN. Shared by the grader and the lab tests.
 
 #include "pathlab/lab_registry.h"
 
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace pathlab::grader {
 
-/// The furnace's radiance as a lab with a given bug computes it. A closed sphere of diffuse
-/// albedo a emitting Le = 1; see tests/estimators/furnace_test.cpp for the correct series.
+/// How the walls of a furnace reflect: diffusely (Kd) or as a perfect mirror (Ks).
+enum class FurnaceWalls { Diffuse, Mirror };
+
+/// A furnace: a closed sphere whose walls face inward and emit Le = 1, the camera inside (see
+/// models/README.md). Its radiance as a lab computes it follows from these few numbers.
 struct FurnaceModel {
-    double albedo = 0.5;
-    int maxDepth = 3;
-    double continueProb = 0.8;
+    FurnaceWalls walls = FurnaceWalls::Diffuse;
+    double reflectance = 0.5;  ///< the walls' Kd or Ks, grey
+    int maxDepth = 3;          ///< labs 1-3
+    double continueProb = 0.8; ///< lab 4
 };
 
-/// The bug whose furnace value best explains `observed` (± `standardError`) for this lab, as a
-/// sentence for the student; empty when none is close.
-std::string diagnoseFurnace(Lab lab, const FurnaceModel& model, double observed,
-                            double standardError);
+/// The model of a furnace of models/ by scene name ("furnace", "furnace_a08", "mirror_furnace"),
+/// rendered with these parameters; none for a scene that is not one of them.
+std::optional<FurnaceModel> furnaceModel(const std::string& scene, int maxDepth,
+                                         double continueProb);
 
-/// The correct furnace value for the lab.
+/// The furnace's radiance as a correct lab computes it.
 double correctFurnaceValue(Lab lab, const FurnaceModel& model);
+
+/// That value's formula with its numbers, e.g. "Le·(1 − a^(D+2))/(1 − a) with Le = 1, a = 0.5,
+/// D = 3".
+std::string furnaceFormula(Lab lab, const FurnaceModel& model);
+
+/// What a lab rendered in one furnace: the image mean and its standard error.
+struct FurnaceObservation {
+    FurnaceModel model;
+    double observed = 0;
+    double standardError = 0;
+};
+
+/// The known bugs that explain every observation for this lab (each furnace's value within 4
+/// standard errors or 1.5% of the bug's) and that some observation tells apart from a correct
+/// lab, best first, each as a sentence for the student that names the lab's step
+/// ("... (TODO lab3.1)"); empty when none does. One furnace alone may leave several: in the
+/// mirror furnace a lab without emission after specular bounces and one without any bounce both
+/// give Le; the diffuse furnace tells them apart.
+std::vector<std::string> likelyFurnaceCauses(Lab lab,
+                                             const std::vector<FurnaceObservation>& observations);
+
+/// Why a lab's image holds NaN or infinite values, as far as the lab tells, naming its step.
+std::string likelyNonfiniteCause(Lab lab);
+
+/// What a wrong view through a glass sphere means, when the furnaces (which hold no glass)
+/// accept the lab, naming its step.
+std::string likelyRefractionCause(Lab lab);
 
 } // namespace pathlab::grader

@@ -148,11 +148,14 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
         sceneRejected.push_back(std::any_of(rejected.begin() + offset,
                                             rejected.begin() + offset + comparisons[s].p.size(),
                                             [](bool b) { return b; }));
-    // The furnace has no glass: a lab it rejects has a fault elsewhere, which the refraction
-    // check's image shows too, so only a lab that the furnace accepts is told about refraction.
+    // The furnaces have no glass: a lab that one of them rejects has a fault elsewhere, which the
+    // refraction check's image shows too, so only a lab that every furnace accepts is told about
+    // refraction.
     bool furnaceRejected = false;
     for (size_t s = 0; s < setup.scenes.size(); ++s)
-        furnaceRejected = furnaceRejected || (setup.scenes[s].isFurnace && sceneRejected[s]);
+        furnaceRejected = furnaceRejected || (setup.scenes[s].furnace && sceneRejected[s]);
+    // Every furnace's value, accepted or not, narrows down the known bugs that explain them.
+    std::vector<FurnaceObservation> furnaces;
     size_t offset = 0;
     const double critical = studentCritical(r.alpha, r.seeds - 1);
     const char* channel[3] = {"red", "green", "blue"};
@@ -160,6 +163,8 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
         const GradingScene& scene = setup.scenes[s];
         const Comparison& c = comparisons[s];
         const Expectation& e = scene.reference.forLab(lab);
+        const double observed = (c.observed[0].mean + c.observed[1].mean + c.observed[2].mean) / 3;
+        if (scene.furnace) furnaces.push_back({*scene.furnace, observed, c.observed[0].standardError});
         if (sceneRejected[s]) {
             std::string line = scene.reference.scene + ": observed/expected";
             for (int ch = 0; ch < 3; ++ch) {
@@ -182,28 +187,24 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
                 details.push_back(scene.reference.scene + ": " + std::to_string(tileCount) + " of " +
                                   std::to_string(r.tiles * r.tiles) + " tiles differ (column,row from the top left):" + tiles);
             if (scene.reference.scene == "refraction_check" && !furnaceRejected) {
-                details.push_back("likely cause: the view through the glass sphere is wrong: the Kt "
-                                  "component must trace refractionRay(ray, hit), which bends the ray "
-                                  "by Ni and turns into a mirror ray under total internal reflection "
-                                  "(TODO lab1.5)");
-                if (diagnosis.empty()) diagnosis = "the view through the glass sphere is wrong";
+                const std::string cause = likelyRefractionCause(lab);
+                details.push_back("likely cause: " + cause);
+                if (diagnosis.empty()) diagnosis = cause.substr(0, cause.find(':'));
             }
-            if (scene.isFurnace) {
-                const double observed = (c.observed[0].mean + c.observed[1].mean + c.observed[2].mean) / 3;
-                const double se = c.observed[0].standardError;
-                const FurnaceModel model{scene.furnaceAlbedo, r.maxDepth, r.continueProb};
+            if (scene.furnace)
                 details.push_back(scene.reference.scene + format(": %.4f, where a correct lab gives %.4f",
-                                                                 observed, correctFurnaceValue(lab, model)));
-                const std::string cause = diagnoseFurnace(lab, model, observed, se);
-                if (!cause.empty()) {
-                    details.push_back("likely cause: " + cause);
-                    // The furnace's diagnosis is the most specific: it wins. Its name is the
-                    // cause up to the explanation after the colon.
-                    diagnosis = cause.substr(0, cause.find(':'));
-                }
-            }
+                                                                 observed, correctFurnaceValue(lab, *scene.furnace)));
         }
         offset += c.p.size();
+    }
+    if (furnaceRejected) {
+        const std::vector<std::string> causes = likelyFurnaceCauses(lab, furnaces);
+        if (!causes.empty()) {
+            details.push_back("likely cause: " + causes.front());
+            // The furnaces' diagnosis is the most specific: it wins. Its name is the cause up to
+            // the explanation after the colon.
+            diagnosis = causes.front().substr(0, causes.front().find(':'));
+        }
     }
     return false;
 }
@@ -240,6 +241,8 @@ CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade,
         grade.rendersFinished = false;
         check.summary = "could not be checked: " + failure.text;
         check.diagnosis = failure.kind;
+        if (failure.kind == NonfiniteRadianceFailure)
+            details.push_back("likely cause: " + likelyNonfiniteCause(lab));
     } else {
         check.summary = "mean radiance differs from " + expected + " (twice, on fresh seeds)";
         check.diagnosis = diagnosis.empty() ? "wrong mean radiance" : diagnosis;

@@ -1,12 +1,14 @@
 #pragma once
 /// The three checks of one lab: correctness, noise, frame rate.
 
+#include "diagnosis.h"
 #include "expectation.h"
 #include "render_run.h"
 #include "rubric.h"
 
 #include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,8 +49,7 @@ struct LabGrade {
 struct GradingScene {
     std::string path;
     SceneReference reference;
-    bool isFurnace = false;  ///< the diagnosis knows the furnace's analytic values
-    double furnaceAlbedo = 0.5;
+    std::optional<FurnaceModel> furnace; ///< a furnace's analytic values, for the diagnosis
 };
 
 /// How the frame-rate check keeps its timings fair on a machine that does other work meanwhile

@@ -41,7 +41,8 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const std::string&
                                         const std::string& scratch, std::vector<std::string>& notes) {
     std::vector<GradingScene> scenes;
     for (const std::string& name : rubric.scenes) {
-        GradingScene s{std::string(PATHLAB_MODELS_DIR) + "/" + name + ".ecs", {}, name == "furnace", 0.5};
+        GradingScene s{std::string(PATHLAB_MODELS_DIR) + "/" + name + ".ecs", {},
+                       furnaceModel(name, rubric.maxDepth, rubric.continueProb)};
         try {
             s.reference = loadReference(referencesFolder, name, rubric);
         } catch (const InputError& e) {
@@ -59,7 +60,8 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const std::string&
     std::sort(hidden.begin(), hidden.end());
     if (hidden.empty()) throw InputError("option --scenes: no .ecs file in '" + hiddenFolder + "'");
     for (const fs::path& path : hidden)
-        scenes.push_back({path.string(), measured(solution, path.string(), rubric, scratch, cacheFolder), false, 0.5});
+        scenes.push_back({path.string(), measured(solution, path.string(), rubric, scratch, cacheFolder),
+                          std::nullopt});
     return scenes;
 }
 

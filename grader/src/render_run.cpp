@@ -84,7 +84,7 @@ std::string readRendered(const RenderRequest& r, uint64_t seed, RenderedImage& r
         std::ifstream in(rendered.statsFile);
         const nlohmann::json s = nlohmann::json::parse(in);
         if (const int nonfinite = s.at("nonfinite_pixels"); nonfinite > 0) {
-            kind = "NaN or infinite radiance";
+            kind = NonfiniteRadianceFailure;
             return "returned NaN or infinite radiance in " + std::to_string(nonfinite) +
                    " pixels (a division by a zero probability?)";
         }

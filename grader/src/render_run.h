@@ -49,6 +49,9 @@ struct RenderedImage {
     std::string statsFile;         ///< in the request's scratch folder, until the next render
 };
 
+/// RenderResult::failureKind of a render whose image holds NaN or infinite values.
+inline constexpr const char* NonfiniteRadianceFailure = "NaN or infinite radiance";
+
 struct RenderResult {
     bool ok = false;
     std::string failure;           ///< why not ok, in words for the student

@@ -1,9 +1,8 @@
-// The grader's statistics and diagnoses against values computed independently: Student's t
+// The grader's statistics against values computed independently: Student's t
 // quantiles from printed tables, a Welch test worked by hand (and by numerical integration of
-// the t density), Holm's step-down on a small example, and the furnace series.
+// the t density), and Holm's step-down on a small example.
 #include "catch.h"
 
-#include "diagnosis.h"
 #include "hypothesis_tests.h"
 
 #include <cmath>
@@ -44,26 +43,4 @@ TEST_CASE("Holm's method steps down and stops at the first acceptance", "[grader
     const std::vector<bool> rejected = holmRejections({0.01, 0.04, 0.03, 0.005}, 0.05);
     CHECK(rejected == std::vector<bool>{true, false, false, true});
     CHECK(holmRejections({0.5, 0.9}, 0.05) == std::vector<bool>{false, false});
-}
-
-TEST_CASE("the furnace values of correct labs and of known bugs", "[grader]") {
-    const FurnaceModel model{0.5, 3, 0.8};
-    // Le·(1 − a^(maxDepth+2))/(1 − a) for labs 1–3; Le/(1 − a) for lab 4 (Le = 1).
-    CHECK(correctFurnaceValue(Lab::Branching, model) == Approx(1.9375));
-    CHECK(correctFurnaceValue(Lab::Roulette, model) == Approx(2.0).epsilon(1e-6));
-    CHECK(diagnoseFurnace(Lab::Uniform, model, 1.9375, 0.002).empty());
-    // Forgetting the 1/3: each bounce weighs a/3, so 1.5 + 0.5/6 + 0.5/36 + 0.5/216.
-    CHECK(diagnoseFurnace(Lab::Uniform, model, 1.5995, 0.002).find("pick probability 1/3") !=
-          std::string::npos);
-    // One bounce too many: the series runs to a^(maxDepth+2).
-    CHECK(diagnoseFurnace(Lab::Branching, model, 1.96875, 0.002).find("one bounce too many") !=
-          std::string::npos);
-    // Without the roulette weight each continuation weighs a·q = 0.4 instead of a: the camera
-    // ray's Le plus next-event estimation's a at every vertex, 1 + 0.5/(1 − 0.4).
-    const double noWeight = 1 + 0.5 / (1 - 0.4);
-    CHECK(diagnoseFurnace(Lab::Roulette, model, noWeight, 0.002).find("Russian-roulette weight") !=
-          std::string::npos);
-    // Divided by q twice: each continuation weighs a/q = 0.625, so 1 + 0.5/(1 − 0.625).
-    CHECK(diagnoseFurnace(Lab::Roulette, model, 1 + 0.5 / 0.375, 0.002).find("continueProb twice") !=
-          std::string::npos);
 }

@@ -21,8 +21,8 @@ Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
    "It passes its own tests, the stubs failing as expected" means: `make test` (ctest without
    the labels `slow` and `labs`) succeeds and ran the framework's tests and the handouts' (which
    check the students' README and handouts from the release); `make test-labs` (ctest -L labs:
-   the lab tests, run on the student's own labs/) fails, each of estimators.lab1 to
-   estimators.lab4 among the failures; `make grade LAB=branching` fails the stub with the
+   each lab's furnace, NaN and reference tests, run on the student's own labs/) fails, each of
+   estimators.lab1 to estimators.lab4 among the failures; `make grade LAB=branching` fails the stub with the
    diagnosis "direct light only" and a note that speed is not checked without the solutions;
    once labs/branching.cpp is done (the solution copied in), estimators.lab1 passes while the
    other labs' tests still fail; and with all four labs done, `make grade` passes with the speed

@@ -1,5 +1,7 @@
 #include "test_support.h"
 
+#include "pathlab/lab_registry.h"
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -27,7 +29,7 @@ HeadlessResult render(const std::vector<std::string>& arguments) {
 }
 
 HeadlessResult renderLabUnderTest(std::vector<std::string> arguments) {
-    if (PATHLAB_HAS_SOLUTIONS) arguments.push_back("--solution");
+    if (solution::available()) arguments.push_back("--solution");
     return render(arguments);
 }
 

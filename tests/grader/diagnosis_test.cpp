@@ -1,0 +1,109 @@
+// The diagnosis shared by the grader and the lab tests, against the furnace series worked by hand
+// and the values known bugs give.
+#include "catch.h"
+
+#include "diagnosis.h"
+
+#include <cmath>
+
+using namespace pathlab;
+using namespace pathlab::grader;
+
+namespace {
+
+const FurnaceModel diffuse{FurnaceWalls::Diffuse, 0.5, 3, 0.8};
+const FurnaceModel mirror{FurnaceWalls::Mirror, 0.5, 3, 0.8};
+
+/// The first (likeliest) cause, or "" when there is none.
+std::string likeliest(Lab lab, const std::vector<FurnaceObservation>& observations) {
+    const std::vector<std::string> causes = likelyFurnaceCauses(lab, observations);
+    return causes.empty() ? "" : causes.front();
+}
+
+bool contains(const std::string& text, const std::string& words) {
+    return text.find(words) != std::string::npos;
+}
+
+} // namespace
+
+TEST_CASE("the furnaces' values for correct labs are the closed forms", "[grader]") {
+    // Diffuse walls: Le·(1 − a^(D+2))/(1 − a) for labs 1–3, Le/(1 − a) for lab 4 (Le = 1).
+    CHECK(correctFurnaceValue(Lab::Branching, diffuse) == Approx(1.9375));
+    CHECK(correctFurnaceValue(Lab::Importance, {FurnaceWalls::Diffuse, 0.8, 5, 0.8}) ==
+          Approx((1 - std::pow(0.8, 7)) / 0.2));
+    CHECK(correctFurnaceValue(Lab::Roulette, diffuse) == Approx(2.0).epsilon(1e-6));
+    // Mirror walls: Le at every vertex, s^d through d mirror bounces: Le·(1 − s^(D+1))/(1 − s).
+    CHECK(correctFurnaceValue(Lab::Uniform, mirror) == Approx(1.875));
+    CHECK(correctFurnaceValue(Lab::Branching, {FurnaceWalls::Mirror, 0.5, 0, 0.8}) == Approx(1.0));
+    CHECK(correctFurnaceValue(Lab::Roulette, mirror) == Approx(2.0).epsilon(1e-6));
+    CHECK(furnaceFormula(Lab::Branching, mirror) ==
+          "Le*(1 - s^(D+1))/(1 - s) with Le = 1, s = 0.5, D = 3");
+    CHECK(furnaceFormula(Lab::Roulette, diffuse) == "Le/(1 - a) with Le = 1, a = 0.5");
+}
+
+TEST_CASE("the furnace models of the scenes in models/", "[grader]") {
+    CHECK(furnaceModel("furnace", 3, 0.8)->walls == FurnaceWalls::Diffuse);
+    CHECK(furnaceModel("furnace_a08", 5, 0.8)->reflectance == 0.8);
+    CHECK(furnaceModel("mirror_furnace", 2, 0.5)->walls == FurnaceWalls::Mirror);
+    CHECK(furnaceModel("mirror_furnace", 2, 0.5)->maxDepth == 2);
+    // An inner sphere changes the depth-limited values: no model for those.
+    CHECK_FALSE(furnaceModel("furnace_glass", 3, 0.8));
+    CHECK_FALSE(furnaceModel("cornell_box_VI2_Specular", 3, 0.8));
+}
+
+TEST_CASE("the diffuse furnace names known bugs with the lab's step", "[grader]") {
+    CHECK(likelyFurnaceCauses(Lab::Uniform, {{diffuse, 1.9375, 0.002}}).empty());
+    // Forgetting the 1/3: each bounce weighs a/3, so 1.5 + 0.5/6 + 0.5/36 + 0.5/216.
+    CHECK(contains(likeliest(Lab::Uniform, {{diffuse, 1.5995, 0.002}}),
+                   "pick probability 1/3 (TODO lab2.4)"));
+    // One bounce too many: the series runs to a^(maxDepth+2).
+    CHECK(contains(likeliest(Lab::Branching, {{diffuse, 1.96875, 0.002}}), "one bounce too many"));
+    CHECK(contains(likeliest(Lab::Importance, {{diffuse, 1.96875, 0.002}}), "TODO lab3.2"));
+    // Emission after diffuse bounces too: Le once more at depths 1 to D, 0.875 more.
+    CHECK(contains(likeliest(Lab::Importance, {{diffuse, 2.8125, 0.002}}),
+                   "emission counted twice: it is added after diffuse bounces too, although "
+                   "next-event estimation already counted it (TODO lab3.1)"));
+    // Without the roulette weight each continuation weighs a·q = 0.4 instead of a: the camera
+    // ray's Le plus next-event estimation's a at every vertex, 1 + 0.5/(1 − 0.4).
+    CHECK(contains(likeliest(Lab::Roulette, {{diffuse, 1 + 0.5 / (1 - 0.4), 0.002}}),
+                   "Russian-roulette weight missing"));
+    // Divided by q twice: each continuation weighs a/q = 0.625, so 1 + 0.5/(1 − 0.625).
+    CHECK(contains(likeliest(Lab::Roulette, {{diffuse, 1 + 0.5 / 0.375, 0.002}}),
+                   "continueProb twice (TODO lab4.4)"));
+    // pi·a > 1: the unbiased series diverges, and any huge or non-finite value fits it.
+    CHECK(contains(likeliest(Lab::Roulette, {{diffuse, NAN, 0}}), "a factor of pi"));
+}
+
+TEST_CASE("the mirror furnace names missing emission after specular bounces", "[grader]") {
+    // Without emission after specular bounces a mirror-walled furnace shows the camera ray's Le
+    // alone: no Kd, so next-event estimation adds nothing.
+    for (Lab lab : AllLabs) {
+        const std::string step = "(TODO lab" + std::to_string(static_cast<int>(lab) + 1) + ".1)";
+        const std::string cause = likeliest(
+            lab, {{diffuse, correctFurnaceValue(lab, diffuse), 0.002}, {mirror, 1.0, 0.0}});
+        CHECK(contains(cause, "emission after a specular bounce missing"));
+        CHECK(contains(cause, step));
+    }
+    // Alone, the mirror furnace cannot tell that bug from a lab without bounces, which also
+    // shows Le; the diffuse furnace can (1 + a for the stub).
+    const std::vector<std::string> alone =
+        likelyFurnaceCauses(Lab::Branching, {{mirror, 1.0, 0.0}});
+    REQUIRE(alone.size() == 2);
+    const std::string stub = likeliest(Lab::Branching, {{diffuse, 1.5, 0.002}, {mirror, 1.0, 0.0}});
+    CHECK(contains(stub, "direct light only"));
+    // A bug the mirror furnace cannot see is still found when it accepts the lab.
+    CHECK(contains(likeliest(Lab::Branching, {{diffuse, 2.8125, 0.002}, {mirror, 1.875, 0.0}}),
+                   "emission counted twice"));
+    CHECK(likelyFurnaceCauses(Lab::Branching, {{mirror, 1.875, 0.0}}).empty());
+}
+
+TEST_CASE("NaN and refraction causes name the lab's step", "[grader]") {
+    CHECK(contains(likelyNonfiniteCause(Lab::Importance), "near-black stop"));
+    CHECK(contains(likelyNonfiniteCause(Lab::Importance), "(TODO lab3.3)"));
+    CHECK(contains(likelyNonfiniteCause(Lab::Roulette), "(TODO lab4.3)"));
+    // Labs 1 and 2 divide by no probability that can be zero: no step to name.
+    CHECK_FALSE(contains(likelyNonfiniteCause(Lab::Branching), "TODO"));
+    CHECK(contains(likelyRefractionCause(Lab::Branching), "(TODO lab1.5)"));
+    CHECK(contains(likelyRefractionCause(Lab::Uniform), "(TODO lab2.4)"));
+    CHECK(contains(likelyRefractionCause(Lab::Roulette), "(TODO lab4.3)"));
+}
