@@ -51,10 +51,10 @@ int renderToFile(const RenderOptions& options) {
         const RenderStats& s = result.stats;
         std::printf("wrote %s: %s, lab %s (%s), %dx%d, %d spp in %.3f s\n"
                     "  %.3g samples/s = %.3g frames/s at %dx%d (1 spp per frame), %.3g rays/s; "
-                    "noise %.4f, efficiency %.3g\n",
+                    "noise %.4f, efficiency %s\n",
                     one.outputImage.c_str(), s.scene.c_str(), s.lab.c_str(), s.impl.c_str(),
                     s.width, s.height, s.spp, s.seconds, s.samplesPerSecond(), s.framesPerSecond,
-                    s.width, s.height, s.raysPerSecond(), s.noise, s.efficiency());
+                    s.width, s.height, s.raysPerSecond(), s.noise, s.efficiencyText().c_str());
         if (s.nonfinitePixels > 0)
             std::fprintf(stderr, "warning: %d pixel(s) received NaN or infinite samples (left out)\n",
                          s.nonfinitePixels);

@@ -48,11 +48,11 @@ double perSecond(double seconds) { return seconds > 0 ? 1.0 / seconds : 0.0; }
 void printFrameLine(const Frame& frame) {
     const ViewSettings& s = frame.settings;
     std::printf("frame %d: median %.2f fps (%.1f ms) over the last %zu frames, this frame %.2f fps; "
-                "%d spp, %.3g rays/s, noise %.4f, efficiency %.3g; lab %s, impl %s, max-depth %d, "
+                "%d spp, %.3g rays/s, noise %.4f, efficiency %s; lab %s, impl %s, max-depth %d, "
                 "continue-prob %.2f, size %dx%d, %s\n",
                 frame.number, perSecond(frame.medianFrameSeconds), 1000.0 * frame.medianFrameSeconds,
                 std::min<size_t>(frame.number, FrameRate::Window), perSecond(frame.frameSeconds),
-                frame.stats.spp, frame.raysPerSecond, frame.stats.noise, frame.stats.efficiency(),
+                frame.stats.spp, frame.raysPerSecond, frame.stats.noise, frame.stats.efficiencyText().c_str(),
                 std::string(labName(s.lab)).c_str(),
                 std::string(implementationName(s.implementation)).c_str(), s.parameters.maxDepth,
                 s.parameters.continueProb, s.width, s.height, s.split ? "split" : "single");
@@ -316,8 +316,8 @@ private:
                     std::string(implementationName(settings_.implementation)).c_str());
         ImGui::Text("maxDepth %d   continueProb %.2f", settings_.parameters.maxDepth,
                     settings_.parameters.continueProb);
-        ImGui::Text("noise %.4f (relative std. error)  efficiency %.3g", frame_.stats.noise,
-                    frame_.stats.efficiency());
+        ImGui::Text("noise %.4f (relative std. error)  efficiency %s", frame_.stats.noise,
+                    frame_.stats.efficiencyText().c_str());
         ImGui::Text("%dx%d  view: %s", s.width, s.height, viewModeName(mode_));
         if (mode_ == ViewMode::Split)
             ImGui::Text("student %d spp | solution %d spp", frame_.stats.spp, frame_.otherSpp);

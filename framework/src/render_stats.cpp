@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
@@ -20,6 +21,13 @@ double RenderStats::raysPerSecond() const {
 }
 
 double RenderStats::efficiency() const { return renderEfficiency(noise, seconds); }
+
+std::string RenderStats::efficiencyText() const {
+    if (!(efficiency() > 0)) return "undefined (no noise)";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", efficiency());
+    return text;
+}
 
 RenderStats renderStats(const RenderedWhat& what, const AccumulationBuffer& image, int threads,
                         double seconds, const RayCounters& rays) {

@@ -260,7 +260,13 @@ CheckResult checkNoise(const GraderSetup& setup, Lab lab, bool correct, double n
     check.name = "noise";
     check.maxScore = r.points[static_cast<int>(lab)].noise;
     if (noise < 0) {
-        check.summary = "could not be measured: the lab did not finish its renders";
+        check.summary = "could not be measured: the lab's renders failed (see correctness)";
+        return check;
+    }
+    if (!correct) {
+        // A wrong image's variance says nothing about the estimator: a lab missing light is
+        // also quiet, one with NaN or an extra factor noisy. No ratio, then, to mislead.
+        check.summary = "not compared: noise counts only for a correct lab";
         return check;
     }
     const auto scene = std::find_if(setup.scenes.begin(), setup.scenes.end(), [&](const GradingScene& s) {
@@ -274,10 +280,6 @@ CheckResult checkNoise(const GraderSetup& setup, Lab lab, bool correct, double n
     grade.solutionVariance = solution;
     check.summary = format("per-sample variance %.3g times the reference solution's (at most %.2g) on ", ratio, r.maxNoiseRatio) +
                     noiseScene.reference.scene;
-    if (!correct) {
-        check.summary += "; noise counts only for a correct lab";
-        return check;
-    }
     check.passed = ratio <= r.maxNoiseRatio;
     check.score = check.passed ? check.maxScore : 0;
     if (!check.passed) {
@@ -395,12 +397,13 @@ TimedRun timedRun(const GraderSetup& setup, const TimedSeries& series, const Lab
 
 /// Speed in a build without the reference solutions: the student's timed runs alone, for the
 /// ratios between labs; the check itself is the instructor's grader's.
-CheckResult timeWithoutSolutions(const GraderSetup& setup, Lab lab, LabGrade& grade) {
+CheckResult timeWithoutSolutions(const GraderSetup& setup, Lab lab, bool correct, LabGrade& grade) {
     const Rubric& r = setup.rubric;
     CheckResult check;
     check.name = "speed";
     check.maxScore = r.points[static_cast<int>(lab)].speed;
-    check.gradedHere = false;
+    // The instructor's grader gives a wrong lab no speed points: that much is known here.
+    check.gradedHere = !correct;
     const LabRunner runner = timedRunner(setup.student, setup.timing);
     const TimedSeries series = timedSeries(setup, runner, lab);
     std::vector<double> samplesPerSecond;
@@ -412,18 +415,19 @@ CheckResult timeWithoutSolutions(const GraderSetup& setup, Lab lab, LabGrade& gr
     grade.studentSamplesPerSecond = samplesPerSecond.size() == static_cast<size_t>(r.speedRuns)
                                         ? median(samplesPerSecond) : 0;
     grade.solutionSamplesPerSecond = setup.storedSolutionSamplesPerSecond[static_cast<int>(lab)];
-    check.summary = format("graded by the instructor: this build has no reference solutions to "
-                           "time your lab against (at least %.2f of the reference's samples/s on "
-                           "the same machine)", r.minSpeedRatio);
+    check.summary = correct ? format("graded by the instructor: this build has no reference "
+                                     "solutions to time your lab against (at least %.2f of the "
+                                     "reference's samples/s on the same machine)", r.minSpeedRatio)
+                            : "speed counts only for a correct lab";
     if (grade.studentSamplesPerSecond > 0)
         check.details.push_back(format("yours on this machine: %.3g samples/s in the grader's "
-                                       "timed runs; compare labs through the ratios below",
-                                       grade.studentSamplesPerSecond));
+                                       "timed runs (grading every lab prints the ratios between "
+                                       "them)", grade.studentSamplesPerSecond));
     return check;
 }
 
 CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade& grade) {
-    if (!setup.measureSpeed) return timeWithoutSolutions(setup, lab, grade);
+    if (!setup.measureSpeed) return timeWithoutSolutions(setup, lab, correct, grade);
     const Rubric& r = setup.rubric;
     CheckResult check;
     check.name = "speed";
@@ -528,8 +532,8 @@ LabGrade gradeLab(const GraderSetup& setup, Lab lab) {
         CheckResult speed;
         speed.name = "speed";
         speed.maxScore = setup.rubric.points[static_cast<int>(lab)].speed;
-        speed.gradedHere = setup.measureSpeed;
-        speed.summary = "not measured: the lab's correctness renders did not finish";
+        speed.summary = "not measured: the lab's correctness renders failed, and speed counts "
+                        "only for a correct lab";
         grade.checks.push_back(speed);
     }
     return grade;

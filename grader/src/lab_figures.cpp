@@ -91,8 +91,9 @@ std::map<std::string, EstimatorFigures> measureNotebook(const LabRunner& runner,
     const ProcessLimits limits{rubric.secondsPerRun * 4, rubric.memoryBytes};
     std::map<std::string, EstimatorFigures> figures;
     for (const NotebookEstimator& row : rows) {
+        // Seed 0, the viewer's default: the command a student types gives these very numbers.
         const RenderRequest request{&runner, scene, row.lab, NotebookSize, NotebookSize,
-                                    NotebookSpp, rubric.maxDepth, row.continueProb, 64, 1,
+                                    NotebookSpp, rubric.maxDepth, row.continueProb, 0, 1,
                                     threads, scratch};
         const RenderResult result = renderLab(request, limits);
         EstimatorFigures& f = figures[row.key];

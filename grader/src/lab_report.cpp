@@ -67,8 +67,9 @@ std::string labReport(const GradeReport& report, const Rubric& rubric, const Lab
           "reference's, not the absolute numbers.\n\n"
        << "Each row is one headless render of `" << rubric.noiseScene << "`, " << size << "×" << size
        << " pixels, " << spp << " samples per pixel, maxDepth " << rubric.maxDepth
-       << ", all cores, as `./viewer -c models/" << rubric.noiseScene << ".ecs --lab LAB --spp " << spp
-       << " -o LAB.png --stats LAB.json` renders it:\n\n"
+       << ", all cores, seed 0, as `./viewer -c models/" << rubric.noiseScene << ".ecs --lab LAB --spp " << spp
+       << " -o LAB.png --stats LAB.json` renders it (add `--continue-prob "
+       << number(rubric.continueProb, "%g") << "` for the graded roulette):\n\n"
        << "- *frame rate*: samples/s ÷ (" << size << " × " << size << "), the window's frame rate at "
        << size << "×" << size << " with one sample per pixel per frame;\n"
        << "- *noise*: the relative standard error of the image after " << spp

@@ -91,7 +91,7 @@ def solutions_pass(tmp):
     stats = os.path.join(tmp, "report-importance.json")
     subprocess.run([os.path.join(args.build, "viewer_solutions_as_student"), "-c",
                     os.path.join(args.source, "models", "cornell_box_VI2_Specular.ecs"),
-                    "--lab", "importance", "--size", "512", "512", "--spp", "64", "--seed", "64",
+                    "--lab", "importance", "--size", "512", "512", "--spp", "64",
                     "-o", os.path.join(tmp, "report-importance.pfm"), "--stats", stats],
                    check=True, capture_output=True)
     headless = json.load(open(stats))["noise"]

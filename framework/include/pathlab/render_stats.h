@@ -33,6 +33,8 @@ struct RenderStats {
     double samplesPerSecond() const;
     double raysPerSecond() const;
     double efficiency() const;     ///< renderEfficiency(noise, seconds)
+    /// The efficiency for people: "2.44", or "undefined (no noise)" for a noiseless image.
+    std::string efficiencyText() const;
 };
 
 /// What to say of one render: what was rendered (scene, lab, implementation, parameters, seed),
