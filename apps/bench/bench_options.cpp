@@ -1,6 +1,7 @@
 #include "bench_options.h"
 
 #include "pathlab/input_error.h"
+#include "pathlab/parse_number.h"
 
 #include <charconv>
 #include <cmath>
@@ -32,9 +33,8 @@ public:
     }
     float number(std::string_view option, float min, float max) {
         const std::string t = text(option);
-        float v = 0;
-        auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), v);
-        if (error != std::errc() || end != t.data() + t.size() || !(v > min && v < max))
+        const float v = parseFloat(t).value_or(std::nanf(""));
+        if (!(v > min && v < max))
             throw InputError("option " + std::string(option) + " expects a number in (" +
                              std::to_string(min) + ", " + std::to_string(max) + "), got '" + t +
                              "'");

@@ -1,9 +1,9 @@
 #include "bench_scene.h"
 
 #include "pathlab/input_error.h"
+#include "pathlab/parse_number.h"
 #include "pathlab/scene_script.h"
 
-#include <charconv>
 #include <cstdio>
 #include <filesystem>
 
@@ -14,14 +14,12 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string scaled(const Token& value, float scale) {
-    float v = 0;
-    auto [end, error] =
-        std::from_chars(value.text.data(), value.text.data() + value.text.size(), v);
-    if (error != std::errc() || end != value.text.data() + value.text.size())
+    const std::optional<float> v = parseFloat(value.text);
+    if (!v)
         throw inputErrorAt(value.file, value.line,
                            "expected a light intensity, got '" + value.text + "'");
     char text[32];
-    std::snprintf(text, sizeof text, "%g", v * scale);
+    std::snprintf(text, sizeof text, "%g", *v * scale);
     return text;
 }
 

@@ -9,6 +9,7 @@
 
 #include "pathlab/input_error.h"
 #include "pathlab/render_stats.h"
+#include "pathlab/this_process.h"
 
 #include <cstdio>
 #include <exception>
@@ -24,7 +25,7 @@ using namespace pathlab::bench;
 std::string defaultScene() {
     const std::string name = "models/cornell_box_VI2_Specular.ecs";
     const std::filesystem::path beside =
-        std::filesystem::read_symlink("/proc/self/exe").parent_path() / name;
+        thisProgram().parent_path() / name;
     return std::filesystem::exists(beside) ? beside.string() : name;
 }
 
@@ -64,7 +65,7 @@ int runBench(BenchOptions options) {
     report.memory.note = "not measured (--peer-only)";
     if (!options.peerOnly) {
         std::fprintf(stderr, "bench: peak memory ...\n");
-        report.memory = measurePeakMemory(std::filesystem::read_symlink("/proc/self/exe"),
+        report.memory = measurePeakMemory(thisProgram(),
                                           scenes.front(), options);
     }
     printReport(report, stdout);

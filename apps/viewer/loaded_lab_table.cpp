@@ -6,9 +6,9 @@
 
 #include "pathlab/input_error.h"
 #include "pathlab/lab_registry.h"
+#include "pathlab/this_process.h"
 
 #include <cstdlib>
-#include <dlfcn.h>
 #include <string>
 
 namespace pathlab::student {
@@ -21,11 +21,10 @@ LabTable load() {
         throw InputError("PATHLAB_LABS_LIBRARY is not set: this viewer runs a submission's labs, "
                          "compiled into a shared library by `grader batch`");
     forbidNewProcesses();
-    void* library = ::dlopen(path, RTLD_NOW | RTLD_LOCAL);
-    if (!library) throw InputError(std::string("cannot load the labs: ") + ::dlerror());
+    std::string why;
     using Entry = const LabTable* (*)();
-    const auto entry = reinterpret_cast<Entry>(::dlsym(library, "pathlab_lab_table"));
-    if (!entry) throw InputError(std::string(path) + ": no pathlab_lab_table in it");
+    const auto entry = reinterpret_cast<Entry>(findLibrarySymbol(path, "pathlab_lab_table", why));
+    if (!entry) throw InputError(std::string("cannot load the labs from ") + path + ": " + why);
     return *entry();
 }
 

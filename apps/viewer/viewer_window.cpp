@@ -424,9 +424,14 @@ int noDisplay(const std::string& why) {
 
 int runViewerWindow(const pathlab::RenderOptions& options) {
     using namespace pathlab::viewer;
+#if defined(__linux__) || defined(__FreeBSD__)
+    // X11 or Wayland: with neither variable set there is no screen to open a window on, and
+    // saying so is clearer than GLFW's error. (macOS and Windows always have their one screen;
+    // there glfwInit says when it cannot be used, e.g. over ssh.)
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!display || !*display) && (!wayland || !*wayland)) return noDisplay("DISPLAY is not set");
+#endif
 
     // The scene first: a broken scene is reported as such, before any window appears.
     const pathlab::RenderScene scene(pathlab::loadScene(options));

@@ -3,14 +3,14 @@
 #include "image_files.h"
 
 #include "pathlab/input_error.h"
+#include "pathlab/this_process.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <dlfcn.h>
 #include <filesystem>
-#include <unistd.h>
+#include <fstream>
 
 namespace pathlab {
 
@@ -22,22 +22,30 @@ namespace fs = std::filesystem;
 /// from the folder above: the tests live one level below it).
 const plugin::ImageFiles& imageFiles() {
     static const plugin::ImageFiles* files = [] {
-        const fs::path program = fs::read_symlink("/proc/self/exe").parent_path();
+        const fs::path program = thisProgram().parent_path();
         std::string errors;
         for (const fs::path& folder : {program, program.parent_path()}) {
-            const fs::path library = folder / "libpathlab_image_files.so";
+            const fs::path library = folder / imagePluginFileName();
             if (!fs::exists(library)) continue;
-            if (void* handle = ::dlopen(library.c_str(), RTLD_LAZY | RTLD_LOCAL)) {
-                using Entry = const plugin::ImageFiles* (*)();
-                if (auto entry = reinterpret_cast<Entry>(::dlsym(handle, "pathlab_image_files")))
-                    return entry();
-            }
-            errors += std::string(" ") + ::dlerror();
+            std::string why;
+            using Entry = const plugin::ImageFiles* (*)();
+            if (auto entry = reinterpret_cast<Entry>(findLibrarySymbol(library, "pathlab_image_files", why)))
+                return entry();
+            errors += " " + why;
         }
-        throw std::runtime_error("cannot load libpathlab_image_files.so from " + program.string() +
-                                 " or the folder above:" + (errors.empty() ? " not there" : errors));
+        // An InputError, so that the viewer reports it (even from a key press) and exits with 2.
+        throw InputError("cannot load the image-file plug-in " + std::string(imagePluginFileName()) +
+                         " from " + program.string() + " or the folder above:" +
+                         (errors.empty() ? " not there (rebuild: make build)" : errors));
     }();
     return *files;
+}
+
+/// The plug-in's write, "" when it succeeded.
+std::string writeThroughPlugin(const std::string& path, int width, int height, const void* pixels,
+                               bool eightBit) {
+    const char* why = imageFiles().write(path.c_str(), width, height, pixels, eightBit);
+    return why ? why : "";
 }
 
 std::string lowerExtension(const std::string& path) {
@@ -46,11 +54,21 @@ std::string lowerExtension(const std::string& path) {
     return ext;
 }
 
+/// Whether a file can be made in `folder`: tried, since permission bits, ACLs, read-only mounts
+/// and Windows each answer the question differently.
+bool canWriteIn(const fs::path& folder) {
+    const fs::path probe = folder / (".pathlab-write-test-" + std::to_string(processId()));
+    const bool written = static_cast<bool>(std::ofstream(probe));
+    std::error_code ignored;
+    fs::remove(probe, ignored);
+    return written;
+}
+
 /// A name in the same folder (so the rename is atomic) with the same extension (so
 /// OpenImageIO picks the same format), unique per process.
 std::string temporaryNameFor(const std::string& path) {
     const fs::path p(path);
-    const std::string name = "." + p.stem().string() + ".tmp" + std::to_string(::getpid()) +
+    const std::string name = "." + p.stem().string() + ".tmp" + std::to_string(processId()) +
                              p.extension().string();
     return (p.parent_path() / name).string();
 }
@@ -95,7 +113,7 @@ void checkImageOutputPath(const std::string& path, const std::string& option) {
     std::error_code error;
     if (!fs::is_directory(folder, error))
         throw InputError("option " + option + ": folder '" + folder.string() + "' does not exist");
-    if (::access(folder.c_str(), W_OK) != 0)
+    if (!canWriteIn(folder))
         throw InputError("option " + option + ": folder '" + folder.string() + "' is not writable");
     if (fs::is_directory(path, error))
         throw InputError("option " + option + ": '" + path + "' is a folder");
@@ -110,9 +128,9 @@ void writeImage(const std::string& path, int width, int height, const std::vecto
         std::vector<uint8_t> bytes(rgb.size());
         for (size_t i = 0; i < rgb.size(); ++i)
             bytes[i] = static_cast<uint8_t>(std::lround(255.0f * linearToSrgb(rgb[i])));
-        why = imageFiles().write(temporary, width, height, bytes.data(), true);
+        why = writeThroughPlugin(temporary, width, height, bytes.data(), true);
     } else {
-        why = imageFiles().write(temporary, width, height, rgb.data(), false);
+        why = writeThroughPlugin(temporary, width, height, rgb.data(), false);
         if (why == "unsupported" && lowerExtension(path) == ".pfm")
             why = writePfm(temporary, width, height, rgb) ? "" : "cannot write the file";
     }
@@ -129,7 +147,7 @@ void writeDisplayImage(const std::string& path, int width, int height,
                        const std::vector<unsigned char>& rgb8) {
     checkImageOutputPath(path);
     const std::string temporary = temporaryNameFor(path);
-    const std::string why = imageFiles().write(temporary, width, height, rgb8.data(), true);
+    const std::string why = writeThroughPlugin(temporary, width, height, rgb8.data(), true);
     if (why == "unsupported") throw InputError(path + ": OpenImageIO cannot write this format");
     if (!why.empty()) {
         std::error_code ignored;
@@ -141,8 +159,8 @@ void writeDisplayImage(const std::string& path, int width, int height,
 
 Image readImage(const std::string& path) {
     plugin::FilePixels pixels;
-    const std::string why = imageFiles().read(path, pixels);
-    if (!why.empty()) throw InputError(path + ": cannot read the image: " + why);
+    if (const char* why = imageFiles().read(path.c_str(), &pixels))
+        throw InputError(path + ": cannot read the image: " + why);
     Image image;
     image.width = pixels.width;
     image.height = pixels.height;
@@ -157,5 +175,7 @@ Image readImage(const std::string& path) {
     }
     return image;
 }
+
+const char* imagePluginFileName() { return PATHLAB_IMAGE_PLUGIN_FILE; }
 
 } // namespace pathlab

@@ -1,6 +1,7 @@
 #include "pathlab/obj_validation.h"
 
 #include "pathlab/input_error.h"
+#include "pathlab/parse_number.h"
 
 #include <algorithm>
 #include <array>
@@ -39,9 +40,9 @@ std::vector<Line> readLines(const std::string& path, const char* kind) {
 }
 
 bool parseNumber(const std::string& word, float& value) {
-    char* end = nullptr;
-    value = std::strtof(word.c_str(), &end);
-    return end != word.c_str() && *end == '\0' && std::isfinite(value);
+    const std::optional<float> number = parseFloat(word);
+    if (number) value = *number;
+    return number.has_value();
 }
 
 /// The numbers after the keyword, which must number between `least` and `most`.

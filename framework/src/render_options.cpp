@@ -2,10 +2,12 @@
 
 #include "pathlab/input_error.h"
 #include "pathlab/obj_loader.h"
+#include "pathlab/parse_number.h"
 #include "pathlab/scene_script.h"
 
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -45,12 +47,9 @@ public:
 
     float number(const Token& option, const char* what = "a number") {
         const Token& t = value(option, what);
-        float v = 0;
-        const char* end = t.text.data() + t.text.size();
-        auto [ptr, ec] = std::from_chars(t.text.data(), end, v);
-        if (ec != std::errc() || ptr != end || !std::isfinite(v))
-            fail(option, "option " + option.text + " expects " + what + ", got '" + t.text + "'");
-        return v;
+        const std::optional<float> v = parseFloat(t.text);
+        if (!v) fail(option, "option " + option.text + " expects " + what + ", got '" + t.text + "'");
+        return *v;
     }
 
     long long integer(const Token& option, const char* what = "an integer") {

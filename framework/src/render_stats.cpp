@@ -2,13 +2,13 @@
 
 #include "pathlab/image_noise.h"
 #include "pathlab/input_error.h"
+#include "pathlab/this_process.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 namespace pathlab {
 
@@ -63,7 +63,7 @@ void writeFileAtomically(const std::string& path, const std::string& text) {
     namespace fs = std::filesystem;
     const fs::path target(path);
     const fs::path temporary =
-        target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()));
+        target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(processId()));
     {
         std::ofstream out(temporary, std::ios::binary);
         out << text;

@@ -1,9 +1,9 @@
 #include "arguments.h"
 
 #include "pathlab/input_error.h"
+#include "pathlab/this_process.h"
 
 #include <filesystem>
-#include <unistd.h>
 
 namespace pathlab::grader {
 
@@ -71,6 +71,14 @@ long long number(const std::string& option, const std::string& text, long long l
                      std::to_string(low) + ", got '" + text + "'");
 }
 
+bool isExecutableFile(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    return !error && fs::is_regular_file(status) &&
+           (status.permissions() & fs::perms::owner_exec) != fs::perms::none;
+}
+
 } // namespace
 
 Arguments parseArguments(int argc, char** argv) {
@@ -136,10 +144,10 @@ Arguments parseArguments(int argc, char** argv) {
         throw InputError("grader " + a.command + " expects at least one folder");
     if ((a.command == "submission" || a.command == "batch" || a.command == "merge") && a.out.empty())
         throw InputError("grader " + a.command + " needs --out DIR");
-    if (a.viewer.empty()) a.viewer = (fs::read_symlink("/proc/self/exe").parent_path() / "viewer").string();
+    if (a.viewer.empty()) a.viewer = (thisProgram().parent_path() / "viewer").string();
     if (a.solutionViewer.empty()) a.solutionViewer = a.viewer;
     for (const std::string& v : {a.viewer, a.solutionViewer})
-        if (::access(v.c_str(), X_OK) != 0) throw InputError("viewer '" + v + "' is not an executable file");
+        if (!isExecutableFile(v)) throw InputError("viewer '" + v + "' is not an executable file");
     return a;
 }
 

@@ -1,12 +1,16 @@
+// POSIX: Linux and macOS (the grader is not built with MSVC). Pinning to cores is Linux only.
 #include "process_runner.h"
 
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <grp.h>
 #include <poll.h>
+#if defined(__linux__)
 #include <sched.h>
+#endif
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -15,8 +19,12 @@ namespace pathlab::grader {
 
 std::string ProcessOutcome::describe() const {
     if (!started) return "could not be started";
-    if (timedOut) return "did not finish within the time limit (an endless loop, or recursion "
-                         "that never ends?)";
+    if (timedOut) {
+        char limit[32];
+        std::snprintf(limit, sizeof limit, "%.0f s", wallLimit);
+        return std::string("did not finish within the time limit of ") + limit +
+               " (an endless loop, or recursion that never ends?)";
+    }
     if (signal != 0) {
         std::string name = strsignal(signal);
         std::string hint;
@@ -71,12 +79,14 @@ void setLimit(int resource, rlim_t value) {
     if (limits.fileBytes > 0) setLimit(RLIMIT_FSIZE, static_cast<rlim_t>(limits.fileBytes));
     if (limits.processes > 0) setLimit(RLIMIT_NPROC, static_cast<rlim_t>(limits.processes));
     setLimit(RLIMIT_CORE, 0);
+#if defined(__linux__)
     if (!options.cpus.empty()) {
         cpu_set_t set;
         CPU_ZERO(&set);
         for (int cpu : options.cpus) CPU_SET(cpu, &set);
         ::sched_setaffinity(0, sizeof set, &set);
     }
+#endif
     if (options.user >= 0) {
         const auto id = static_cast<uid_t>(options.user);
         if (::setgroups(0, nullptr) != 0 || ::setgid(id) != 0 || ::setuid(id) != 0) ::_exit(126);
@@ -110,14 +120,28 @@ bool drain(int fd, std::string& text, size_t keep, bool keepTail, bool& overflow
     return true;
 }
 
+/// A pipe whose ends close in the children it is not handed to. Linux sets that atomically
+/// (another thread may fork in between); macOS has no pipe2.
+bool openPipe(int ends[2]) {
+#if defined(__linux__)
+    return ::pipe2(ends, O_CLOEXEC) == 0;
+#else
+    if (::pipe(ends) != 0) return false;
+    ::fcntl(ends[0], F_SETFD, FD_CLOEXEC);
+    ::fcntl(ends[1], F_SETFD, FD_CLOEXEC);
+    return true;
+#endif
+}
+
 } // namespace
 
 ProcessOutcome runProcess(const std::vector<std::string>& argv, const ProcessLimits& limits,
                           const ProcessOptions& options) {
     ProcessOutcome outcome;
+    outcome.wallLimit = limits.wallSeconds;
     int outputPipe[2], collectPipe[2] = {-1, -1};
-    if (::pipe2(outputPipe, O_CLOEXEC) != 0) return outcome;
-    if (options.collectBytes > 0 && ::pipe2(collectPipe, O_CLOEXEC) != 0) {
+    if (!openPipe(outputPipe)) return outcome;
+    if (options.collectBytes > 0 && !openPipe(collectPipe)) {
         ::close(outputPipe[0]);
         ::close(outputPipe[1]);
         return outcome;

@@ -17,7 +17,7 @@ struct ProcessLimits {
 
 /// How to start it, beyond its limits.
 struct ProcessOptions {
-    std::vector<int> cpus;     ///< run only on these cores (empty: any)
+    std::vector<int> cpus;     ///< run only on these cores (empty: any; Linux only)
     int user = -1;             ///< run as this user id (needs root; -1: as we are)
     /// Give it a pipe as file descriptor 3 and keep what it writes there, up to this many
     /// bytes (0: no descriptor 3). The sandbox hands files back this way.
@@ -30,6 +30,7 @@ struct ProcessOutcome {
     int exitStatus = -1;   ///< when it exited normally
     int signal = 0;        ///< when a signal ended it
     double seconds = 0;    ///< wall time, measured here
+    double wallLimit = 0;  ///< the time limit it ran under (ProcessLimits::wallSeconds)
     std::string output;    ///< stdout and stderr together (the last 64 KiB)
     std::string collected; ///< what it wrote on descriptor 3
     bool collectOverflow = false; ///< it wrote more there than allowed

@@ -1,13 +1,18 @@
 #include "test_support.h"
 
 #include "pathlab/lab_registry.h"
+#include "pathlab/this_process.h"
 
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#if defined(_WIN32)
+#define popen _popen
+#define pclose _pclose
+#else
 #include <sys/wait.h>
-#include <unistd.h>
+#endif
 
 namespace pathlab::test {
 
@@ -16,7 +21,7 @@ std::string modelPath(const std::string& name) { return std::string(PATHLAB_MODE
 std::string temporaryFolder(const std::string& name) {
     namespace fs = std::filesystem;
     const fs::path folder =
-        fs::temp_directory_path() / ("pathlab-test-" + std::to_string(::getpid()) + "-" + name);
+        fs::temp_directory_path() / ("pathlab-test-" + std::to_string(processId()) + "-" + name);
     fs::remove_all(folder);
     fs::create_directories(folder);
     return folder.string();
@@ -46,14 +51,18 @@ Estimate estimateOf(const HeadlessResult& result) {
 
 ProcessResult runViewer(const std::string& arguments) {
     const std::string command = std::string(PATHLAB_VIEWER) + " " + arguments + " 2>&1";
-    FILE* pipe = ::popen(command.c_str(), "r");
+    FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return {-1, "popen failed"};
     std::string output;
     std::array<char, 4096> buffer;
     for (size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0;)
         output.append(buffer.data(), n);
-    const int status = ::pclose(pipe);
+    const int status = pclose(pipe);
+#if defined(_WIN32)
+    return {status, output};
+#else
     return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), output};
+#endif
 }
 
 } // namespace pathlab::test

@@ -31,4 +31,8 @@ Image readImage(const std::string& path);
 /// The sRGB transfer function of a linear value in [0,1].
 float linearToSrgb(float linear);
 
+/// The image-file plug-in's file name as this platform's linker names it
+/// ("libpathlab_image_files.so", ".dylib", "pathlab_image_files.dll"); it sits beside the programs.
+const char* imagePluginFileName();
+
 } // namespace pathlab

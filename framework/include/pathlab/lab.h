@@ -34,25 +34,30 @@
 #include "pathlab/vec3.h"
 
 // The build compiles the student's labs/ and the reference solutions/ into one viewer, each set
-// with its own PATHLAB_IMPL (student or solution). Declaring the lab namespaces inside an inline
-// namespace of that name makes `namespace pathlab::branching { ... }` in a lab file land in
-// pathlab::student::branching or pathlab::solution::branching, so the two never collide and a
-// lab file needs no macro of its own.
+// with its own PATHLAB_IMPL (student or solution). The four macros below append that name to the
+// lab namespaces, so that `namespace pathlab::branching { ... }` in a lab file is
+// pathlab::branching_student or pathlab::branching_solution: the two sets, helpers included,
+// never collide, and a lab file needs no macro of its own. (An inline namespace PATHLAB_IMPL
+// around the lab namespaces would read better, but clang, Apple's included, mangles a reopened
+// `namespace pathlab::branching` without it, and the sets would not link.)
 #ifdef PATHLAB_IMPL
-namespace pathlab {
-inline namespace PATHLAB_IMPL {
-namespace branching {
+#define PATHLAB_JOIN_NAMES_(name, impl) name##_##impl
+#define PATHLAB_JOIN_NAMES(name, impl) PATHLAB_JOIN_NAMES_(name, impl)
+#define branching PATHLAB_JOIN_NAMES(branching, PATHLAB_IMPL)
+#define uniform PATHLAB_JOIN_NAMES(uniform, PATHLAB_IMPL)
+#define importance PATHLAB_JOIN_NAMES(importance, PATHLAB_IMPL)
+#define roulette PATHLAB_JOIN_NAMES(roulette, PATHLAB_IMPL)
+
+namespace pathlab::branching {
 Color pathTrace(const Ray& ray, int depth, PathContext& ctx);
 }
-namespace uniform {
+namespace pathlab::uniform {
 Color pathTrace(const Ray& ray, int depth, PathContext& ctx);
 }
-namespace importance {
+namespace pathlab::importance {
 Color pathTrace(const Ray& ray, int depth, PathContext& ctx);
 }
-namespace roulette {
+namespace pathlab::roulette {
 Color pathTrace(const Ray& ray, int depth, PathContext& ctx);
 }
-} // namespace PATHLAB_IMPL
-} // namespace pathlab
 #endif

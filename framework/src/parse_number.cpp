@@ -1,0 +1,33 @@
+#include "pathlab/parse_number.h"
+
+#include <cmath>
+#include <locale>
+#include <sstream>
+#include <string>
+#include <version>
+
+#if defined(__cpp_lib_to_chars)
+#include <charconv>
+#endif
+
+namespace pathlab {
+
+std::optional<float> parseFloat(std::string_view text) {
+    // from_chars takes no sign '+', which OBJ writers and people do write.
+    if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') text.remove_prefix(1);
+    if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return std::nullopt;
+    float value = 0;
+#if defined(__cpp_lib_to_chars)
+    const char* end = text.data() + text.size();
+    const auto [stop, error] = std::from_chars(text.data(), end, value);
+    if (error != std::errc() || stop != end) return std::nullopt;
+#else
+    std::istringstream stream{std::string(text)};
+    stream.imbue(std::locale::classic());
+    if (!(stream >> value) || stream.peek() != std::char_traits<char>::eof()) return std::nullopt;
+#endif
+    if (!std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
+} // namespace pathlab

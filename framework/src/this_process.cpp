@@ -1,0 +1,71 @@
+#include "pathlab/this_process.h"
+
+#include <stdexcept>
+#include <system_error>
+
+#if defined(_WIN32)
+#include <windows.h>
+#else
+#include <dlfcn.h>
+#include <unistd.h>
+#endif
+#if defined(__APPLE__)
+#include <mach-o/dyld.h>
+#endif
+
+namespace pathlab {
+
+namespace fs = std::filesystem;
+
+fs::path thisProgram() {
+#if defined(_WIN32)
+    std::wstring name(MAX_PATH, L'\0');
+    DWORD length = 0;
+    while ((length = ::GetModuleFileNameW(nullptr, name.data(), static_cast<DWORD>(name.size()))) ==
+           name.size())
+        name.resize(name.size() * 2);
+    name.resize(length);
+    return fs::path(name);
+#elif defined(__APPLE__)
+    uint32_t size = 0;
+    ::_NSGetExecutablePath(nullptr, &size);
+    std::string name(size, '\0');
+    if (::_NSGetExecutablePath(name.data(), &size) != 0)
+        throw std::runtime_error("cannot find this program's own file");
+    return fs::canonical(name.c_str());
+#else
+    return fs::read_symlink("/proc/self/exe");
+#endif
+}
+
+long processId() {
+#if defined(_WIN32)
+    return static_cast<long>(::GetCurrentProcessId());
+#else
+    return static_cast<long>(::getpid());
+#endif
+}
+
+void* findLibrarySymbol(const fs::path& library, const char* symbol, std::string& why) {
+#if defined(_WIN32)
+    HMODULE handle = ::LoadLibraryW(library.c_str());
+    if (!handle) {
+        why = std::system_category().message(static_cast<int>(::GetLastError()));
+        return nullptr;
+    }
+    void* address = reinterpret_cast<void*>(::GetProcAddress(handle, symbol));
+    if (!address) why = std::string("no ") + symbol + " in it";
+    return address;
+#else
+    void* handle = ::dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+        why = ::dlerror();
+        return nullptr;
+    }
+    void* address = ::dlsym(handle, symbol);
+    if (!address) why = std::string("no ") + symbol + " in it";
+    return address;
+#endif
+}
+
+} // namespace pathlab
