@@ -1,6 +1,7 @@
 # PathLab: `make run` sets up, builds and renders the Cornell box; `make test` runs every test.
 BUILD ?= build
-JOBS ?= $(shell nproc)
+# The cores to build with: nproc on Linux, sysctl on macOS.
+JOBS ?= $(shell nproc 2>/dev/null || sysctl -n hw.ncpu 2>/dev/null || echo 2)
 # Built for this machine's instruction set: a build here runs here (NATIVE=OFF for a build that
 # runs elsewhere). Images are the same either way (framework/CMakeLists.txt).
 NATIVE ?= ON

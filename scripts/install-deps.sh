@@ -1,9 +1,14 @@
 #!/usr/bin/env bash
-# Installs the Debian/Ubuntu packages PathLab needs that are not installed yet. Uses apt-get
-# directly as root, through sudo otherwise; does nothing when everything is present.
+# Installs what PathLab needs and is not installed yet: Debian and Ubuntu packages with apt-get
+# (as root, through sudo otherwise), macOS ones with Homebrew. Elsewhere it stops and prints the
+# exact command for the system's package manager. Does nothing when everything is present.
 set -euo pipefail
+kit=$(cd "$(dirname "$0")/.." && pwd)
+# Installed by other means (another distribution, vcpkg, by hand): nothing to do.
+[ -n "${PATHLAB_DEPS_INSTALLED:-}" ] && exit 0
 
-packages=(
+# ---- Debian, Ubuntu (and WSL2 with Ubuntu) ----------------------------------------------------
+apt_packages=(
     cmake g++ ninja-build pkg-config python3
     libembree-dev embree-tools          # ray tracing; Embree's own viewer/pathtracer to compare with
     libopenimageio-dev openimageio-tools # image files
@@ -16,30 +21,85 @@ packages=(
     bubblewrap                          # sandboxed grading
     pandoc gnuplot-nox                  # handouts and their figures
 )
-
-if ! command -v dpkg-query >/dev/null 2>&1; then
-    echo "install-deps: not a Debian/Ubuntu system; install the equivalents of: ${packages[*]}" >&2
-    exit 0
+# The kit's own tests build it again with clang and libc++ (tests/platforms); the student
+# release, which has no solutions/, does not run them.
+if [ -d "$kit/solutions" ]; then
+    apt_packages+=(clang libc++-dev libc++abi-dev)
 fi
 
-missing=()
-for package in "${packages[@]}"; do
-    if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
-        missing+=("$package")
+# ---- macOS (Homebrew) -------------------------------------------------------------------------
+# Homebrew has no Dear ImGui and no tinyobjloader: a release of each goes in third_party/, where
+# CMake finds them (cmake/dependencies.cmake).
+brew_packages=(cmake ninja pkg-config python embree openimageio tbb nlohmann-json glfw catch2)
+imgui_release=v1.90.9
+tinyobjloader_release=v2.0.0rc13
+
+install_with_brew() {
+    local missing=()
+    for package in "${brew_packages[@]}"; do
+        brew list --formula "$package" >/dev/null 2>&1 || missing+=("$package")
+    done
+    if [ ${#missing[@]} -gt 0 ]; then
+        echo "install-deps: brew install ${missing[*]}"
+        brew install "${missing[@]}"
     fi
-done
-[ ${#missing[@]} -eq 0 ] && exit 0
+    if [ ! -f "$kit/third_party/imgui/imgui.cpp" ]; then
+        echo "install-deps: Dear ImGui $imgui_release into third_party/imgui"
+        git clone --quiet --depth 1 --branch "$imgui_release" \
+            https://github.com/ocornut/imgui.git "$kit/third_party/imgui"
+    fi
+    if [ ! -f "$kit/third_party/tinyobjloader/tiny_obj_loader.h" ]; then
+        echo "install-deps: tinyobjloader $tinyobjloader_release into third_party/tinyobjloader"
+        git clone --quiet --depth 1 --branch "$tinyobjloader_release" \
+            https://github.com/tinyobjloader/tinyobjloader.git "$kit/third_party/tinyobjloader"
+    fi
+}
 
-echo "install-deps: installing ${missing[*]}"
-if [ "$(id -u)" -eq 0 ]; then
-    apt_get=(apt-get)
-elif command -v sudo >/dev/null 2>&1; then
-    apt_get=(sudo apt-get)
-else
-    echo "install-deps: missing packages and no root or sudo to install them; as root run:" >&2
-    echo "  apt-get install ${missing[*]}" >&2
-    exit 1
-fi
-export DEBIAN_FRONTEND=noninteractive
-"${apt_get[@]}" update -qq
-"${apt_get[@]}" install -y -qq --no-install-recommends "${missing[@]}"
+install_with_apt() {
+    local missing=()
+    for package in "${apt_packages[@]}"; do
+        if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+            missing+=("$package")
+        fi
+    done
+    [ ${#missing[@]} -eq 0 ] && return 0
+
+    echo "install-deps: installing ${missing[*]}"
+    local apt_get
+    if [ "$(id -u)" -eq 0 ]; then
+        apt_get=(apt-get)
+    elif command -v sudo >/dev/null 2>&1; then
+        apt_get=(sudo apt-get)
+    else
+        echo "install-deps: missing packages and no root or sudo to install them; as root run:" >&2
+        echo "  apt-get install ${missing[*]}" >&2
+        exit 1
+    fi
+    export DEBIAN_FRONTEND=noninteractive
+    "${apt_get[@]}" update -qq
+    "${apt_get[@]}" install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+case "$(uname -s)" in
+    Darwin)
+        if ! command -v brew >/dev/null 2>&1; then
+            echo "install-deps: macOS without Homebrew: install it (https://brew.sh), then run" >&2
+            echo "  brew install ${brew_packages[*]}" >&2
+            echo "and make again (which puts Dear ImGui and tinyobjloader in third_party/)" >&2
+            exit 1
+        fi
+        install_with_brew
+        ;;
+    *)
+        if command -v dpkg-query >/dev/null 2>&1 && command -v apt-get >/dev/null 2>&1; then
+            install_with_apt
+        else
+            echo "install-deps: not Debian, Ubuntu or macOS: install these with your system's" >&2
+            echo "package manager (their Debian names): ${apt_packages[*]}" >&2
+            echo "or, with vcpkg (vcpkg.json): cmake --preset windows-vcpkg on Windows;" >&2
+            echo "  elsewhere: cmake -B build -DCMAKE_TOOLCHAIN_FILE=\$VCPKG_ROOT/scripts/buildsystems/vcpkg.cmake" >&2
+            echo "Once they are installed: PATHLAB_DEPS_INSTALLED=1 make run" >&2
+            exit 1
+        fi
+        ;;
+esac

@@ -40,7 +40,9 @@ if [ ${#whose[@]} -eq 0 ]; then
 fi
 
 cd "$build" || exit 2
-if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+# A screen to open the window on: on Linux a DISPLAY (X11) or WAYLAND_DISPLAY; macOS always has
+# one when logged in (the viewer says so when it cannot use it, over ssh say).
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] || [ "$(uname -s)" = Darwin ]; then
     echo "make run: opening the window on $what (h: help, q: quit)"
     problems=$(mktemp)
     # Its error output goes to the terminal as it comes, and to $problems for the test below.

@@ -1,4 +1,5 @@
-// grader submission / batch / merge: submitted labs, graded in the sandbox.
+// grader submission / batch: submitted labs, graded in the sandbox (Linux only; batch_merge.cpp
+// merges the gradebooks of batch shards anywhere).
 //
 // A batch grades each submission in a child `grader submission` process of its own, so one
 // submission that breaks anything (the grader included) costs that submission only. Each writes
@@ -11,11 +12,14 @@
 #include "commands.h"
 #include "gradebook.h"
 #include "grading_scenes.h"
+#include "lab_figures.h"
 #include "progress_bar.h"
 #include "submission_grading.h"
+#include "time_limit.h"
 
 #include "pathlab/input_error.h"
 #include "pathlab/render_stats.h"
+#include "pathlab/this_process.h"
 
 #include <algorithm>
 #include <chrono>
@@ -38,10 +42,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path thisProgram() { return fs::read_symlink("/proc/self/exe"); }
-
 LabBuild labBuildOfThisGrader() {
     return loadLabBuild((thisProgram().parent_path() / "lab_library_build.json").string());
+}
+
+/// The reference's start-up when the references were made; 0 if they hold none.
+double storedStartUpSeconds(const Arguments& a, const Rubric& rubric) {
+    try {
+        return loadLabFigures(a.references + "/lab_figures.json", rubric).startUpSeconds;
+    } catch (const InputError&) {
+        return 0;
+    }
 }
 
 void requireSandbox() {
@@ -154,6 +165,16 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
     g.threads = a.workCpus.empty() ? a.threads : static_cast<int>(a.workCpus.size());
     g.seedBase = a.seed;
     g.measureSpeed = a.speed;
+    // The time limits, scaled to this machine's speed now: the solutions' start-up timed as it
+    // was when the references were made (outside the sandbox, on every core).
+    GraderSetup probe;
+    probe.rubric = rubric;
+    probe.scratch = scratch;
+    probe.threads = a.threads;
+    g.runSeconds = scaledTimeLimit(rubric.secondsPerRun, speedSceneStartUpSeconds(probe, solution),
+                                   storedStartUpSeconds(a, rubric));
+    if (g.runSeconds > rubric.secondsPerRun)
+        notes.push_back(timeLimitNote(rubric.secondsPerRun, g.runSeconds));
     SubmissionOutcome outcome = gradeSubmission(g, a.inputs[0], a.out);
     outcome.report.notes.insert(outcome.report.notes.begin(), notes.begin(), notes.end());
     std::printf("%s: %s\n", outcome.id.c_str(), outcome.status.c_str());
@@ -260,30 +281,6 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
     log << timestamp() << " batch finished in " << seconds << " s\n";
     std::printf("graded %zu submission(s) in %.0f s (%zu skipped, %zu not graded): %s/gradebook.csv, "
                 "%s/summary.html\n", done - failed, seconds, skipped, failed, out.c_str(), out.c_str());
-    return 0;
-}
-
-int mergeBatches(const Arguments& a) {
-    fs::create_directories(a.out + "/submissions");
-    std::vector<GradebookEntry> all;
-    for (const std::string& shard : a.inputs) {
-        const fs::path folder = fs::path(shard) / "submissions";
-        if (!fs::is_directory(folder)) throw InputError(shard + ": not a batch's output (no submissions/ in it)");
-        for (const auto& entry : fs::directory_iterator(folder)) {
-            const std::string id = entry.path().filename().string();
-            const GradebookEntry e = readGradebookEntry(shard, id, "");
-            if (std::any_of(all.begin(), all.end(), [&](const GradebookEntry& x) { return x.id == id; }))
-                throw InputError("submission '" + id + "' is in more than one shard");
-            if (fs::absolute(shard) != fs::absolute(a.out))
-                fs::copy(entry.path(), fs::path(a.out) / "submissions" / id,
-                         fs::copy_options::recursive | fs::copy_options::overwrite_existing);
-            all.push_back(e);
-        }
-    }
-    std::sort(all.begin(), all.end(), [](const GradebookEntry& x, const GradebookEntry& y) { return x.id < y.id; });
-    writeGradebook(a.out, all);
-    std::printf("merged %zu submission(s) from %zu shard(s): %s/gradebook.csv\n", all.size(),
-                a.inputs.size(), a.out.c_str());
     return 0;
 }
 

@@ -1,0 +1,82 @@
+# PathLab's libraries, found the way each platform provides them: CMake config packages first
+# (vcpkg, Homebrew, Debian ships most of them too), pkg-config second (Dear ImGui on Debian and
+# Ubuntu), a source folder last (Dear ImGui and tinyobjloader where no package has them).
+# Each ends as one target the rest of the build links: embree, OpenImageIO::OpenImageIO,
+# TBB::tbb, pathlab_tinyobjloader, nlohmann_json::nlohmann_json, glfw, OpenGL::GL, pathlab_imgui.
+include(${CMAKE_CURRENT_LIST_DIR}/drop_missing_include_dirs.cmake)
+
+# Embree 3 on Debian 12, Embree 4 on Debian 13, Ubuntu 24.04, Homebrew and vcpkg; embree_api.h
+# hides the difference.
+find_package(embree 4 QUIET)
+if(NOT embree_FOUND)
+    find_package(embree 3 REQUIRED)
+endif()
+find_package(OpenImageIO REQUIRED)
+drop_missing_include_dirs(OpenImageIO::OpenImageIO)
+find_package(TBB REQUIRED)
+find_package(nlohmann_json REQUIRED)
+find_package(Threads REQUIRED)
+find_package(glfw3 3.3 REQUIRED)
+find_package(OpenGL REQUIRED)
+
+# tinyobjloader: its package's library, or its one header compiled here. The header is the way
+# when the library was built against another C++ standard library than this build's (the clang
+# + libc++ build on Debian) or when no package has it (PATHLAB_TINYOBJLOADER_HEADER=ON).
+option(PATHLAB_TINYOBJLOADER_HEADER "Compile tinyobjloader from its header, not its library" OFF)
+if(NOT PATHLAB_TINYOBJLOADER_HEADER)
+    find_package(tinyobjloader QUIET)
+endif()
+if(tinyobjloader_FOUND)
+    add_library(pathlab_tinyobjloader INTERFACE)
+    target_link_libraries(pathlab_tinyobjloader INTERFACE tinyobjloader::tinyobjloader)
+else()
+    find_path(PATHLAB_TINYOBJLOADER_INCLUDE tiny_obj_loader.h
+              PATHS ${PROJECT_SOURCE_DIR}/third_party/tinyobjloader PATH_SUFFIXES tinyobjloader)
+    if(NOT PATHLAB_TINYOBJLOADER_INCLUDE)
+        message(FATAL_ERROR "tinyobjloader not found: install its package (apt install "
+                "libtinyobjloader-dev, vcpkg install tinyobjloader) or put tiny_obj_loader.h "
+                "in third_party/tinyobjloader/ (scripts/install-deps.sh does on macOS)")
+    endif()
+    add_library(pathlab_tinyobjloader STATIC
+                ${PROJECT_SOURCE_DIR}/cmake/tinyobjloader_implementation.cpp)
+    target_include_directories(pathlab_tinyobjloader SYSTEM PUBLIC ${PATHLAB_TINYOBJLOADER_INCLUDE})
+    set_target_properties(pathlab_tinyobjloader PROPERTIES POSITION_INDEPENDENT_CODE ON)
+endif()
+
+# Dear ImGui with its GLFW and OpenGL 2 back-ends: vcpkg's package (imgui[glfw-binding,
+# opengl2-binding]), Debian's libimgui-dev through pkg-config, or a source folder (Homebrew has
+# no package: scripts/install-deps.sh puts a release of it in third_party/imgui).
+add_library(pathlab_imgui INTERFACE)
+find_package(imgui CONFIG QUIET)
+set(PATHLAB_IMGUI_SOURCE ${PROJECT_SOURCE_DIR}/third_party/imgui
+    CACHE PATH "A Dear ImGui source folder, used when no package provides it")
+if(imgui_FOUND)
+    target_link_libraries(pathlab_imgui INTERFACE imgui::imgui)
+    set(PATHLAB_IMGUI_FROM "its CMake package")
+else()
+    find_package(PkgConfig QUIET)
+    if(PKG_CONFIG_FOUND)
+        pkg_check_modules(IMGUI QUIET IMPORTED_TARGET GLOBAL imgui)
+    endif()
+    if(IMGUI_FOUND)
+        find_path(PATHLAB_IMGUI_BACKENDS imgui_impl_glfw.h PATHS ${IMGUI_INCLUDE_DIRS}
+                  PATH_SUFFIXES backends REQUIRED)
+        target_link_libraries(pathlab_imgui INTERFACE PkgConfig::IMGUI)
+        target_include_directories(pathlab_imgui INTERFACE ${PATHLAB_IMGUI_BACKENDS})
+        set(PATHLAB_IMGUI_FROM "pkg-config")
+    elseif(EXISTS ${PATHLAB_IMGUI_SOURCE}/imgui.cpp)
+        set(dir ${PATHLAB_IMGUI_SOURCE})
+        add_library(pathlab_imgui_sources STATIC
+            ${dir}/imgui.cpp ${dir}/imgui_draw.cpp ${dir}/imgui_tables.cpp ${dir}/imgui_widgets.cpp
+            ${dir}/backends/imgui_impl_glfw.cpp ${dir}/backends/imgui_impl_opengl2.cpp)
+        target_include_directories(pathlab_imgui_sources SYSTEM PUBLIC ${dir} ${dir}/backends)
+        target_link_libraries(pathlab_imgui_sources PUBLIC glfw OpenGL::GL)
+        target_link_libraries(pathlab_imgui INTERFACE pathlab_imgui_sources)
+        set(PATHLAB_IMGUI_FROM "${dir}")
+    else()
+        message(FATAL_ERROR "Dear ImGui not found: apt install libimgui-dev (Debian, Ubuntu), "
+                "vcpkg install \"imgui[glfw-binding,opengl2-binding]\", or a release of its "
+                "sources in ${PATHLAB_IMGUI_SOURCE} (scripts/install-deps.sh does on macOS)")
+    endif()
+endif()
+message(STATUS "Dear ImGui: from ${PATHLAB_IMGUI_FROM}")
