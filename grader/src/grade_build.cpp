@@ -6,6 +6,7 @@
 #include "lab_figures.h"
 #include "progress_bar.h"
 #include "reports.h"
+#include "time_limit.h"
 
 #include "pathlab/input_error.h"
 #include "pathlab/render_stats.h"
@@ -31,6 +32,7 @@ void makeLabFigures(const Arguments& a, const Rubric& rubric, const std::string&
     setup.threads = a.threads;
     LabFigures figures;
     figures.machine = thisMachine(a.threads);
+    figures.startUpSeconds = speedSceneStartUpSeconds(setup, setup.solution);
     {
         ProgressBar bar("lab figures: timed runs", "labs");
         for (Lab lab : AllLabs) {
@@ -103,6 +105,15 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
         }
     }
     setup.scenes = gradingScenes(rubric, a.references, a.scenesDir, "", setup.solution, scratch, report.notes);
+    // The time limits, scaled to this machine's speed now: the reference's start-up where this
+    // build has the solutions, the student's own viewer's where it has not (the start-up is the
+    // scene and Embree's BVH, the same for any lab).
+    setup.runSeconds = scaledTimeLimit(
+        rubric.secondsPerRun,
+        speedSceneStartUpSeconds(setup, PATHLAB_HAS_SOLUTIONS ? setup.solution : setup.student),
+        stored ? stored->startUpSeconds : 0);
+    if (setup.runSeconds > rubric.secondsPerRun)
+        report.notes.push_back(timeLimitNote(rubric.secondsPerRun, setup.runSeconds));
     for (Lab lab : a.labs) {
         std::fprintf(stderr, "grading %s ...\n", std::string(labName(lab)).c_str());
         report.labs.push_back(gradeLab(setup, lab));

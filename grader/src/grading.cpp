@@ -40,7 +40,9 @@ std::string format(const char* pattern, double a, double b = 0, double c = 0, do
     return text;
 }
 
-ProcessLimits limitsOf(const Rubric& r) { return {r.secondsPerRun, r.memoryBytes}; }
+ProcessLimits limitsOf(const GraderSetup& s) {
+    return {s.runSeconds > 0 ? s.runSeconds : s.rubric.secondsPerRun, s.rubric.memoryBytes};
+}
 
 /// k independent renders of one lab on one scene.
 struct SceneRuns {
@@ -64,7 +66,7 @@ SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab l
     const RenderRequest request{&setup.student, scene.path, lab, r.width, r.height,
                                 r.correctnessSpp[static_cast<int>(lab)], r.maxDepth,
                                 r.continueProb, seedBase, r.seeds, setup.threads, setup.scratch};
-    const RenderResult result = renderLab(request, limitsOf(r));
+    const RenderResult result = renderLab(request, limitsOf(setup));
     if (!result.ok) {
         runs.failure = result.failure;
         runs.failureKind = result.failureKind;
@@ -341,16 +343,19 @@ private:
 /// itself.
 double startupSeconds(const GraderSetup& setup, const LabRunner& runner, const std::string& scene,
                       Lab lab, int threads) {
-    static std::map<std::string, double> measured; // per scene, once per grading
-    if (const auto known = measured.find(scene); known != measured.end()) return known->second;
+    // Once per grading for each scene, viewer (the sandboxed one starts slower) and thread count.
+    static std::map<std::string, double> measured;
+    const std::string key = scene + "|" + runner.viewer + "|" + runner.labsLibrary + "|" +
+                            std::to_string(threads);
+    if (const auto known = measured.find(key); known != measured.end()) return known->second;
     std::vector<double> seconds;
     for (int i = 0; i < 3; ++i) {
         RenderRequest request{&runner, scene, lab, 1, 1, 1, setup.rubric.maxDepth,
                               setup.rubric.continueProb, 1, 1, threads, setup.scratch};
-        const RenderResult r = renderLab(request, limitsOf(setup.rubric));
+        const RenderResult r = renderLab(request, limitsOf(setup));
         if (r.ok) seconds.push_back(r.process.seconds);
     }
-    return measured[scene] = median(seconds);
+    return measured[key] = median(seconds);
 }
 
 /// The rubric's timed renders: where, how many threads, and the start-up to subtract (measured
@@ -387,7 +392,7 @@ TimedRun timedRun(const GraderSetup& setup, const TimedSeries& series, const Lab
     RenderRequest request{&runner, series.scene, lab, r.speedWidth, r.speedHeight,
                           r.speedSpp[static_cast<int>(lab)], r.maxDepth, r.continueProb,
                           static_cast<uint64_t>(77 + run), 1, series.threads, setup.scratch};
-    TimedRun timed{renderLab(request, limitsOf(r))};
+    TimedRun timed{renderLab(request, limitsOf(setup))};
     if (!timed.result.ok) return timed;
     const double samples = static_cast<double>(request.width) * request.height * request.spp;
     timed.samplesPerSecond = samples / std::max(timed.result.process.seconds - series.startup, 1e-3);
@@ -485,6 +490,10 @@ CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade
 }
 
 } // namespace
+
+double speedSceneStartUpSeconds(const GraderSetup& setup, const LabRunner& runner) {
+    return timedSeries(setup, runner, Lab::Branching).startup;
+}
 
 LabGrade ungradedLab(const Rubric& rubric, Lab lab, bool measureSpeed, const std::string& reason,
                      const std::vector<std::string>& details) {

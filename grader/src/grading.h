@@ -70,6 +70,8 @@ struct GraderSetup {
     uint64_t seedBase = 1;
     int threads = 0;
     bool measureSpeed = true;
+    /// Each render's wall-time limit here and now (time_limit.h); 0: the rubric's.
+    double runSeconds = 0;
     /// A build without the solutions cannot check speed (measureSpeed false), but it still times
     /// the student's labs, for the speed ratios between them; the reference's ratios then come
     /// from the stored figures (lab_figures.json, by lab; 0 where none).
@@ -78,6 +80,11 @@ struct GraderSetup {
 };
 
 LabGrade gradeLab(const GraderSetup& setup, Lab lab);
+
+/// The start-up of one render on the rubric's speed scene with `runner`'s labs (one pixel:
+/// loading the scene and building Embree's BVH), the median of three, measured once per grading;
+/// 0 if none ran. The speed check subtracts it; time_limit.h scales the limits with it.
+double speedSceneStartUpSeconds(const GraderSetup& setup, const LabRunner& runner);
 
 /// The median samples/s of the rubric's timed runs of one lab with `runner`'s labs alone (for
 /// the stored reference figures); 0 if a run failed.

@@ -141,7 +141,8 @@ void saveLabFigures(const std::string& path, const LabFigures& figures, const Ru
                       {"graded_continue_prob", rubric.continueProb}, {"estimators", notebook}}},
         {"timed_runs", {{"scene", rubric.speedScene}, {"width", rubric.speedWidth},
                         {"height", rubric.speedHeight}, {"spp", timedSpp},
-                        {"runs", rubric.speedRuns}, {"samples_per_second", timed}}}};
+                        {"runs", rubric.speedRuns}, {"samples_per_second", timed},
+                        {"start_up_seconds", figures.startUpSeconds}}}};
     writeFileAtomically(path, j.dump(1) + "\n");
 }
 
@@ -165,6 +166,7 @@ LabFigures loadLabFigures(const std::string& path, const Rubric& rubric) {
             if (sameRuns && t.at("spp").at(name) == rubric.speedSpp[static_cast<int>(lab)])
                 figures.timedSamplesPerSecond[static_cast<int>(lab)] = t.at("samples_per_second").at(name);
         }
+        if (t.at("scene") == rubric.speedScene) figures.startUpSeconds = t.value("start_up_seconds", 0.0);
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ": " + e.what());
     }

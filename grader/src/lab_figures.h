@@ -55,6 +55,9 @@ struct LabFigures {
     /// lab, 0 where not measured. For the reference solutions these stand in for timing them
     /// next to the student's labs where the solutions are not part of the build.
     std::array<double, 4> timedSamplesPerSecond{};
+    /// The start-up of a render on the speed scene (speedSceneStartUpSeconds), 0 where not
+    /// measured: the yardstick of how much slower a machine runs when grading (time_limit.h).
+    double startUpSeconds = 0;
 };
 
 /// Renders the notebook's rows with `runner`'s labs on the rubric's noise scene.

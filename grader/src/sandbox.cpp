@@ -1,4 +1,5 @@
 #include "sandbox.h"
+#include "user_namespaces.h"
 
 #include <algorithm>
 #include <csignal>
@@ -114,11 +115,14 @@ std::string sandboxUnavailableReason() {
     SandboxRun probe;
     probe.command = {"/bin/true"};
     const SandboxOutcome o = runInSandbox(probe, {20, 0}, {{}, sandboxUserForThisProcess()});
-    if (!o.process.succeeded())
-        return "bubblewrap cannot make a sandbox here (" + o.process.describe() + "): " +
-               o.process.outputTail(2) +
-               " (unprivileged user namespaces must be enabled: sysctl kernel.unprivileged_userns_clone=1)";
-    return "";
+    if (o.process.succeeded()) return "";
+    const std::string cannot = "bubblewrap cannot make a sandbox here (" + o.process.describe() +
+                               "): " + o.process.outputTail(2);
+    if (const std::string remedy = userNamespaceRemedy(); !remedy.empty())
+        return cannot + ". " + remedy;
+    // Inside a chroot or a container, bwrap cannot make its mounts ("Failed to make / slave").
+    return cannot + ". If this is a chroot or a container, grade on the host, or give the "
+                    "container its own mount namespace (e.g. docker run --privileged)";
 }
 
 int sandboxUserForThisProcess() {

@@ -54,6 +54,7 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
         setup.seedBase = grader.seedBase;
         setup.threads = grader.threads;
         setup.measureSpeed = grader.measureSpeed;
+        setup.runSeconds = grader.runSeconds;
         std::string broken; // names of the labs that do not compile
         for (Lab lab : AllLabs) {
             const LabCompilation& compiled = library.labs[static_cast<int>(lab)];

@@ -23,6 +23,7 @@ struct SubmissionGrader {
     uint64_t seedBase = 1;
     int threads = 0;           ///< threads per correctness render (0: all cores)
     bool measureSpeed = true;
+    double runSeconds = 0;     ///< each render's time limit (GraderSetup::runSeconds)
 };
 
 struct SubmissionOutcome {
