@@ -1,0 +1,103 @@
+#!/usr/bin/env python3
+"""The kit built with clang and libc++, the nearest this machine has to a Mac's Apple clang.
+
+What it proves, in a build folder of its own beside the kit's:
+  - the framework, the labs (the stubs and the solutions) and the viewer compile with clang and
+    libc++ with warnings as errors, and everything else (grader, tests) compiles and links;
+  - the build without the Linux-only parts (PATHLAB_SANDBOX=OFF: no bubblewrap sandbox, seccomp
+    filter or batch grading), which is what macOS builds, and `grader batch` there says in one
+    line that it needs Linux;
+  - its test suite passes: sampling, scene, render, the lab tests on the solutions, the
+    grader's own unit tests, the window under Xvfb, and a local grade of one lab.
+Debian's OpenImageIO is built against libstdc++, so the image plug-in alone is built with it
+(its interface is C only); tinyobjloader is compiled from its header for the same reason. The
+configuration is CMakePresets.json's `clang-libcxx`.
+
+Exits 77 (skipped, with the reason on one line) when clang++ or libc++ is not installed.
+"""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+SKIP = 77
+
+
+def run(command, cwd, what, timings):
+    print("$ " + " ".join(command), flush=True)
+    start = time.monotonic()
+    result = subprocess.run(command, cwd=cwd)
+    timings.append((what, time.monotonic() - start))
+    if result.returncode != 0:
+        print(f"clang + libc++: {what} failed (exit {result.returncode})", flush=True)
+        report(timings)
+        sys.exit(1)
+
+
+def report(timings):
+    for what, seconds in timings:
+        print(f"clang + libc++: {what}: {seconds:.0f} s")
+
+
+def libcxx_missing(compiler):
+    probe = subprocess.run([compiler, "-x", "c++", "-std=c++17", "-stdlib=libc++", "-E", "-"],
+                           input="#include <vector>\n", capture_output=True, text=True)
+    return probe.returncode != 0
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--source", required=True, help="the kit's source folder")
+    parser.add_argument("--build", required=True, help="the folder to build in (made fresh)")
+    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
+    args = parser.parse_args()
+
+    compiler = shutil.which("clang++")
+    if not compiler:
+        print("SKIPPED: clang++ is not installed (apt install clang)")
+        return SKIP
+    if libcxx_missing(compiler):
+        print("SKIPPED: libc++ is not installed (apt install libc++-dev libc++abi-dev)")
+        return SKIP
+
+    shutil.rmtree(args.build, ignore_errors=True)
+    timings = []
+    # The preset in CMakePresets.json, which a maintainer uses by hand too, in our own folder.
+    run(["cmake", "--preset", "clang-libcxx", "-B", args.build, f"-DCMAKE_CXX_COMPILER={compiler}"],
+        args.source, "configure", timings)
+    run(["cmake", "--build", args.build, "-j", str(args.jobs)], args.source, "build", timings)
+
+    # Built with libc++: the standard library a program uses shows in what it links.
+    linked = subprocess.run(["ldd", os.path.join(args.build, "viewer")], capture_output=True,
+                            text=True).stdout
+    if "libc++.so" not in linked:
+        print("clang + libc++: the viewer is not linked with libc++:\n" + linked)
+        return 1
+
+    run(["ctest", "--output-on-failure", "-j", str(args.jobs),
+         "-R", r"^(sampling|scene|render|estimators(\.lab[1-4])?|grader|viewer\.window)$"],
+        args.build, "tests", timings)
+
+    # A local grade of one lab, through the portable process runner, and batch grading's refusal.
+    grader = os.path.join(args.build, "grader")
+    graded = subprocess.run([grader, "--viewer", os.path.join(args.build, "viewer_solutions_as_student"),
+                             "--lab", "importance"], cwd=args.build, capture_output=True, text=True)
+    print(graded.stdout + graded.stderr)
+    if not re.search(r"^importance\s+pass \d+/\d+", graded.stdout, re.MULTILINE):
+        print("clang + libc++: the local grade of the solution did not pass its correctness check")
+        return 1
+    batch = subprocess.run([grader, "batch", args.build, "--out", os.path.join(args.build, "batch")],
+                           cwd=args.build, capture_output=True, text=True)
+    print(batch.stderr.strip())
+    if batch.returncode != 2 or "needs Linux and bubblewrap" not in batch.stderr:
+        print("clang + libc++: `grader batch` without the sandbox should say it needs Linux")
+        return 1
+    report(timings)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
