@@ -47,7 +47,7 @@ std::string renderSandboxed(const RenderRequest& r, const ProcessLimits& limits,
     const auto arguments = viewerArguments(r, "render.exr", "render.json");
     run.command.insert(run.command.end(), arguments.begin(), arguments.end());
     // The viewer loads its image-file plug-in from beside itself.
-    const std::string plugin = "libpathlab_image_files.so";
+    const std::string plugin = imagePluginFileName();
     run.files = {{r.runner->viewer, "/pathlab/viewer"}, {r.runner->labsLibrary, "/pathlab/labs.so"},
                  {(fs::path(r.runner->viewer).parent_path() / plugin).string(), "/pathlab/" + plugin}};
     for (const std::string& file : sceneFiles(r.scene)) run.files.push_back({file, file});
