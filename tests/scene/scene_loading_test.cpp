@@ -71,11 +71,9 @@ TEST_CASE("PathLab's scenes load without notes or warnings", "[scene][solutions]
 }
 
 TEST_CASE("Embree's own cornell_box.ecs loads unchanged, point light included", "[scene]") {
-    const std::string embreeBox = "/usr/share/doc/embree3/models/cornell_box.ecs";
-    if (!std::filesystem::exists(embreeBox)) {
-        WARN("embree-tools is not installed; skipping " << embreeBox);
-        return;
-    }
+    const std::string embreeBox = PATHLAB_EMBREE_MODELS_DIR "/cornell_box.ecs";
+    if (!std::filesystem::exists(embreeBox))
+        PATHLAB_SKIP(embreeBox << " is missing: Embree's models come with embree-tools");
     const RenderOptions options = optionsFor({"-c", embreeBox});
     REQUIRE(options.pointLights.size() == 1);
     CHECK(options.pointLights[0].position.y == Approx(300));
