@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-    cmake g++ ninja-build pkg-config python3
+    make cmake g++ ninja-build pkg-config python3 # make: a minimal Debian has none
     libembree-dev embree-tools          # ray tracing; Embree's own viewer/pathtracer to compare with
     libopenimageio-dev openimageio-tools # image files
     libtbb-dev                          # threads
@@ -16,6 +16,14 @@ packages=(
     bubblewrap                          # sandboxed grading
     pandoc gnuplot-nox                  # handouts and their figures
 )
+# The instructor's kit (it has solutions/; the student release does not) also needs these.
+kit=$(dirname "$0")/..
+if [ -d "$kit/solutions" ]; then
+    packages+=(
+        git                             # the grader reads submissions that are git repositories
+        debootstrap                     # ctest -L platforms: the kit on Debian 13, in its own root
+    )
+fi
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
     echo "install-deps: not a Debian/Ubuntu system; install the equivalents of: ${packages[*]}" >&2
