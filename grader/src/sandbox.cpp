@@ -114,10 +114,20 @@ std::string sandboxUnavailableReason() {
     SandboxRun probe;
     probe.command = {"/bin/true"};
     const SandboxOutcome o = runInSandbox(probe, {20, 0}, {{}, sandboxUserForThisProcess()});
-    if (!o.process.succeeded())
-        return "bubblewrap cannot make a sandbox here (" + o.process.describe() + "): " +
-               o.process.outputTail(2) +
-               " (unprivileged user namespaces must be enabled: sysctl kernel.unprivileged_userns_clone=1)";
+    if (!o.process.succeeded()) {
+        const std::string said = o.process.outputTail(2);
+        // Run as root, the sandbox runs as an unused user id (sandboxUserForThisProcess), which
+        // must read the kit's files bound into it: not so for a kit in /root, mode 700.
+        const bool unreadable =
+            ::geteuid() == 0 && said.find("Permission denied") != std::string::npos;
+        const std::string hint =
+            unreadable ? "run as root, the grader sandboxes as an unused user id, which must read "
+                         "the kit: make its folder and those above it readable by all users"
+                       : "unprivileged user namespaces must be enabled: sysctl "
+                         "kernel.unprivileged_userns_clone=1";
+        return "bubblewrap cannot make a sandbox here (" + o.process.describe() + "): " + said +
+               " (" + hint + ")";
+    }
     return "";
 }
 
