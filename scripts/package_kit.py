@@ -36,6 +36,7 @@ STUDENT_EXCLUDED = (
     "tests/gradescope/",
     "tests/bench/",
     "tests/viewer/",
+    "tests/platforms/",
     "grader/hidden_scenes/",
     "grader/slurm/",
     "apps/bench/",
