@@ -11,6 +11,20 @@ find_package(embree 4 QUIET)
 if(NOT embree_FOUND)
     find_package(embree 3 REQUIRED)
 endif()
+# Embree's own tools, which the benchmark and the scene tests compare with, where Debian's and
+# Ubuntu's embree-tools put them for the Embree found: Embree 4's tutorials are called embree_NAME
+# (pathtracer is embree_pathtracer), and their models are in the documentation folder of Embree's
+# major version (/usr/share/doc/embree4/models). The one place that knows; whether the tools are
+# installed is found out where they are used, which says so when they are not.
+add_library(pathlab_embree_tools INTERFACE)
+if(embree_VERSION VERSION_GREATER_EQUAL 4)
+    set(PATHLAB_EMBREE_PATHTRACER embree_pathtracer)
+else()
+    set(PATHLAB_EMBREE_PATHTRACER pathtracer)
+endif()
+target_compile_definitions(pathlab_embree_tools INTERFACE
+    PATHLAB_EMBREE_PATHTRACER="${PATHLAB_EMBREE_PATHTRACER}"
+    PATHLAB_EMBREE_MODELS_DIR="/usr/share/doc/embree${embree_VERSION_MAJOR}/models")
 find_package(OpenImageIO REQUIRED)
 drop_missing_include_dirs(OpenImageIO::OpenImageIO)
 find_package(TBB REQUIRED)

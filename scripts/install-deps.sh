@@ -9,7 +9,7 @@ kit=$(cd "$(dirname "$0")/.." && pwd)
 
 # ---- Debian, Ubuntu (and WSL2 with Ubuntu) ----------------------------------------------------
 apt_packages=(
-    cmake g++ ninja-build pkg-config python3
+    make cmake g++ ninja-build pkg-config python3 # make: a minimal Debian has none
     libembree-dev embree-tools          # ray tracing; Embree's own viewer/pathtracer to compare with
     libopenimageio-dev openimageio-tools # image files
     libtbb-dev                          # threads
@@ -21,10 +21,13 @@ apt_packages=(
     bubblewrap                          # sandboxed grading
     pandoc gnuplot-nox                  # handouts and their figures
 )
-# The kit's own tests build it again with clang and libc++ (tests/platforms); the student
-# release, which has no solutions/, does not run them.
+# The instructor's kit (it has solutions/; the student release does not) also needs these.
 if [ -d "$kit/solutions" ]; then
-    apt_packages+=(clang libc++-dev libc++abi-dev)
+    apt_packages+=(
+        git                             # the grader reads submissions that are git repositories
+        clang libc++-dev libc++abi-dev  # ctest -L platforms: the kit with clang and libc++
+        debootstrap                     # ctest -L platforms: the kit on Debian 13, in its own root
+    )
 fi
 
 # ---- macOS (Homebrew) -------------------------------------------------------------------------

@@ -116,9 +116,9 @@ pathtracer, and prints one table per scene.
   --continue-prob P      lab 4 (default 0.1)
   --json FILE            also write the results as JSON
 Embree's pathtracer (package embree-tools)
-  --pathtracer PROGRAM   its executable (default: pathtracer in PATH)
+  --pathtracer PROGRAM   its executable (default: )" PATHLAB_EMBREE_PATHTRACER R"( in PATH)
   --no-pathtracer        skip the comparison
-  --peer-scene FILE.ecs  its scene (default /usr/share/doc/embree3/models/cornell_box.ecs)
+  --peer-scene FILE.ecs  its scene (default )" PATHLAB_EMBREE_MODELS_DIR R"(/cornell_box.ecs)
   --peer-light-scale S   scales the scene's point lights so the 8-bit output does not clip
                          (default 0.1)
   --peer-spp N           samples per pixel of one timed frame (default 4)

@@ -18,8 +18,9 @@ struct BenchOptions {
     std::string jsonFile;            ///< --json FILE: the results as JSON as well
 
     // Embree's own path tracer, on its Cornell box.
-    std::string pathtracer = "pathtracer"; ///< --pathtracer PROGRAM; --no-pathtracer skips it
-    std::string peerScene = "/usr/share/doc/embree3/models/cornell_box.ecs"; ///< --peer-scene
+    // By default where embree-tools puts them for the Embree built against (CMakeLists.txt).
+    std::string pathtracer = PATHLAB_EMBREE_PATHTRACER; ///< --pathtracer; --no-pathtracer skips it
+    std::string peerScene = PATHLAB_EMBREE_MODELS_DIR "/cornell_box.ecs"; ///< --peer-scene
     float peerLightScale = 0.1f; ///< --peer-light-scale: dims the scene's point lights
     int peerSpp = 4;             ///< --peer-spp: samples per pixel of one timed frame
     int peerImageSpp = 16;       ///< --peer-image-spp: of the images whose means are compared

@@ -116,12 +116,17 @@ std::string sandboxUnavailableReason() {
     probe.command = {"/bin/true"};
     const SandboxOutcome o = runInSandbox(probe, {20, 0}, {{}, sandboxUserForThisProcess()});
     if (o.process.succeeded()) return "";
+    const std::string said = o.process.outputTail(2);
     const std::string cannot = "bubblewrap cannot make a sandbox here (" + o.process.describe() +
-                               "): " + o.process.outputTail(2);
-    if (const std::string remedy = userNamespaceRemedy(); !remedy.empty())
-        return cannot + ". " + remedy;
+                               "): " + said + ". ";
+    // Run as root, the sandbox runs as an unused user id (sandboxUserForThisProcess), which must
+    // read the kit's files bound into it: not so for a kit in /root, mode 700.
+    if (::geteuid() == 0 && said.find("Permission denied") != std::string::npos)
+        return cannot + "Run as root, the grader sandboxes as an unused user id, which must read "
+                        "the kit: make its folder and those above it readable by all users";
+    if (const std::string remedy = userNamespaceRemedy(); !remedy.empty()) return cannot + remedy;
     // Inside a chroot or a container, bwrap cannot make its mounts ("Failed to make / slave").
-    return cannot + ". If this is a chroot or a container, grade on the host, or give the "
+    return cannot + "If this is a chroot or a container, grade on the host, or give the "
                     "container its own mount namespace (e.g. docker run --privileged)";
 }
 

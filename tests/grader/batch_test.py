@@ -152,8 +152,11 @@ def test_rubric(root):
     rubric = json.load(open(os.path.join(args.source, "grader", "rubric.json")))
     rubric["correctness"]["seeds"] = 4
     # Two timed runs each, and a lenient threshold: this test checks verdicts, not how steady
-    # this machine's timings are (tests/grader/grader_test.py --slow does).
-    rubric["speed"].update({"runs": 2, "min_ratio": 0.5})
+    # this machine's timings are (tests/grader/grader_test.py --slow does). On the 2-core CI
+    # machine, with the test alone, the first correct submission's branching lab measured 0.67
+    # to 0.69 times the reference (the same code) on Debian 12 and 13, and one of its labs fell
+    # below 0.5, losing its speed points, in 2 of 4 runs on Debian 13.
+    rubric["speed"].update({"runs": 2, "min_ratio": 0.25})
     rubric["limits"]["seconds_per_run"] = 8
     path = os.path.join(root, "rubric.json")
     json.dump(rubric, open(path, "w"))

@@ -162,6 +162,7 @@ def check_contents(root, files):
             ("grader tests built on them",
              any_named(lambda f: f in ("tests/grader/grader_test.py",
                                        "tests/grader/batch_test.py"))),
+            ("kit's test on Debian 13", any_named(lambda f: f.startswith("tests/platforms/"))),
             ("instructors' or maintainers' documents, or the kit's README",
              any_named(lambda f: f.startswith("docs/") or f == "README-student.md")),
             ("archives or compiled code",
