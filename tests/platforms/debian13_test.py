@@ -27,6 +27,7 @@ Skipped (exit 77, one line saying why) where it cannot run: not root, no deboots
 namespaces, Debian's archive out of reach, too little disk space.
 """
 import argparse
+import ctypes
 import os
 import re
 import resource
@@ -114,7 +115,7 @@ def run_phase(name, command, log, timeout):
     start, cpu = time.monotonic(), cpu_seconds()
     with open(log, "w") as out:
         process = subprocess.Popen(command, stdout=out, stderr=subprocess.STDOUT,
-                                   stdin=subprocess.DEVNULL)
+                                   stdin=subprocess.DEVNULL, preexec_fn=die_with_this_process)
         try:
             status = process.wait(timeout=timeout)
         except subprocess.TimeoutExpired:
@@ -128,6 +129,13 @@ def run_phase(name, command, log, timeout):
     print(f"{name}: {seconds:.0f} s (CPU {cpu:.0f} s)" +
           ("" if status == 0 else f", {'timed out' if status is None else 'failed'}"), flush=True)
     return status, seconds
+
+
+def die_with_this_process():
+    """In the child: the kernel kills it if this test dies, even by SIGKILL (a ctest timeout);
+    unshare --kill-child then takes the rest of the phase's processes with it."""
+    PR_SET_PDEATHSIG = 1
+    ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL)
 
 
 def cpu_seconds():
