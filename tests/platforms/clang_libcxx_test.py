@@ -13,7 +13,7 @@ Debian's OpenImageIO is built against libstdc++, so the image plug-in alone is b
 (its interface is C only); tinyobjloader is compiled from its header for the same reason. The
 configuration is CMakePresets.json's `clang-libcxx`.
 
-Exits 77 (skipped, with the reason on one line) when clang++ or libc++ is not installed.
+Exits 77 (skipped, with the reason on a line starting "skipped:") when clang++ or libc++ is not installed.
 """
 import argparse
 import os
@@ -57,10 +57,10 @@ def main():
 
     compiler = shutil.which("clang++")
     if not compiler:
-        print("SKIPPED: clang++ is not installed (apt install clang)")
+        print("skipped: clang++ is not installed (apt install clang)")
         return SKIP
     if libcxx_missing(compiler):
-        print("SKIPPED: libc++ is not installed (apt install libc++-dev libc++abi-dev)")
+        print("skipped: libc++ is not installed (apt install libc++-dev libc++abi-dev)")
         return SKIP
 
     shutil.rmtree(args.build, ignore_errors=True)
