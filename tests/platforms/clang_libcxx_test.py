@@ -13,7 +13,8 @@ Debian's OpenImageIO is built against libstdc++, so the image plug-in alone is b
 (its interface is C only); tinyobjloader is compiled from its header for the same reason. The
 configuration is CMakePresets.json's `clang-libcxx`.
 
-Exits 77 (skipped, with the reason on a line starting "skipped:") when clang++ or libc++ is not installed.
+Exits 77 (skipped, with the reason on a line starting "skipped:") when clang++ or libc++ is
+not installed.
 """
 import argparse
 import os
