@@ -343,10 +343,12 @@ private:
 /// itself.
 double startupSeconds(const GraderSetup& setup, const LabRunner& runner, const std::string& scene,
                       Lab lab, int threads) {
-    // Once per grading for each scene, viewer (the sandboxed one starts slower) and thread count.
+    // Once per grading for each scene, lab, viewer (the sandboxed one starts slower) and thread
+    // count: the speed check's own (Lab::Uniform) is measured just before its first timed runs,
+    // apart from the time limits' (Lab::Branching), measured at the start of the grading.
     static std::map<std::string, double> measured;
-    const std::string key = scene + "|" + runner.viewer + "|" + runner.labsLibrary + "|" +
-                            std::to_string(threads);
+    const std::string key = scene + "|" + std::string(labName(lab)) + "|" + runner.viewer + "|" +
+                            runner.labsLibrary + "|" + std::to_string(threads);
     if (const auto known = measured.find(key); known != measured.end()) return known->second;
     std::vector<double> seconds;
     for (int i = 0; i < 3; ++i) {
