@@ -151,12 +151,14 @@ def make_class(root, outside, port):
 def test_rubric(root):
     rubric = json.load(open(os.path.join(args.source, "grader", "rubric.json")))
     rubric["correctness"]["seeds"] = 4
-    # Two timed runs each, and a lenient threshold: this test checks verdicts, not how steady
-    # this machine's timings are (tests/grader/grader_test.py --slow does). On the 2-core CI
-    # machine, with the test alone, the first correct submission's branching lab measured 0.67
-    # to 0.69 times the reference (the same code) on Debian 12 and 13, and one of its labs fell
-    # below 0.5, losing its speed points, in 2 of 4 runs on Debian 13.
-    rubric["speed"].update({"runs": 2, "min_ratio": 0.25})
+    # Two timed runs each, and no threshold: this test checks verdicts (a correct lab gets its
+    # speed points, a wrong one none), not how steady this machine's timings are
+    # (tests/grader/grader_test.py and its --slow do). On the 2-core CI machine, alone, a
+    # correct submission's branching lab measured 0.67 times the reference (the same code), and
+    # in Debian 13 runs below 0.5 and once below 0.25. Branching's timed render is the shortest:
+    # graded with 2 threads, 0.3 s once the start-up (0.45 to 0.65 s) is subtracted, while a
+    # run's time varies by 0.1 to 0.5 s on this machine.
+    rubric["speed"].update({"runs": 2, "min_ratio": 0.0})
     rubric["limits"]["seconds_per_run"] = 8
     path = os.path.join(root, "rubric.json")
     json.dump(rubric, open(path, "w"))
