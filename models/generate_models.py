@@ -285,6 +285,50 @@ def refraction_check():
     return n
 
 
+def mixed_surfaces():
+    """A room whose surfaces mix a diffuse component with a mirror (Kd+Ks) or a transparent one
+    (Kd+Kt) of the same strength, lit by one lamp that faces one wall: what a diffuse bounce
+    brings back depends strongly on its direction, so a lab that draws diffuse directions from
+    part of the hemisphere only (a random number reused from the component pick, one number for
+    both coordinates, the wrong side of a surface hit from behind) gets the wrong mean, which the
+    furnaces, alike in every direction, cannot show."""
+    mesh = Mesh()
+    # A box x in [-1, 1], y in [0, 2], z in [0, 2], open at z = 0 where the camera looks in, so
+    # light arrives from the back more than from the front. Seen from the camera (at z < 0
+    # looking down +z), x = -1 is on the image's right.
+    inside = ("toward", (0.0, 1.0, 1.0))
+    mesh.polygon(mesh.group("floor", "glossy"), [(-1, 0, 0), (1, 0, 0), (1, 0, 2), (-1, 0, 2)], inside)
+    mesh.polygon(mesh.group("ceiling", "glossy"), [(-1, 2, 0), (1, 2, 0), (1, 2, 2), (-1, 2, 2)], inside)
+    mesh.polygon(mesh.group("back_wall", "glossy"), [(-1, 0, 2), (1, 0, 2), (1, 2, 2), (-1, 2, 2)], inside)
+    mesh.polygon(mesh.group("bright_wall", "bright"), [(-1, 0, 0), (-1, 0, 2), (-1, 2, 2), (-1, 2, 0)], inside)
+    mesh.polygon(mesh.group("dark_wall", "dark"), [(1, 0, 0), (1, 0, 2), (1, 2, 2), (1, 2, 0)], inside)
+    # The lamp, a panel hanging under the ceiling, shines on the bright wall only: everything else
+    # is lit by what that wall sends back. Its back, seen from the camera, is a grey diffuse panel.
+    lamp = [(-0.3, 1.3, 0.3), (-0.3, 1.3, 1.7), (-0.3, 1.9, 1.7), (-0.3, 1.9, 0.3)]
+    mesh.polygon(mesh.group("lamp", "lamp"), lamp, ("toward", (-1.0, 1.6, 1.0)))
+    # Two spheres with smooth normals (so the diffuse bounce's frame turns over them): a large
+    # Kd+Kt one, inside which paths meet the surface from behind, and a Kd+Ks one.
+    spheres = [("translucent_sphere", "translucent", (-0.3, 0.62, 1.1), 0.6),
+               ("glossy_sphere", "glossy", (0.6, 0.39, 1.55), 0.38)]
+    (_, _, c0, r0), (_, _, c1, r1) = spheres
+    assert dot(sub(c0, c1), sub(c0, c1)) > (r0 + r1) ** 2, "the spheres intersect"
+    for name, material, centre, radius in spheres:
+        mesh.sphere(mesh.group(name, material), centre, radius, 16, 8, outward=True, smooth=True)
+    check(mesh, "mixed_surfaces")
+    n = mesh.write(os.path.join(HERE, "mixed_surfaces.obj"), "mixed_surfaces.mtl")
+    write_mtl(os.path.join(HERE, "mixed_surfaces.mtl"), [
+        ("glossy", [("Kd", (0.45, 0.45, 0.45)), ("Ks", (0.45, 0.45, 0.45))]),
+        ("translucent", [("Kd", (0.45, 0.45, 0.45)), ("Kt", (0.45, 0.45, 0.45)), ("Ni", 1.5)]),
+        ("bright", [("Kd", (0.8, 0.8, 0.8))]),
+        ("dark", [("Kd", (0.25, 0.25, 0.25))]),
+        ("lamp", [("Kd", (0.5, 0.5, 0.5)), ("Ke", (6.0, 6.0, 6.0))]),
+    ])
+    write_ecs(os.path.join(HERE, "mixed_surfaces.ecs"),
+              "Kd+Ks and Kd+Kt surfaces lit by a lamp that faces one wall: the grader's check that\n"
+              "diffuse directions cover the whole hemisphere.",
+              "-i mixed_surfaces.obj\n-vp 0 1 -2.4\n-vi 0 1 1\n-vu 0 1 0\n-fov 45\n")
+    return n
+
 def main():
     counts = {
         "cornell_box_VI2_Specular": cornell_box_vi2(),
@@ -295,6 +339,7 @@ def main():
         "refraction_check": refraction_check(),
         "furnace_glass": furnace("furnace_glass", 0.5, ("glass", [("Kt", (1.0, 1.0, 1.0)), ("Ni", 1.5)])),
         "mirror_furnace": mirror_furnace(0.5),
+        "mixed_surfaces": mixed_surfaces(),
     }
     for name, triangles in counts.items():
         print(f"{name}: {triangles} triangles")
