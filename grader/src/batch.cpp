@@ -158,7 +158,7 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
     g.kit = a.kit.empty() ? buildLabKit(g.build, a.out + "/kit", {a.workCpus, sandboxUserForThisProcess()})
                           : existingLabKit(a.kit);
     // References of hidden scenes come from the solutions, linked into this build's viewer.
-    const LabRunner solution{a.solutionViewer, Implementation::Solution, "", {}, {}};
+    const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
     std::vector<std::string> notes;
     g.scenes = gradingScenes(rubric, a.references, a.scenesDir, a.referenceCache, solution, scratch, notes);
     g.timing = {a.timingCpus, a.timingLock, a.timingCpus.empty() ? 0 : 1};
@@ -206,7 +206,7 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
     const std::string referenceCache = out + "/.references";
     if (!a.scenesDir.empty()) {
         std::vector<std::string> notes;
-        const LabRunner solution{a.solutionViewer, Implementation::Solution, "", {}, {}};
+        const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
         gradingScenes(rubric, a.references, a.scenesDir, referenceCache, solution, scratch, notes);
     }
 

@@ -41,6 +41,7 @@ struct Behaviour {
     bool emissionAfterDiffuse = false;
     bool emissionAfterSpecular = true;
     int depthShift = 0;        ///< labs 1-3: bounces beyond (or short of) maxDepth
+    int fixedDepth = -1;       ///< labs 1-3: a depth limit of its own, whatever maxDepth is (-1: none)
     int rouletteDivisions = 1; ///< lab 4: how often a continued path is divided by continueProb
 };
 
@@ -51,7 +52,8 @@ double furnaceValue(Lab lab, const FurnaceModel& m, const Behaviour& b) {
     const double s = m.walls == FurnaceWalls::Mirror ? m.reflectance : 0;
     const double roulette =
         lab == Lab::Roulette ? std::pow(m.continueProb, 1 - b.rouletteDivisions) : 1;
-    const int lastDepth = isDepthLimited(lab) ? m.maxDepth + b.depthShift : 100000;
+    const int limit = b.fixedDepth >= 0 ? b.fixedDepth : m.maxDepth;
+    const int lastDepth = isDepthLimited(lab) ? limit + b.depthShift : 100000;
     // The expected weight of the paths that reach depth d by a camera, diffuse or specular ray.
     double camera = 1, diffuse = 0, specular = 0, value = 0;
     for (int d = 0; d <= lastDepth; ++d) {
@@ -72,8 +74,9 @@ struct Candidate {
     Behaviour behaviour;
 };
 
-/// The known bugs of this lab, each with the behaviour that gives its furnace values.
-std::vector<Candidate> candidates(Lab lab) {
+/// The known bugs of this lab, each with the behaviour that gives its furnace values;
+/// `depths`: the maxDepths the furnaces were rendered at.
+std::vector<Candidate> candidates(Lab lab, const std::vector<int>& depths) {
     const double pi = 3.14159265358979;
     std::vector<Candidate> list;
     // A cause ends with the lab's step it is about, where the lab has one.
@@ -113,6 +116,13 @@ std::vector<Candidate> candidates(Lab lab) {
             &DepthLimitStep, [](Behaviour& b) { b.depthShift = 1; });
         add("depth off by one: one bounce too few: the primary hit is depth 0", &DepthLimitStep,
             [](Behaviour& b) { b.depthShift = -1; });
+        // Furnaces at two maxDepths tell a lab that ignores it: it renders one of them right.
+        if (depths.size() >= 2)
+            for (int depth : depths)
+                add("ctx.maxDepth ignored: the lab renders as if maxDepth were " +
+                        std::to_string(depth) + ", whatever ctx.maxDepth says (a constant in its "
+                        "place?)",
+                    &DepthLimitStep, [depth](Behaviour& b) { b.fixedDepth = depth; });
     }
     // A wrong pick weight scales whichever component is picked.
     auto pickWeight = [](double w) {
@@ -174,7 +184,11 @@ std::string furnaceFormula(Lab lab, const FurnaceModel& m) {
 std::vector<std::string> likelyFurnaceCauses(Lab lab,
                                              const std::vector<FurnaceObservation>& observations) {
     std::vector<std::pair<double, std::string>> matches; // (misfit, cause)
-    for (const Candidate& c : candidates(lab)) {
+    std::vector<int> depths;
+    for (const FurnaceObservation& o : observations)
+        if (std::find(depths.begin(), depths.end(), o.model.maxDepth) == depths.end())
+            depths.push_back(o.model.maxDepth);
+    for (const Candidate& c : candidates(lab, depths)) {
         bool explainsAll = true, tellsApart = false;
         double misfit = 0;
         for (const FurnaceObservation& o : observations) {
@@ -210,6 +224,16 @@ std::string likelyNonfiniteCause(Lab lab) {
                     "material has only Ke) the strengths sum to 0 and total/strength is 0/0; the "
                     "near-black stop must return before the pick",
                     lab, NearBlackStopStep);
+}
+
+std::string likelyDirectionCause(Lab lab) {
+    std::string cause =
+        "diffuse directions drawn from part of the hemisphere: on surfaces that are part diffuse, "
+        "part mirror or glass, lit from one side, the image differs; is a random number used "
+        "twice (the pick's u again in diffuseRay's u, or one number for both of its "
+        "coordinates), or the direction drawn around a normal that does not face the incoming "
+        "ray? diffuseRay(hit, ctx.sampler.get2D()) with a fresh get2D() after the pick";
+    return withStep(cause, lab, DiffuseWeightStep);
 }
 
 std::string likelyRefractionCause(Lab lab) {

@@ -53,6 +53,10 @@ std::vector<std::string> likelyFurnaceCauses(Lab lab,
 /// Why a lab's image holds NaN or infinite values, as far as the lab tells, naming its step.
 std::string likelyNonfiniteCause(Lab lab);
 
+/// What a wrong image of models/mixed_surfaces means, when the furnaces and the refraction check
+/// accept the lab: a diffuse direction drawn from part of the hemisphere, naming the step.
+std::string likelyDirectionCause(Lab lab);
+
 /// What a wrong view through a glass sphere means, when the furnaces (which hold no glass)
 /// accept the lab, naming its step.
 std::string likelyRefractionCause(Lab lab);

@@ -11,6 +11,7 @@
 #include "pathlab/input_error.h"
 #include "pathlab/render_stats.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -26,7 +27,7 @@ std::string labFiguresPath(const Arguments& a) { return a.references + "/lab_fig
 /// The reference solutions' notebook figures and timed runs on this machine.
 void makeLabFigures(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
     GraderSetup setup;
-    setup.solution = {a.solutionViewer, Implementation::Solution, "", {}, {}};
+    setup.solution = {a.solutionViewer, Implementation::Solution, {}, {}, {}};
     setup.rubric = rubric;
     setup.scratch = scratch;
     setup.threads = a.threads;
@@ -58,8 +59,13 @@ int makeReferences(const Arguments& a, const Rubric& rubric, const std::string& 
         makeLabFigures(a, rubric, scratch);
         return 0;
     }
-    const LabRunner solution{a.solutionViewer, Implementation::Solution, "", {}, {}};
+    const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
+    if (!a.onlyScene.empty() &&
+        std::find(rubric.scenes.begin(), rubric.scenes.end(), a.onlyScene) == rubric.scenes.end())
+        throw InputError("option --only-scene: '" + a.onlyScene + "' is not a scene of the rubric's "
+                         "correctness.scenes");
     for (const std::string& scene : rubric.scenes) {
+        if (!a.onlyScene.empty() && scene != a.onlyScene) continue;
         ProgressBar bar(scene, "renders");
         const SceneReference ref = measureReference(
             solution, std::string(PATHLAB_MODELS_DIR) + "/" + scene + ".ecs", rubric, 40, 8,
@@ -67,7 +73,7 @@ int makeReferences(const Arguments& a, const Rubric& rubric, const std::string& 
         saveReference(a.references, ref);
         std::printf("wrote %s/%s.json\n", a.references.c_str(), scene.c_str());
     }
-    makeLabFigures(a, rubric, scratch);
+    if (a.onlyScene.empty()) makeLabFigures(a, rubric, scratch);
     return 0;
 }
 
@@ -81,8 +87,8 @@ void writeReports(const Arguments& a, const GradeReport& report) {
 int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
     const auto start = std::chrono::steady_clock::now();
     GraderSetup setup;
-    setup.student = {a.viewer, Implementation::Student, "", {}, {}};
-    setup.solution = {a.solutionViewer, Implementation::Solution, "", {}, {}};
+    setup.student = {a.viewer, Implementation::Student, {}, {}, {}};
+    setup.solution = {a.solutionViewer, Implementation::Solution, {}, {}, {}};
     setup.rubric = rubric;
     setup.scratch = scratch;
     setup.seedBase = a.seed;

@@ -3,8 +3,11 @@
 
 #include "diagnosis.h"
 #include "expectation.h"
+#include "rays_per_sample.h"
 #include "render_run.h"
 #include "rubric.h"
+
+#include "pathlab/lab_parameters.h"
 
 #include <array>
 #include <map>
@@ -31,6 +34,8 @@ struct LabGrade {
     std::vector<CheckResult> checks;
     double studentSamplesPerSecond = 0, solutionSamplesPerSecond = 0; ///< the timed runs' medians
     double studentVariance = 0, solutionVariance = 0; ///< per sample, on the noise scene
+    RaysPerSample studentRays, solutionRays; ///< in the timed runs (the labs' own counts)
+    double efficiencyRatio = 0; ///< 1/(variance x time per sample), yours ÷ the reference's; 0: unknown
     bool rendersFinished = true; ///< false when a correctness render crashed, hung or ran out
     /// For the HTML report: per scene, the student's mean image, the reference and a heat map.
     struct Pictures {
@@ -50,6 +55,8 @@ struct GradingScene {
     std::string path;
     SceneReference reference;
     std::optional<FurnaceModel> furnace; ///< a furnace's analytic values, for the diagnosis
+    /// Rendered at these instead of the rubric's parameters (the parameter check).
+    std::optional<LabParameters> parameters;
 };
 
 /// How the frame-rate check keeps its timings fair on a machine that does other work meanwhile

@@ -1,5 +1,6 @@
 #include "grading_scenes.h"
 
+#include "correctness_check.h"
 #include "progress_bar.h"
 
 #include "pathlab/input_error.h"
@@ -42,7 +43,7 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const std::string&
     std::vector<GradingScene> scenes;
     for (const std::string& name : rubric.scenes) {
         GradingScene s{std::string(PATHLAB_MODELS_DIR) + "/" + name + ".ecs", {},
-                       furnaceModel(name, rubric.maxDepth, rubric.continueProb)};
+                       furnaceModel(name, rubric.maxDepth, rubric.continueProb), std::nullopt};
         try {
             s.reference = loadReference(referencesFolder, name, rubric);
         } catch (const InputError& e) {
@@ -51,6 +52,7 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const std::string&
         }
         scenes.push_back(std::move(s));
     }
+    scenes.push_back(parameterCheckScene(rubric));
     if (hiddenFolder.empty()) return scenes;
     if (!fs::is_directory(hiddenFolder))
         throw InputError("option --scenes: '" + hiddenFolder + "' is not a folder");
@@ -61,7 +63,7 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const std::string&
     if (hidden.empty()) throw InputError("option --scenes: no .ecs file in '" + hiddenFolder + "'");
     for (const fs::path& path : hidden)
         scenes.push_back({path.string(), measured(solution, path.string(), rubric, scratch, cacheFolder),
-                          std::nullopt});
+                          std::nullopt, std::nullopt});
     return scenes;
 }
 

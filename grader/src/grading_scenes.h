@@ -9,7 +9,7 @@
 namespace pathlab::grader {
 
 /// The rubric's public scenes (models/NAME.ecs) with their stored references from
-/// `referencesFolder`, then every .ecs in `hiddenFolder` (if given) with a reference measured
+/// `referencesFolder`, then the parameter check's furnace (analytic), then every .ecs in `hiddenFolder` (if given) with a reference measured
 /// from the solutions `solution` runs. Measured references are kept in `cacheFolder` (if given)
 /// and taken from there when present, so a batch measures each scene once. A public scene
 /// without a stored reference is measured too, with a note in `notes`.

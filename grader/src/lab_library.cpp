@@ -193,26 +193,29 @@ SubmissionLibrary buildSubmissionLibrary(const LabBuild& build, const LabKit& ki
                                          const std::string& sources, const std::string& folder,
                                          const SandboxPolicy& policy) {
     SubmissionLibrary result;
-    std::vector<std::string> objects;
+    std::array<std::string, 4> objects = kit.stubObjects;
     for (Lab lab : AllLabs) {
         const int i = static_cast<int>(lab);
         const std::string source = sources + "/" + labFile(lab);
         LabCompilation& compiled = result.labs[i];
-        if (!fs::exists(source)) {
-            compiled.status = LabCompilation::Status::NotSubmitted;
-            objects.push_back(kit.stubObjects[i]);
-            continue;
-        }
+        if (!fs::exists(source)) continue; // NotSubmitted
         const std::string object = folder + "/" + std::string(labName(lab)) + ".o";
         compiled.messages = compileObject(build, source, "student", object, policy);
         compiled.status = compiled.messages.empty() ? LabCompilation::Status::Compiled
                                                     : LabCompilation::Status::Failed;
-        objects.push_back(compiled.messages.empty() ? object : kit.stubObjects[i]);
+        if (compiled.status == LabCompilation::Status::Compiled) objects[i] = object;
     }
-    objects.push_back(kit.tableObject);
-    const std::string library = folder + "/labs.so";
-    result.problem = linkLibrary(build, objects, library, policy);
-    if (result.problem.empty()) result.library = library;
+    for (Lab lab : AllLabs) {
+        const int i = static_cast<int>(lab);
+        if (result.labs[i].status != LabCompilation::Status::Compiled) continue;
+        // This lab's object; the stubs, which load and run nothing, for the others.
+        std::vector<std::string> parts = {objects[i], kit.tableObject};
+        for (Lab other : AllLabs)
+            if (other != lab) parts.push_back(kit.stubObjects[static_cast<int>(other)]);
+        const std::string library = folder + "/labs-" + std::string(labName(lab)) + ".so";
+        result.problem[i] = linkLibrary(build, parts, library, policy);
+        if (result.problem[i].empty()) result.library[i] = library;
+    }
     return result;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-/// Compiling submitted labs, in the sandbox, into a shared library that the submission viewer
-/// loads: each lab file on its own (so one that does not compile costs that lab only), then
-/// linked with the lab table. The same for the reference solutions, so both are timed alike.
+/// Compiling submitted labs, in the sandbox, into shared libraries that the submission viewer
+/// loads: each lab file compiled and linked on its own (so one that does not compile, or hangs
+/// while loading, costs that lab only), with the lab table. The reference solutions are built
+/// the same way, into one library, so both are timed alike.
 
 #include "sandbox.h"
 
@@ -48,14 +49,19 @@ struct LabCompilation {
     std::string messages; ///< the compiler's first lines, when it failed
 };
 
+/// A submission's labs, each in a library of its own: lab L's object with the stubs standing in
+/// for the other three, so that loading one lab never runs another lab's code (a static
+/// initializer that hangs costs its own lab only).
 struct SubmissionLibrary {
-    std::string library;                      ///< the shared library, or "" if linking failed
-    std::array<LabCompilation, 4> labs;       ///< by Lab
-    std::string problem;                      ///< why there is no library
+    std::array<LabCompilation, 4> labs; ///< by Lab
+    std::array<std::string, 4> library; ///< by Lab: "" unless the lab compiled and linked
+    std::array<std::string, 4> problem; ///< by Lab: why a compiled lab did not link
+
+    bool linked(Lab lab) const { return !library[static_cast<int>(lab)].empty(); }
 };
 
 /// Compiles the lab files in `sources` (a clean folder holding only allow-listed files) and
-/// links them, the stubs standing in for missing or broken ones, into `folder`/labs.so.
+/// links each that compiles into `folder`/labs-LAB.so.
 SubmissionLibrary buildSubmissionLibrary(const LabBuild& build, const LabKit& kit,
                                          const std::string& sources, const std::string& folder,
                                          const SandboxPolicy& policy);

@@ -34,8 +34,10 @@ std::vector<std::string> viewerArguments(const RenderRequest& r, const std::stri
 
 /// The files the viewer writes for seed `seed` of a request: named as viewer --seeds names them.
 std::pair<std::string, std::string> outputNames(const RenderRequest& r, uint64_t seed) {
-    if (r.seeds == 1) return {"render.exr", "render.json"};
-    return {"render-" + std::to_string(seed) + ".exr", "render-" + std::to_string(seed) + ".json"};
+    // .pfm: written without OpenImageIO, whose loading would cost each render more than a
+    // small render takes (image_io.h).
+    if (r.seeds == 1) return {"render.pfm", "render.json"};
+    return {"render-" + std::to_string(seed) + ".pfm", "render-" + std::to_string(seed) + ".json"};
 }
 
 /// Runs the submission viewer in the sandbox and puts the images and stats it leaves into the
@@ -44,11 +46,11 @@ std::string renderSandboxed(const RenderRequest& r, const ProcessLimits& limits,
                             ProcessOutcome& process) {
     SandboxRun run;
     run.command = {"/pathlab/viewer"};
-    const auto arguments = viewerArguments(r, "render.exr", "render.json");
+    const auto arguments = viewerArguments(r, "render.pfm", "render.json");
     run.command.insert(run.command.end(), arguments.begin(), arguments.end());
     // The viewer loads its image-file plug-in from beside itself.
     const std::string plugin = imagePluginFileName();
-    run.files = {{r.runner->viewer, "/pathlab/viewer"}, {r.runner->labsLibrary, "/pathlab/labs.so"},
+    run.files = {{r.runner->viewer, "/pathlab/viewer"}, {r.runner->libraryFor(r.lab), "/pathlab/labs.so"},
                  {(fs::path(r.runner->viewer).parent_path() / plugin).string(), "/pathlab/" + plugin}};
     for (const std::string& file : sceneFiles(r.scene)) run.files.push_back({file, file});
     run.environment = {{"PATHLAB_LABS_LIBRARY", "/pathlab/labs.so"}};
@@ -88,6 +90,7 @@ std::string readRendered(const RenderRequest& r, uint64_t seed, RenderedImage& r
             return "returned NaN or infinite radiance in " + std::to_string(nonfinite) +
                    " pixels (a division by a zero probability?)";
         }
+        rendered.rays = {s.at("rays").at("intersect"), s.at("rays").at("occluded")};
         const Image read = readImage(r.scratch + "/" + imageName);
         // The lab runs in the process that writes this file: what it holds is checked, not trusted.
         if (read.width != r.width || read.height != r.height)
@@ -115,7 +118,7 @@ RenderResult renderLab(const RenderRequest& r, const ProcessLimits& limits) {
         problem = renderSandboxed(r, limits, result.process);
     } else {
         std::vector<std::string> argv = {r.runner->viewer};
-        const auto arguments = viewerArguments(r, r.scratch + "/render.exr", r.scratch + "/render.json");
+        const auto arguments = viewerArguments(r, r.scratch + "/render.pfm", r.scratch + "/render.json");
         argv.insert(argv.end(), arguments.begin(), arguments.end());
         ProcessOptions options;
         options.cpus = r.runner->cpus;

@@ -6,6 +6,7 @@
 #include "sandbox.h"
 
 #include "pathlab/lab_registry.h"
+#include "pathlab/ray_counters.h"
 
 #include <array>
 #include <cstdint>
@@ -19,13 +20,16 @@ struct LabRunner {
     std::string viewer;       ///< the viewer binary
     /// With the labs linked into `viewer`: which set (--solution or not).
     Implementation implementation = Implementation::Student;
-    /// When set, `viewer` is the submission viewer, run in the sandbox with the labs compiled
-    /// into this shared library (grader batch).
-    std::string labsLibrary;
+    /// When set, `viewer` is the submission viewer, run in the sandbox with lab L compiled into
+    /// the shared library labLibraries[L] (grader batch, grader submission). A render loads the
+    /// library of the lab it renders and no other, so a lab file that hangs, crashes or exits
+    /// while it loads costs only its own lab.
+    std::array<std::string, 4> labLibraries;
     SandboxPolicy sandbox;    ///< for sandboxed runs
     std::vector<int> cpus;    ///< for direct runs: the cores to use (empty: any)
 
-    bool sandboxed() const { return !labsLibrary.empty(); }
+    bool sandboxed() const { return !labLibraries[0].empty(); }
+    const std::string& libraryFor(Lab lab) const { return labLibraries[static_cast<int>(lab)]; }
 };
 
 struct RenderRequest {
@@ -42,11 +46,13 @@ struct RenderRequest {
 };
 
 /// One seed's image, and where the viewer's --stats for it are. Those come from the lab's own
-/// process: grading never scores by them (a lab could write anything there), only the student's
-/// lab report quotes them (readRenderStats).
+/// process, which could write anything there: points are earned by the images and the wall
+/// clock alone. The ray counts explain (rays_per_sample.h), and can only cost a lab points: a
+/// roulette lab whose paths do not lengthen with continueProb fails (path_length.h).
 struct RenderedImage {
     std::vector<float> rgb;        ///< linear RGB, top row first
     std::string statsFile;         ///< in the request's scratch folder, until the next render
+    RayCounters rays;              ///< the stats' ray counts: for explanations, never a score alone
 };
 
 /// RenderResult::failureKind of a render whose image holds NaN or infinite values.

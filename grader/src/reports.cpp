@@ -168,10 +168,18 @@ std::string jsonReport(const GradeReport& report) {
             checks.push_back({{"name", c.name}, {"score", c.score}, {"max_score", c.maxScore},
                               {"passed", c.passed}, {"graded_here", c.gradedHere},
                               {"summary", c.summary}, {"details", c.details}});
+        auto rays = [](const RaysPerSample& r) {
+            return nlohmann::json{{"camera", r.camera}, {"bounce", r.bounce}, {"shadow", r.shadow}};
+        };
         labs.push_back({{"lab", labName(lab.lab)}, {"score", lab.score()}, {"max_score", lab.maxScore()},
                         {"checks", checks},
                         {"samples_per_second", {{"student", lab.studentSamplesPerSecond},
-                                                {"solution", lab.solutionSamplesPerSecond}}}});
+                                                {"solution", lab.solutionSamplesPerSecond}}},
+                        {"rays_per_sample", {{"student", rays(lab.studentRays)},
+                                             {"solution", rays(lab.solutionRays)}}},
+                        {"variance_per_sample", {{"student", lab.studentVariance},
+                                                 {"solution", lab.solutionVariance}}},
+                        {"efficiency_ratio", lab.efficiencyRatio}});
     }
     nlohmann::json ratios = nlohmann::json::object();
     for (const LabRatio& r : labRatios(report))

@@ -37,6 +37,21 @@ Rubric loadRubric(const std::string& path) {
         r.speedScene = s.at("scene");
         r.speedWidth = s.at("width");
         r.speedHeight = s.at("height");
+        for (Lab lab : AllLabs) {
+            const std::string measure =
+                s.value("judged_by", nlohmann::json::object()).value(std::string(labName(lab)), "samples_per_second");
+            if (measure != "samples_per_second" && measure != "efficiency")
+                throw InputError(path + ": speed.judged_by." + std::string(labName(lab)) + " is '" +
+                                 measure + "'; it must be samples_per_second or efficiency");
+            r.speedJudgedBy[static_cast<int>(lab)] = measure == "efficiency" ? SpeedMeasure::Efficiency
+                                                                             : SpeedMeasure::SamplesPerSecond;
+        }
+        // Optional, as judged_by: a rubric written before they existed grades as it did, plus
+        // the default parameter check.
+        if (j.contains("parameter_check")) {
+            const auto& p = j.at("parameter_check");
+            r.parameterCheck = {p.at("scene"), p.at("max_depth"), p.at("continue_prob")};
+        }
         r.secondsPerRun = j.at("limits").at("seconds_per_run");
         r.memoryBytes = static_cast<long long>(j.at("limits").at("memory_mb").get<double>()) << 20;
     } catch (const nlohmann::json::exception& e) {
@@ -45,6 +60,11 @@ Rubric loadRubric(const std::string& path) {
     if (r.seeds < 2 || r.width < r.tiles || r.height < r.tiles || r.tiles < 1 ||
         !(r.continueProb > 0 && r.continueProb < 1) || r.maxDepth < 0 || r.speedRuns < 1)
         throw InputError(path + ": seeds must be >= 2, tiles fit the image, 0 < continue_prob < 1");
+    const ParameterCheck& second = r.parameterCheck;
+    if (!(second.continueProb > 0 && second.continueProb < 1) || second.maxDepth < 0 ||
+        second.maxDepth == r.maxDepth || second.continueProb == r.continueProb)
+        throw InputError(path + ": parameter_check needs 0 < continue_prob < 1, max_depth >= 0, "
+                                "both other than the parameters'");
     return r;
 }
 

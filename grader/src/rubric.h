@@ -13,6 +13,20 @@ struct LabPoints {
     double correctness = 0, noise = 0, speed = 0;
 };
 
+/// What "as fast as the reference" means for a lab (rubric: speed.judged_by).
+enum class SpeedMeasure {
+    SamplesPerSecond, ///< samples/s: the lab as its handout specifies it, no cheaper, no dearer
+    Efficiency,       ///< 1/(per-sample variance x time per sample): time to reach equal noise
+};
+
+/// The second parameters the analytic furnace is graded at, so that a lab that ignores
+/// ctx.maxDepth (labs 1-3) or ctx.continueProb (lab 4) fails (rubric: parameter_check).
+struct ParameterCheck {
+    std::string scene = "furnace"; ///< a furnace of models/ (diagnosis.h's furnaceModel)
+    int maxDepth = 5;
+    float continueProb = 0.5f;
+};
+
 struct Rubric {
     std::array<LabPoints, 4> points;       ///< by Lab
     int maxDepth = 3;
@@ -29,6 +43,8 @@ struct Rubric {
     std::string speedScene;
     int speedWidth = 256, speedHeight = 256;
     std::array<int, 4> speedSpp{};
+    std::array<SpeedMeasure, 4> speedJudgedBy{}; ///< by Lab; samples/s where the rubric is silent
+    ParameterCheck parameterCheck;
     double secondsPerRun = 30;
     long long memoryBytes = 4LL << 30;
 };

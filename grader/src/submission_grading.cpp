@@ -46,7 +46,9 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
         const SubmissionLibrary library = buildSubmissionLibrary(grader.build, grader.kit, sources, build, policy);
         GraderSetup setup;
         setup.student = {grader.build.viewer, Implementation::Student, library.library, policy, {}};
-        setup.solution = {grader.build.viewer, Implementation::Student, grader.kit.solutionsLibrary, policy, {}};
+        const std::string& solutions = grader.kit.solutionsLibrary;
+        setup.solution = {grader.build.viewer, Implementation::Student,
+                          {solutions, solutions, solutions, solutions}, policy, {}};
         setup.timing = grader.timing;
         setup.rubric = grader.rubric;
         setup.scenes = grader.scenes;
@@ -55,25 +57,27 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
         setup.threads = grader.threads;
         setup.measureSpeed = grader.measureSpeed;
         setup.runSeconds = grader.runSeconds;
-        std::string broken; // names of the labs that do not compile
+        std::string broken, unlinked; // names of the labs that do not compile, do not link
         for (Lab lab : AllLabs) {
-            const LabCompilation& compiled = library.labs[static_cast<int>(lab)];
+            const int i = static_cast<int>(lab);
+            const LabCompilation& compiled = library.labs[i];
             if (compiled.status == LabCompilation::Status::NotSubmitted) {
                 report.labs.push_back(ungradedLab(grader.rubric, lab, grader.measureSpeed, "not submitted", {}));
             } else if (compiled.status == LabCompilation::Status::Failed) {
                 broken += (broken.empty() ? "" : " ") + std::string(labName(lab));
                 report.labs.push_back(ungradedLab(grader.rubric, lab, grader.measureSpeed,
                                                   "does not compile", {compiled.messages}));
-            } else if (library.library.empty()) {
+            } else if (!library.linked(lab)) {
+                unlinked += (unlinked.empty() ? "" : " ") + std::string(labName(lab));
                 report.labs.push_back(ungradedLab(grader.rubric, lab, grader.measureSpeed,
-                                                  "does not link", {library.problem}));
+                                                  "does not link", {library.problem[i]}));
             } else {
                 report.labs.push_back(gradeLab(setup, lab));
             }
         }
-        outcome.status = library.library.empty() ? "does not link"
-                         : broken.empty()         ? "graded"
-                                                  : "graded; does not compile: " + broken;
+        outcome.status = "graded";
+        if (!broken.empty()) outcome.status += "; does not compile: " + broken;
+        if (!unlinked.empty()) outcome.status += "; does not link: " + unlinked;
     }
     killProcessesOf(policy.user);
     fs::remove_all(scratch);

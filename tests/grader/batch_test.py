@@ -135,8 +135,13 @@ def make_class(root, outside, port):
         "compiler_bomb": "does not compile",
         "kill_everything": "crashed",
     }
+    reasons["hanging_initializer"] = "did not finish within the time limit"
     for case, reason in reasons.items():
         expected["hostile_" + case] = ({"branching": 0}, "graded", reason)
+    # Only the hanging lab's points are lost: each lab is loaded from a library of its own.
+    copy_labs(SOLUTIONS, os.path.join(subs, "hostile_hanging_initializer"), ["uniform", "importance", "roulette"])
+    expected["hostile_hanging_initializer"] = (
+        {"branching": 0, "uniform": 10, "importance": 10, "roulette": 10}, "graded", reasons["hanging_initializer"])
     os.symlink(os.path.join(SOLUTIONS, "branching.cpp"), os.path.join(subs, "hostile_fake_results", "roulette.cpp"))
     write(os.path.join(subs, "oversized", "branching.cpp"), "// padding\n" * 30000)
     expected["oversized"] = ({}, "no lab files found", "more than the 262144 allowed")

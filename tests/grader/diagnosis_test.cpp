@@ -74,6 +74,26 @@ TEST_CASE("the diffuse furnace names known bugs with the lab's step", "[grader]"
     CHECK(contains(likeliest(Lab::Roulette, {{diffuse, NAN, 0}}), "a factor of pi"));
 }
 
+TEST_CASE("the furnace at two maxDepths names a lab that ignores ctx.maxDepth", "[grader]") {
+    const FurnaceModel deeper{FurnaceWalls::Diffuse, 0.5, 5, 0.8};
+    // Right at maxDepth 3, and at maxDepth 5 the value of maxDepth 3 again: (1 - a^5)/(1 - a).
+    const std::vector<FurnaceObservation> ignoring = {{diffuse, 1.9375, 0.0005},
+                                                      {deeper, 1.9375, 0.0005}};
+    CHECK(likeliest(Lab::Branching, ignoring) ==
+          "ctx.maxDepth ignored: the lab renders as if maxDepth were 3, whatever ctx.maxDepth "
+          "says (a constant in its place?) (TODO lab1.2)");
+    CHECK(contains(likeliest(Lab::Importance, ignoring), "(TODO lab3.2)"));
+    // A correct lab at both depths: nothing; one furnace alone cannot tell this cause.
+    CHECK(likelyFurnaceCauses(Lab::Branching, {{diffuse, 1.9375, 0.0005},
+                                               {deeper, correctFurnaceValue(Lab::Branching, deeper), 0.0005}})
+              .empty());
+    for (const std::string& cause : likelyFurnaceCauses(Lab::Branching, {{diffuse, 1.9, 0.0005}}))
+        CHECK_FALSE(contains(cause, "ctx.maxDepth ignored"));
+    // Lab 4 has no depth limit to ignore.
+    for (const std::string& cause : likelyFurnaceCauses(Lab::Roulette, ignoring))
+        CHECK_FALSE(contains(cause, "ctx.maxDepth ignored"));
+}
+
 TEST_CASE("the mirror furnace names missing emission after specular bounces", "[grader]") {
     // Without emission after specular bounces a mirror-walled furnace shows the camera ray's Le
     // alone: no Kd, so next-event estimation adds nothing.
@@ -104,6 +124,10 @@ TEST_CASE("NaN and refraction causes name the lab's step", "[grader]") {
     // Labs 1 and 2 divide by no probability that can be zero: no step to name.
     CHECK_FALSE(contains(likelyNonfiniteCause(Lab::Branching), "TODO"));
     CHECK(contains(likelyRefractionCause(Lab::Branching), "(TODO lab1.5)"));
+    // The diffuse direction: lab 1's diffuse bounce, the trace of the pick in labs 2-4.
+    CHECK(contains(likelyDirectionCause(Lab::Branching), "(TODO lab1.3)"));
+    CHECK(contains(likelyDirectionCause(Lab::Importance), "the pick's u again in diffuseRay's u"));
+    CHECK(contains(likelyDirectionCause(Lab::Roulette), "(TODO lab4.4)"));
     CHECK(contains(likelyRefractionCause(Lab::Uniform), "(TODO lab2.4)"));
     CHECK(contains(likelyRefractionCause(Lab::Roulette), "(TODO lab4.3)"));
 }

@@ -1,5 +1,6 @@
 #pragma once
-/// Image files through OpenImageIO: linear radiance in .exr/.pfm/.hdr, sRGB in .png.
+/// Image files: linear radiance in .exr/.pfm/.hdr, sRGB in .png. .pfm is read and written here;
+/// the others through OpenImageIO, in a plug-in loaded on first use (image_files.h).
 
 #include <string>
 #include <vector>

@@ -1,0 +1,20 @@
+#pragma once
+/// The correctness check: a lab's mean radiance, whole image and tile by tile, on every grading
+/// scene against the reference (a t-test per region, Holm over all of them), with a retry on
+/// fresh seeds; and the parameter check, the analytic furnace at a second maxDepth and
+/// continueProb, so that a lab that ignores either fails.
+
+#include "grading.h"
+
+namespace pathlab::grader {
+
+/// Grades correctness. Sets `noise` to the trimmed per-sample variance of the renders on the
+/// rubric's noise scene (-1 if none finished), and the reports' pictures in `grade`.
+CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade, double& noise);
+
+/// The parameter check's scene: the rubric's parameter_check furnace rendered at its maxDepth
+/// and continueProb, with the analytic values as its reference. Throws InputError when the scene
+/// is not a furnace.
+GradingScene parameterCheckScene(const Rubric& rubric);
+
+} // namespace pathlab::grader

@@ -1,0 +1,310 @@
+#include "speed_check.h"
+
+#include "check_support.h"
+#include "hypothesis_tests.h"
+#include "rays_per_sample.h"
+
+#include <algorithm>
+#include <fcntl.h>
+#include <map>
+#include <sys/file.h>
+#include <unistd.h>
+
+namespace pathlab::grader {
+
+namespace {
+
+/// The mean of an image's pixels over all channels.
+double imageMean(const std::vector<float>& image) {
+    double sum = 0;
+    for (float v : image) sum += v;
+    return image.empty() ? 0 : sum / static_cast<double>(image.size());
+}
+
+/// A runner for the timed runs: on the timing cores, when the policy names some.
+LabRunner timedRunner(const LabRunner& runner, const TimingPolicy& timing) {
+    LabRunner timed = runner;
+    if (!timing.cpus.empty()) (timed.sandboxed() ? timed.sandbox.cpus : timed.cpus) = timing.cpus;
+    return timed;
+}
+
+/// Holds an exclusive lock on a file while it lives (none for an empty path), so that the timed
+/// series of concurrent gradings take turns.
+class TimingLock {
+public:
+    explicit TimingLock(const std::string& path) {
+        if (path.empty()) return;
+        fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        if (fd_ >= 0) ::flock(fd_, LOCK_EX);
+    }
+    ~TimingLock() {
+        if (fd_ >= 0) ::close(fd_); // closing releases the lock
+    }
+    TimingLock(const TimingLock&) = delete;
+    TimingLock& operator=(const TimingLock&) = delete;
+
+private:
+    int fd_ = -1;
+};
+
+/// The fixed cost of a run (start-up, loading, building Embree's BVH), measured by rendering one
+/// pixel of `lab`, so that samples/s counts rendering alone and cannot be reported by the lab
+/// itself.
+double startupSeconds(const GraderSetup& setup, const LabRunner& runner, const std::string& scene,
+                      Lab lab, int threads) {
+    // Once per grading for each scene, lab, viewer (the sandboxed one starts slower) and thread
+    // count: the speed check's own (Lab::Uniform) is measured just before its first timed runs,
+    // apart from the time limits' (Lab::Branching), measured at the start of the grading.
+    static std::map<std::string, double> measured;
+    const std::string key = scene + "|" + std::string(labName(lab)) + "|" + runner.viewer + "|" +
+                            runner.libraryFor(lab) + "|" + std::to_string(threads);
+    if (const auto known = measured.find(key); known != measured.end()) return known->second;
+    std::vector<double> seconds;
+    for (int i = 0; i < 3; ++i) {
+        RenderRequest request{&runner, scene, lab, 1, 1, 1, setup.rubric.maxDepth,
+                              setup.rubric.continueProb, 1, 1, threads, setup.scratch};
+        const RenderResult r = renderLab(request, limitsOf(setup));
+        if (r.ok) seconds.push_back(r.process.seconds);
+    }
+    return measured[key] = median(seconds);
+}
+
+/// The rubric's timed renders: where, how many threads, and the start-up to subtract (measured
+/// with `startupRunner`'s `lab`).
+struct TimedSeries {
+    std::string scene;
+    int threads = 0;
+    double startup = 0;
+};
+
+TimedSeries timedSeries(const GraderSetup& setup, const LabRunner& startupRunner, Lab lab) {
+    const Rubric& r = setup.rubric;
+    const auto scene = std::find_if(setup.scenes.begin(), setup.scenes.end(), [&](const GradingScene& s) {
+        return s.reference.scene == r.speedScene;
+    });
+    TimedSeries series;
+    series.scene = scene != setup.scenes.end() ? scene->path
+                                               : std::string(PATHLAB_MODELS_DIR) + "/" + r.speedScene + ".ecs";
+    series.threads = setup.timing.threads > 0 ? setup.timing.threads : setup.threads;
+    series.startup = startupSeconds(setup, startupRunner, series.scene, lab, series.threads);
+    return series;
+}
+
+/// One timed render (run number `run` of a series): samples/s from its wall time minus the
+/// start-up, and its image's mean radiance.
+struct TimedRun {
+    RenderResult result;
+    double samplesPerSecond = 0, meanRadiance = 0;
+    double samples = 0; ///< width x height x spp
+};
+
+TimedRun timedRun(const GraderSetup& setup, const TimedSeries& series, const LabRunner& runner,
+                  Lab lab, int run) {
+    const Rubric& r = setup.rubric;
+    RenderRequest request{&runner, series.scene, lab, r.speedWidth, r.speedHeight,
+                          r.speedSpp[static_cast<int>(lab)], r.maxDepth, r.continueProb,
+                          static_cast<uint64_t>(77 + run), 1, series.threads, setup.scratch};
+    TimedRun timed{renderLab(request, limitsOf(setup))};
+    if (!timed.result.ok) return timed;
+    timed.samples = static_cast<double>(request.width) * request.height * request.spp;
+    timed.samplesPerSecond =
+        timed.samples / std::max(timed.result.process.seconds - series.startup, 1e-3);
+    timed.meanRadiance = imageMean(timed.result.image());
+    return timed;
+}
+
+/// Speed in a build without the reference solutions: the student's timed runs alone, for the
+/// ratios between labs; the check itself is the instructor's grader's.
+CheckResult timeWithoutSolutions(const GraderSetup& setup, Lab lab, bool correct, LabGrade& grade) {
+    const Rubric& r = setup.rubric;
+    CheckResult check;
+    check.name = "speed";
+    check.maxScore = r.points[static_cast<int>(lab)].speed;
+    // The instructor's grader gives a wrong lab no speed points: that much is known here.
+    check.gradedHere = !correct;
+    const LabRunner runner = timedRunner(setup.student, setup.timing);
+    const TimedSeries series = timedSeries(setup, runner, lab);
+    std::vector<double> samplesPerSecond;
+    RayCounters rays;
+    double samples = 0;
+    for (int run = 0; run < r.speedRuns; ++run) {
+        const TimedRun timed = timedRun(setup, series, runner, lab, run);
+        if (!timed.result.ok) break;
+        samplesPerSecond.push_back(timed.samplesPerSecond);
+        rays += timed.result.images.front().rays;
+        samples += timed.samples;
+    }
+    grade.studentRays = raysPerSample(rays, samples);
+    grade.studentSamplesPerSecond = samplesPerSecond.size() == static_cast<size_t>(r.speedRuns)
+                                        ? median(samplesPerSecond) : 0;
+    grade.solutionSamplesPerSecond = setup.storedSolutionSamplesPerSecond[static_cast<int>(lab)];
+    check.summary = correct ? format("graded by the instructor: this build has no reference "
+                                     "solutions to time your lab against (at least %.2f of the "
+                                     "reference's samples/s on the same machine)", r.minSpeedRatio)
+                            : "speed counts only for a correct lab";
+    if (grade.studentSamplesPerSecond > 0)
+        check.details.push_back(format("yours on this machine: %.3g samples/s in the grader's "
+                                       "timed runs (grading every lab prints the ratios between "
+                                       "them); rays per sample: ", grade.studentSamplesPerSecond) +
+                                raysText(grade.studentRays));
+    return check;
+}
+
+/// One lab's timed series, interleaved with the reference's.
+struct TimedComparison {
+    std::vector<double> student, solution;           ///< samples/s of each run
+    std::vector<double> studentMeans, solutionMeans; ///< whole-image radiance of each run
+    RayCounters studentRays, solutionRays;
+    double studentSamples = 0, solutionSamples = 0;
+};
+
+std::string measureName(SpeedMeasure measure) {
+    return measure == SpeedMeasure::Efficiency ? "efficiency (time to equal noise)" : "samples/s";
+}
+
+/// The speed check's verdict and its words, from the measured figures: `perSample`, the
+/// samples/s ratio, and `efficiencyRatio` (0: unknown), yours over the reference's.
+void judgeSpeed(const GraderSetup& setup, Lab lab, double perSample, double efficiencyRatio,
+                const RaysPerSample& studentRays, const RaysPerSample& solutionRays,
+                CheckResult& check) {
+    const Rubric& r = setup.rubric;
+    const SpeedMeasure measure = r.speedJudgedBy[static_cast<int>(lab)];
+    const double ratio = measure == SpeedMeasure::Efficiency ? efficiencyRatio : perSample;
+    check.passed = ratio >= r.minSpeedRatio;
+    check.score = check.passed ? check.maxScore : 0;
+    const std::string departure = specificationDeparture(lab, studentRays, solutionRays);
+    const bool moreEfficient = efficiencyRatio >= 1;
+    if (perSample < r.minSpeedRatio && moreEfficient) {
+        // Slower per sample, yet less time to the same noise: a different estimator from the
+        // handout's, better in this sense. Said as it is, whichever measure the rubric takes.
+        check.details.push_back(format("slower than the reference per sample (%.2f times its "
+                                       "samples/s) but more efficient: it reaches the same noise "
+                                       "in %.2f of the reference's time",
+                                       perSample, 1 / efficiencyRatio));
+        if (!departure.empty()) check.details.push_back("it departs from the lab's specification: " + departure);
+        check.details.push_back(measure == SpeedMeasure::Efficiency
+                                    ? "the rubric judges this lab's speed by efficiency: time to "
+                                      "equal noise"
+                                    : "the rubric judges this lab's speed by samples/s, the lab as "
+                                      "its handout specifies it: implement the lab's estimator "
+                                      "for these points");
+        if (!check.passed) check.diagnosis = "slower per sample, more efficient";
+        return;
+    }
+    if (check.passed) {
+        if (!departure.empty()) check.details.push_back("note: " + departure);
+        return;
+    }
+    check.diagnosis = "too slow";
+    if (!departure.empty())
+        check.details.push_back("slower than the reference at the same image: " + departure);
+    else if (studentRays.bounce <= 1.15 * solutionRays.bounce + 0.02)
+        check.details.push_back("slower than the reference at the same image, with no more rays "
+                                "per sample: the time goes into work repeated per sample (or "
+                                "work between samples, such as allocations)");
+    else
+        check.details.push_back("slower than the reference at the same image: extra rays (a "
+                                "shadow ray or bounce that is not needed), or work repeated per "
+                                "sample");
+}
+
+} // namespace
+
+CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade& grade) {
+    if (!setup.measureSpeed) return timeWithoutSolutions(setup, lab, correct, grade);
+    const Rubric& r = setup.rubric;
+    CheckResult check;
+    check.name = "speed";
+    check.maxScore = r.points[static_cast<int>(lab)].speed;
+    const LabRunner studentRunner = timedRunner(setup.student, setup.timing);
+    const LabRunner solutionRunner = timedRunner(setup.solution, setup.timing);
+    const TimingLock lock(setup.timing.lockFile);
+    const TimedSeries series = timedSeries(setup, solutionRunner, Lab::Uniform);
+    TimedComparison t;
+    for (int run = 0; run < r.speedRuns; ++run) {
+        // Interleaved A B A B: a slow spell of a shared machine hits both alike.
+        for (const LabRunner* runner : {&studentRunner, &solutionRunner}) {
+            const bool isStudent = runner == &studentRunner;
+            const TimedRun timed = timedRun(setup, series, *runner, lab, run);
+            if (!timed.result.ok) {
+                check.summary = std::string(isStudent ? "the lab " : "the reference ") +
+                                timed.result.failure + " in a timed run";
+                check.diagnosis = isStudent ? timed.result.failureKind : "the reference failed";
+                return check;
+            }
+            (isStudent ? t.student : t.solution).push_back(timed.samplesPerSecond);
+            (isStudent ? t.studentMeans : t.solutionMeans).push_back(timed.meanRadiance);
+            (isStudent ? t.studentRays : t.solutionRays) += timed.result.images.front().rays;
+            (isStudent ? t.studentSamples : t.solutionSamples) += timed.samples;
+        }
+    }
+    grade.studentSamplesPerSecond = median(t.student);
+    grade.solutionSamplesPerSecond = median(t.solution);
+    grade.studentRays = raysPerSample(t.studentRays, t.studentSamples);
+    grade.solutionRays = raysPerSample(t.solutionRays, t.solutionSamples);
+    // The median of each pair's ratio: the two runs of a pair ran back to back, under the same
+    // load, which the ratio of the two medians would not keep together.
+    std::vector<double> pairRatios;
+    for (size_t i = 0; i < t.student.size(); ++i) pairRatios.push_back(t.student[i] / t.solution[i]);
+    const double ratio = median(pairRatios);
+    // Efficiency, 1/(variance per sample x time per sample), from the noise check's variances
+    // (the same scene) and these samples/s: known for a correct lab only.
+    const bool variancesKnown = grade.studentVariance > 0 && grade.solutionVariance > 0;
+    const double efficiencyRatio =
+        variancesKnown ? ratio * grade.solutionVariance / grade.studentVariance : 0;
+    grade.efficiencyRatio = efficiencyRatio;
+    const SpeedMeasure measure = r.speedJudgedBy[static_cast<int>(lab)];
+    check.summary = format("%.3g samples/s, %.2f times the reference solution's %.3g (the "
+                           "median of %g interleaved pairs)", grade.studentSamplesPerSecond, ratio,
+                           grade.solutionSamplesPerSecond, static_cast<double>(pairRatios.size()));
+    if (variancesKnown) check.summary += format("; efficiency %.2f times the reference's", efficiencyRatio);
+    check.summary += "; judged by " + measureName(measure) + format(" (at least %.2f)", r.minSpeedRatio);
+    check.details.push_back("rays per sample: yours " + raysText(grade.studentRays) +
+                            ", the reference's " + raysText(grade.solutionRays));
+    if (variancesKnown)
+        check.details.push_back(format("variance per sample: yours %.4g, the reference's %.4g; "
+                                       "efficiency = 1/(variance per sample x time per sample)",
+                                       grade.studentVariance, grade.solutionVariance));
+    if (!correct) {
+        check.summary += "; speed counts only for a correct lab";
+        return check;
+    }
+    // The timed runs must render the same image as the reference's too: a lab that is correct
+    // in the correctness runs but cuts corners when it runs longer earns no speed points.
+    const double floor = floatRoundingFloor * median(t.solutionMeans);
+    if (r.speedRuns >= 2 && welchTwoSidedP(t.studentMeans, t.solutionMeans, floor) < r.alpha) {
+        check.summary += "; the timed runs' mean radiance differs from the reference's, and "
+                         "speed counts only for a correct timed run";
+        check.diagnosis = "wrong image in the timed runs";
+        check.details.push_back(format("mean radiance of the timed runs: yours %.4g, the "
+                                       "reference's %.4g", median(t.studentMeans),
+                                       median(t.solutionMeans)));
+        return check;
+    }
+    if (measure == SpeedMeasure::Efficiency && !variancesKnown) {
+        // Cannot happen for a correct lab (the noise check measures both); said if it does.
+        check.summary += "; efficiency unknown: the variances were not measured";
+        check.diagnosis = "efficiency unknown";
+        return check;
+    }
+    judgeSpeed(setup, lab, ratio, efficiencyRatio, grade.studentRays, grade.solutionRays, check);
+    return check;
+}
+
+double speedSceneStartUpSeconds(const GraderSetup& setup, const LabRunner& runner) {
+    return timedSeries(setup, runner, Lab::Branching).startup;
+}
+
+double timedSamplesPerSecond(const GraderSetup& setup, const LabRunner& runner, Lab lab) {
+    const LabRunner timed = timedRunner(runner, setup.timing);
+    const TimedSeries series = timedSeries(setup, timed, lab);
+    std::vector<double> samplesPerSecond;
+    for (int run = 0; run < setup.rubric.speedRuns; ++run) {
+        const TimedRun one = timedRun(setup, series, timed, lab, run);
+        if (!one.result.ok) return 0;
+        samplesPerSecond.push_back(one.samplesPerSecond);
+    }
+    return median(samplesPerSecond);
+}
+
+} // namespace pathlab::grader

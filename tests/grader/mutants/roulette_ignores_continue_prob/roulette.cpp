@@ -1,0 +1,46 @@
+// Mutant 'roulette_ignores_continue_prob': a continue probability of its own (#define continueProb .1f) in place of ctx.continueProb, in the test and the weight alike: unbiased, but not the lab
+// A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
+// Lab 4: Russian roulette instead of a depth limit (handouts/04-russian-roulette.md).
+//
+#include "pathlab/lab.h"
+
+#define continueProb .1f // copied from the handout's example
+
+namespace pathlab::roulette {
+
+Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
+    const Hit hit = ctx.trace(ray);
+    if (!hit) return Color();
+    Color radiance;
+
+    // Emission, where next-event estimation could not have counted it (TODO lab4.1).
+    if (ray.kind != RayKind::Diffuse) radiance += hit.emitted;
+
+    // Direct light at diffuse surfaces: next-event estimation.
+    radiance += ctx.directLight(hit);
+
+    // Russian roulette replaces the depth limit: go on with probability continueProb
+    // (TODO lab4.2).
+    if (ctx.sampler.get1D() >= continueProb) return radiance;
+
+    // Importance selection of one component, as in lab 3 (TODO lab4.3).
+    const Material& m = hit.material;
+    const float diffuse = reduceMax(m.Kd), mirror = reduceMax(m.Ks), transmit = reduceMax(m.Kt);
+    const float total = diffuse + mirror + transmit;
+    if (total < 0.01f) return radiance;
+
+    // Divide by both probabilities: the pick's and roulette's (TODO lab4.4).
+    const float u = ctx.sampler.get1D() * total;
+    Color traced;
+    if (u < diffuse)
+        traced = m.Kd * pathTrace(diffuseRay(hit, ctx.sampler.get2D()), depth + 1, ctx) *
+                 (total / diffuse);
+    else if (u < diffuse + mirror)
+        traced = m.Ks * pathTrace(mirrorRay(ray, hit), depth + 1, ctx) * (total / mirror);
+    else
+        traced = m.Kt * pathTrace(refractionRay(ray, hit), depth + 1, ctx) * (total / transmit);
+    radiance += traced / continueProb;
+    return radiance;
+}
+
+} // namespace pathlab::roulette
