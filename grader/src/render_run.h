@@ -8,6 +8,7 @@
 #include "pathlab/lab_registry.h"
 #include "pathlab/ray_counters.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -28,7 +29,12 @@ struct LabRunner {
     SandboxPolicy sandbox;    ///< for sandboxed runs
     std::vector<int> cpus;    ///< for direct runs: the cores to use (empty: any)
 
-    bool sandboxed() const { return !labLibraries[0].empty(); }
+    /// Any lab's library set: a submission that left a lab out has none for it, and must still
+    /// run in the sandbox.
+    bool sandboxed() const {
+        return std::any_of(labLibraries.begin(), labLibraries.end(),
+                           [](const std::string& library) { return !library.empty(); });
+    }
     const std::string& libraryFor(Lab lab) const { return labLibraries[static_cast<int>(lab)]; }
 };
 

@@ -196,6 +196,16 @@ void judgeSpeed(const GraderSetup& setup, Lab lab, double perSample, double effi
         return;
     }
     check.diagnosis = "too slow";
+    if (measure == SpeedMeasure::Efficiency && perSample >= r.minSpeedRatio) {
+        // Judged by efficiency: fast enough per sample, but noisier.
+        check.diagnosis = "less efficient";
+        check.details.push_back(format("fast enough per sample (%.2f times the reference's "
+                                       "samples/s) but less efficient: the same noise takes "
+                                       "%.2f times the reference's time, for its variance per "
+                                       "sample is higher", perSample, 1 / efficiencyRatio));
+        if (!departure.empty()) check.details.push_back("it departs from the lab's specification: " + departure);
+        return;
+    }
     if (!departure.empty())
         check.details.push_back("slower than the reference at the same image: " + departure);
     else if (studentRays.bounce <= 1.15 * solutionRays.bounce + 0.02)
