@@ -66,4 +66,6 @@ grep -v "TODO(lab[0-9.]*) is not done yet" "$problems" >&2
 rm -f "$problems"
 [ $status -eq 0 ] || exit $status
 echo "make run: the image is $(pwd)/$image"
-echo "make run: another lab: make run LAB=uniform; the viewer's options: cd $build && ./viewer --help"
+other=uniform
+[ "$lab" = uniform ] && other=importance
+echo "make run: another lab: make run LAB=$other; the viewer's options: cd $build && ./viewer --help"

@@ -93,6 +93,11 @@ Arguments parseArguments(int argc, char** argv) {
         const std::string command = argv[1];
         for (const char* known : {"make-references", "submission", "batch", "merge"})
             if (command == known) a.command = command, first = 2;
+        // The instructor's commands compile or run the reference solutions.
+        if (!PATHLAB_HAS_SOLUTIONS && first == 2 && a.command != "merge")
+            throw InputError("grader " + a.command + " is the instructor's: it needs the reference "
+                             "solutions (solutions/), which the student release does not have; "
+                             "`make grade` grades your labs");
     }
     auto value = [&](int& i) -> std::string {
         if (i + 1 >= argc) throw InputError(std::string("option ") + argv[i] + " needs a value");

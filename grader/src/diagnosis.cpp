@@ -111,8 +111,8 @@ std::vector<Candidate> candidates(Lab lab, const std::vector<int>& depths) {
     add("direct light weighted by an extra pi", nullptr,
         [&](Behaviour& b) { b.directWeight = pi; });
     if (isDepthLimited(lab)) {
-        add("depth off by one: one bounce too many: the test should be depth < maxDepth, with the "
-            "primary hit at depth 0",
+        add("depth off by one: one bounce too many: return before the bounce when depth >= "
+            "ctx.maxDepth (the primary hit is depth 0)",
             &DepthLimitStep, [](Behaviour& b) { b.depthShift = 1; });
         add("depth off by one: one bounce too few: the primary hit is depth 0", &DepthLimitStep,
             [](Behaviour& b) { b.depthShift = -1; });

@@ -133,7 +133,7 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
         yours.machine = thisMachine(a.threads);
         yours.notebook = measureNotebook(setup.student, notebookEstimators(a.labs, rubric), rubric,
                                          a.threads, scratch);
-        writeFileAtomically(a.report, labReport(report, rubric, yours, stored));
+        writeFileAtomically(a.report, labReport(report, rubric, yours, stored, observationsIn(a.report)));
         std::printf("lab report: %s\n", a.report.c_str());
     }
     return report.score() == report.maxScore() ? 0 : 1;

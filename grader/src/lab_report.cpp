@@ -2,11 +2,14 @@
 // reference solutions' stored ones, in the terms the handouts use.
 #include "reports.h"
 
+#include <fstream>
 #include <sstream>
 
 namespace pathlab::grader {
 
 namespace {
+
+const std::string ObservationsHeading = "## What I observed";
 
 std::string number(double value, const char* pattern = "%.3g") {
     char text[64];
@@ -48,7 +51,7 @@ std::string verdict(const CheckResult& c) {
 } // namespace
 
 std::string labReport(const GradeReport& report, const Rubric& rubric, const LabFigures& yours,
-                      const std::optional<LabFigures>& reference) {
+                      const std::optional<LabFigures>& reference, const std::string& observations) {
     std::vector<Lab> labs;
     for (const LabGrade& l : report.labs) labs.push_back(l.lab);
     const std::vector<NotebookEstimator> rows = notebookEstimators(labs, rubric);
@@ -131,10 +134,32 @@ std::string labReport(const GradeReport& report, const Rubric& rubric, const Lab
         if (lab.checks.size() < 3) md << " not measured (--no-speed) |";
         md << "\n";
     }
-    md << "\n## What I observed\n\n"
-          "<!-- For each lab: what the frame rate and the noise tell you about the estimator, "
-          "and your answers to the handout's questions. -->\n";
+    md << "\n" << ObservationsHeading << "\n\n";
+    if (observations.empty())
+        md << "<!-- For each lab: what the frame rate and the noise tell you about the estimator, "
+              "and your answers to the handout's questions. What you write below this heading "
+              "is kept when make report writes this file again. -->\n";
+    else
+        md << observations;
     return md.str();
+}
+
+std::string observationsIn(const std::string& path) {
+    std::ifstream in(path);
+    std::string line, kept;
+    bool below = false;
+    while (std::getline(in, line)) {
+        if (below) kept += line + "\n";
+        else below = line == ObservationsHeading;
+    }
+    const size_t first = kept.find_first_not_of(" \n");
+    if (first == std::string::npos) return "";
+    kept = kept.substr(first);
+    // The prompt alone, as make report wrote it: nothing of the student's to keep.
+    const size_t promptEnd = kept.find("-->");
+    const bool promptOnly = kept.rfind("<!--", 0) == 0 && promptEnd != std::string::npos &&
+                            kept.find_first_not_of(" \n", promptEnd + 3) == std::string::npos;
+    return promptOnly ? "" : kept;
 }
 
 } // namespace pathlab::grader

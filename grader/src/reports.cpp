@@ -154,7 +154,8 @@ std::string terminalReport(const GradeReport& report, bool colour) {
         out << "  reference: " << (report.ratiosReference.empty()
                                        ? "the reference solutions, timed now beside your labs"
                                        : report.ratiosReference)
-            << "\n  (compare the ratios, not the samples/s: those depend on the machine)\n";
+            << "\n  (compare the ratios, not the samples/s: those depend on the machine; on a busy "
+               "machine they vary by tens of percent from run to run)\n";
     }
     for (const std::string& note : report.notes) out << "note: " << note << "\n";
     return out.str();

@@ -35,9 +35,13 @@ std::string junitReport(const GradeReport& report);
 std::string gradescopeReport(const GradeReport& report);
 /// A Markdown lab report for a student to hand in: the notebook's figures (frame rate, noise,
 /// efficiency) of each lab beside the reference solutions' stored ones, the ratios between labs,
-/// and the grader's verdicts.
+/// and the grader's verdicts; then the student's own section, "What I observed": `observations`
+/// as it stands in the report being replaced (observationsIn), or a prompt when there is none.
 std::string labReport(const GradeReport& report, const Rubric& rubric, const LabFigures& yours,
-                      const std::optional<LabFigures>& reference);
+                      const std::optional<LabFigures>& reference, const std::string& observations);
+/// What a student wrote under "## What I observed" in the report at `path` ("" if none): kept when
+/// `make report` writes the report again.
+std::string observationsIn(const std::string& path);
 /// Writes DIR/index.html, one self-contained page (images embedded).
 void writeHtmlReport(const GradeReport& report, const std::string& folder);
 

@@ -173,6 +173,8 @@ def false_fail_validation(tmp, gradings=200):
         fails += not passed
         if not passed:
             print(f"false fail: {lab} seed {1000 + i}: {run.stdout}", flush=True)
+        if (i + 1) % 20 == 0:
+            print(f"validation: {i + 1} of {gradings} gradings, {fails} failed", flush=True)
     print(f"false-fail validation: {fails} of {gradings} gradings of correct labs failed", flush=True)
     check(fails == 0, "no correct lab failed in the validation")
 

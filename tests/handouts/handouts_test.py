@@ -251,6 +251,13 @@ def lab_number(step):
 
 
 def check_todos(source, handouts):
+    """The stubs' TODO steps against the handouts' sections. In the student release labs/ holds
+    the student's own work, whose TODO markers go as the labs get written: there this check would
+    fail a finished lab, so it runs in the kit only (where labs/ are the stubs as shipped)."""
+    if not os.path.isdir(os.path.join(source, "solutions")):
+        print("skipped: the TODO steps of labs/ against the handouts (the student release: "
+              "labs/ is your own work; the kit checks its stubs)", flush=True)
+        return
     sections = {}
     for path in handouts:
         steps = re.findall(r"^#{2,4} (lab\d+\.\d+)\b", read(path), re.M)

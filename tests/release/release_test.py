@@ -287,6 +287,14 @@ def check_finished_labs(root, logs):
                         output, re.M)
     check(len(ratios) == 3, f"make grade prints the speed ratios between labs, yours and the "
                             f"reference's: {ratios}")
+    # The README: the kit's own tests pass from the start, and still once the labs are written.
+    status, output, _ = run(["make", "test"], root, os.path.join(logs, "make-test-done.log"))
+    check(status == 0, "make test still passes with the four labs done" +
+          ("" if status == 0 else ":\n" + tail(output)))
+    status, output, _ = run(["./grader", "submission", "../labs", "--out", "graded"],
+                            os.path.join(root, "build"), os.path.join(logs, "grader-submission.log"))
+    check(status == 2 and "is the instructor's" in output,
+          f"grader submission says it is the instructor's: {output.strip()[-160:]!r}")
     status, output, _ = run(["make", "report"], root, os.path.join(logs, "make-report.log"))
     report_path = os.path.join(root, "lab-report.md")
     report = open(report_path).read() if os.path.exists(report_path) else ""
