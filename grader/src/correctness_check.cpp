@@ -274,14 +274,9 @@ GradingScene parameterCheckScene(const Rubric& rubric) {
         throw InputError("rubric: parameter_check.scene '" + check.scene + "' is not a furnace "
                          "of models/ (furnace, furnace_a08, mirror_furnace)");
     SceneReference& ref = scene.reference;
-    ref.scene = check.scene + " at maxDepth " + std::to_string(check.maxDepth) +
-                format(", continueProb %.2g", check.continueProb);
-    ref.kitVersion = PATHLAB_VERSION;
-    ref.width = rubric.width;
-    ref.height = rubric.height;
-    ref.tiles = rubric.tiles;
-    ref.maxDepth = check.maxDepth;
-    ref.continueProb = check.continueProb;
+    ref = referenceHeader(check.scene + " at maxDepth " + std::to_string(check.maxDepth) +
+                              format(", continueProb %.2g", check.continueProb),
+                          rubric, check.maxDepth, check.continueProb);
     // Every region of a furnace averages to its analytic value, known exactly: no standard error.
     const size_t values = 3 * (1 + static_cast<size_t>(rubric.tiles) * rubric.tiles);
     const size_t pixels = 3 * static_cast<size_t>(rubric.width) * rubric.height;

@@ -70,17 +70,24 @@ Expectation fromJson(const nlohmann::json& j, const std::string& folder, int wid
 
 } // namespace
 
-SceneReference measureReference(const LabRunner& solution, const std::string& scenePath,
-                                const Rubric& rubric, int seeds, int sppFactor,
-                                const std::string& scratch, const Progress& progress) {
+SceneReference referenceHeader(const std::string& scene, const Rubric& rubric, int maxDepth,
+                               float continueProb) {
     SceneReference ref;
-    ref.scene = std::filesystem::path(scenePath).stem().string();
+    ref.scene = scene;
     ref.kitVersion = PATHLAB_VERSION;
     ref.width = rubric.width;
     ref.height = rubric.height;
     ref.tiles = rubric.tiles;
-    ref.maxDepth = rubric.maxDepth;
-    ref.continueProb = rubric.continueProb;
+    ref.maxDepth = maxDepth;
+    ref.continueProb = continueProb;
+    return ref;
+}
+
+SceneReference measureReference(const LabRunner& solution, const std::string& scenePath,
+                                const Rubric& rubric, int seeds, int sppFactor,
+                                const std::string& scratch, const Progress& progress) {
+    SceneReference ref = referenceHeader(std::filesystem::path(scenePath).stem().string(), rubric,
+                                         rubric.maxDepth, rubric.continueProb);
     // The noise figure of a correct lab, as the grader measures a student's: the rubric's seeds
     // at the rubric's spp, in several independent groups whose figures are averaged.
     const int noiseGroups = 6;

@@ -38,6 +38,11 @@ struct SceneReference {
 /// Called with (done, total) as reference renders finish, for a progress bar.
 using Progress = std::function<void(int, int)>;
 
+/// A reference with its header filled in for `rubric`'s sizes and these parameters, and no
+/// expectations yet.
+SceneReference referenceHeader(const std::string& scene, const Rubric& rubric, int maxDepth,
+                               float continueProb);
+
 /// Measures a scene's reference with the reference solutions `solution` runs.
 SceneReference measureReference(const LabRunner& solution, const std::string& scenePath,
                                 const Rubric& rubric, int seeds, int sppFactor,

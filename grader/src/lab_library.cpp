@@ -193,23 +193,20 @@ SubmissionLibrary buildSubmissionLibrary(const LabBuild& build, const LabKit& ki
                                          const std::string& sources, const std::string& folder,
                                          const SandboxPolicy& policy) {
     SubmissionLibrary result;
-    std::array<std::string, 4> objects = kit.stubObjects;
+    auto objectOf = [&](Lab lab) { return folder + "/" + std::string(labName(lab)) + ".o"; };
     for (Lab lab : AllLabs) {
-        const int i = static_cast<int>(lab);
         const std::string source = sources + "/" + labFile(lab);
-        LabCompilation& compiled = result.labs[i];
+        LabCompilation& compiled = result.labs[static_cast<int>(lab)];
         if (!fs::exists(source)) continue; // NotSubmitted
-        const std::string object = folder + "/" + std::string(labName(lab)) + ".o";
-        compiled.messages = compileObject(build, source, "student", object, policy);
+        compiled.messages = compileObject(build, source, "student", objectOf(lab), policy);
         compiled.status = compiled.messages.empty() ? LabCompilation::Status::Compiled
                                                     : LabCompilation::Status::Failed;
-        if (compiled.status == LabCompilation::Status::Compiled) objects[i] = object;
     }
     for (Lab lab : AllLabs) {
         const int i = static_cast<int>(lab);
         if (result.labs[i].status != LabCompilation::Status::Compiled) continue;
         // This lab's object; the stubs, which load and run nothing, for the others.
-        std::vector<std::string> parts = {objects[i], kit.tableObject};
+        std::vector<std::string> parts = {objectOf(lab), kit.tableObject};
         for (Lab other : AllLabs)
             if (other != lab) parts.push_back(kit.stubObjects[static_cast<int>(other)]);
         const std::string library = folder + "/labs-" + std::string(labName(lab)) + ".so";

@@ -48,10 +48,8 @@ std::string renderSandboxed(const RenderRequest& r, const ProcessLimits& limits,
     run.command = {"/pathlab/viewer"};
     const auto arguments = viewerArguments(r, "render.pfm", "render.json");
     run.command.insert(run.command.end(), arguments.begin(), arguments.end());
-    // The viewer loads its image-file plug-in from beside itself.
-    const std::string plugin = imagePluginFileName();
-    run.files = {{r.runner->viewer, "/pathlab/viewer"}, {r.runner->libraryFor(r.lab), "/pathlab/labs.so"},
-                 {(fs::path(r.runner->viewer).parent_path() / plugin).string(), "/pathlab/" + plugin}};
+    // No image-file plug-in: the viewer writes the .pfm it is asked for without one.
+    run.files = {{r.runner->viewer, "/pathlab/viewer"}, {r.runner->libraryFor(r.lab), "/pathlab/labs.so"}};
     for (const std::string& file : sceneFiles(r.scene)) run.files.push_back({file, file});
     run.environment = {{"PATHLAB_LABS_LIBRARY", "/pathlab/labs.so"}};
     for (int k = 0; k < r.seeds; ++k) {

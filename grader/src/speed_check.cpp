@@ -113,6 +113,31 @@ TimedRun timedRun(const GraderSetup& setup, const TimedSeries& series, const Lab
     return timed;
 }
 
+/// The rubric's timed runs of one lab with one runner, in a row (no reference beside them).
+struct TimedRuns {
+    std::vector<double> samplesPerSecond; ///< one per run that finished
+    RayCounters rays;
+    double samples = 0;
+    bool complete = false;                ///< every run finished
+
+    double medianSamplesPerSecond() const { return complete ? median(samplesPerSecond) : 0; }
+};
+
+TimedRuns timedRuns(const GraderSetup& setup, const LabRunner& runner, Lab lab) {
+    const LabRunner timed = timedRunner(runner, setup.timing);
+    const TimedSeries series = timedSeries(setup, timed, lab);
+    TimedRuns runs;
+    for (int run = 0; run < setup.rubric.speedRuns; ++run) {
+        const TimedRun one = timedRun(setup, series, timed, lab, run);
+        if (!one.result.ok) return runs;
+        runs.samplesPerSecond.push_back(one.samplesPerSecond);
+        runs.rays += one.result.images.front().rays;
+        runs.samples += one.samples;
+    }
+    runs.complete = true;
+    return runs;
+}
+
 /// Speed in a build without the reference solutions: the student's timed runs alone, for the
 /// ratios between labs; the check itself is the instructor's grader's.
 CheckResult timeWithoutSolutions(const GraderSetup& setup, Lab lab, bool correct, LabGrade& grade) {
@@ -122,21 +147,9 @@ CheckResult timeWithoutSolutions(const GraderSetup& setup, Lab lab, bool correct
     check.maxScore = r.points[static_cast<int>(lab)].speed;
     // The instructor's grader gives a wrong lab no speed points: that much is known here.
     check.gradedHere = !correct;
-    const LabRunner runner = timedRunner(setup.student, setup.timing);
-    const TimedSeries series = timedSeries(setup, runner, lab);
-    std::vector<double> samplesPerSecond;
-    RayCounters rays;
-    double samples = 0;
-    for (int run = 0; run < r.speedRuns; ++run) {
-        const TimedRun timed = timedRun(setup, series, runner, lab, run);
-        if (!timed.result.ok) break;
-        samplesPerSecond.push_back(timed.samplesPerSecond);
-        rays += timed.result.images.front().rays;
-        samples += timed.samples;
-    }
-    grade.studentRays = raysPerSample(rays, samples);
-    grade.studentSamplesPerSecond = samplesPerSecond.size() == static_cast<size_t>(r.speedRuns)
-                                        ? median(samplesPerSecond) : 0;
+    const TimedRuns runs = timedRuns(setup, setup.student, lab);
+    grade.studentRays = raysPerSample(runs.rays, runs.samples);
+    grade.studentSamplesPerSecond = runs.medianSamplesPerSecond();
     grade.solutionSamplesPerSecond = setup.storedSolutionSamplesPerSecond[static_cast<int>(lab)];
     check.summary = correct ? format("graded by the instructor: this build has no reference "
                                      "solutions to time your lab against (at least %.2f of the "
@@ -306,15 +319,7 @@ double speedSceneStartUpSeconds(const GraderSetup& setup, const LabRunner& runne
 }
 
 double timedSamplesPerSecond(const GraderSetup& setup, const LabRunner& runner, Lab lab) {
-    const LabRunner timed = timedRunner(runner, setup.timing);
-    const TimedSeries series = timedSeries(setup, timed, lab);
-    std::vector<double> samplesPerSecond;
-    for (int run = 0; run < setup.rubric.speedRuns; ++run) {
-        const TimedRun one = timedRun(setup, series, timed, lab, run);
-        if (!one.result.ok) return 0;
-        samplesPerSecond.push_back(one.samplesPerSecond);
-    }
-    return median(samplesPerSecond);
+    return timedRuns(setup, runner, lab).medianSamplesPerSecond();
 }
 
 } // namespace pathlab::grader
