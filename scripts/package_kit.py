@@ -77,6 +77,20 @@ def kit_files(root=KIT):
     return sorted(f for f in listed if f and os.path.isfile(os.path.join(root, f)))
 
 
+# The instructor's hidden scenes: in the autograder whether git tracks them or not (they are
+# often kept out of a repository students might see).
+HIDDEN_SCENES = "grader/hidden_scenes/"
+
+
+def hidden_scene_files(root=KIT):
+    """The files under grader/hidden_scenes/, relative to root, sorted."""
+    folder = os.path.join(root, HIDDEN_SCENES)
+    found = []
+    for path, _, files in os.walk(folder):
+        found += [os.path.relpath(os.path.join(path, f), root) for f in files]
+    return sorted(found)
+
+
 def student_files(root=KIT):
     """{name in the release: file in the kit}, sorted by name."""
     files = {(README_NAME if f == STUDENT_README else f): f
@@ -118,7 +132,7 @@ def student_release(out, root=KIT):
 
 
 def gradescope(out, root=KIT):
-    files = kit_files(root)
+    files = sorted(set(kit_files(root)) | set(hidden_scene_files(root)))
     at_root = {name: os.path.join(root, "scripts", "gradescope", name)
                for name in ("setup.sh", "run_autograder")}
 
@@ -153,6 +167,11 @@ def main(argv):
     files = student_release(out) if command == "student-release" else gradescope(out)
     size = os.path.getsize(out)
     print(f"{out}: {len(files)} files, {size / 1e6:.1f} MB")
+    if command == "gradescope":
+        hidden = [f for f in files if f.startswith(HIDDEN_SCENES)]
+        scenes = [f for f in hidden if f.endswith(".ecs")]
+        print(f"hidden scenes packed: {len(scenes)}" + "".join(f"\n  {f}" for f in hidden)
+              if hidden else "hidden scenes packed: none (grader/hidden_scenes/ holds no file)")
     return 0
 
 

@@ -138,6 +138,29 @@ def git_head_tar(repository):
     return io.BytesIO(run.stdout)
 
 
+def git_head_commit(repository):
+    """HEAD's commit hash and its committer time (seconds since 1970), as git reads them."""
+    git_dir = os.path.join(repository, ".git") if os.path.isdir(os.path.join(repository, ".git")) else repository
+    run = subprocess.run(["git", "-c", "core.fsmonitor=false", "-c", "safe.directory=*",
+                          "--git-dir", git_dir, "log", "-1", "--format=%H %ct", "HEAD"],
+                         capture_output=True, timeout=60)
+    words = run.stdout.decode(errors="replace").split()
+    if run.returncode != 0 or len(words) != 2:
+        return "", None
+    return words[0], int(words[1])
+
+
+def newest_time(paths):
+    """The newest modification time among paths, symbolic links not followed; None if none."""
+    times = []
+    for path in paths:
+        try:
+            times.append(int(os.lstat(path).st_mtime))
+        except OSError:
+            pass
+    return max(times) if times else None
+
+
 def is_git_repository(path):
     return os.path.isdir(os.path.join(path, ".git")) or (
         os.path.isfile(os.path.join(path, "HEAD")) and os.path.isdir(os.path.join(path, "objects")))
@@ -146,16 +169,24 @@ def is_git_repository(path):
 def main():
     submission, limit = sys.argv[1], int(sys.argv[2])
     candidates = Candidates(limit)
-    report = {"kind": "", "taken": {}, "problems": candidates.problems}
+    # When it was submitted, as far as the submission tells: its last commit's time for a
+    # repository (set by the student's machine), else its files' modification time.
+    report = {"kind": "", "taken": {}, "problems": candidates.problems,
+              "commit": "", "submitted_at": None, "time_source": ""}
     try:
         lower = submission.lower()
         if os.path.isdir(submission) and is_git_repository(submission):
             report["kind"] = "git repository (HEAD)"
             report["taken"] = from_tar(git_head_tar(submission), candidates)
+            report["commit"], report["submitted_at"] = git_head_commit(submission)
+            report["time_source"] = "last commit"
         elif os.path.isdir(submission):
             report["kind"] = "folder"
             from_folder(submission, candidates)
             report["taken"] = candidates.choose()
+            report["submitted_at"] = newest_time(os.path.join(submission, where)
+                                                 for where in report["taken"].values())
+            report["time_source"] = "lab files' modification time"
         elif lower.endswith(".zip"):
             report["kind"] = "zip"
             report["taken"] = from_zip(submission, candidates)
@@ -165,6 +196,9 @@ def main():
                 report["taken"] = from_tar(f, candidates)
         else:
             candidates.problems.append("not a folder, .zip, .tar.gz or git repository")
+        if report["kind"] in ("zip", "tar"):
+            report["submitted_at"] = newest_time([submission])
+            report["time_source"] = "archive's modification time"
     except (OSError, ValueError, EOFError, zipfile.BadZipFile, tarfile.TarError,
             subprocess.TimeoutExpired, RuntimeError) as error:
         candidates.problems.append(f"the submission could not be read: {error}")

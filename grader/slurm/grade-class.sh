@@ -10,6 +10,14 @@
 # PATHLAB_BUILD names the PathLab build to grade with (default: build/ beside this script's
 # kit), also on a shared file system. Each task asks for PATHLAB_CPUS cores (default 4): one is
 # kept for timed runs, the others grade.
+#
+# What is graded, as `grader batch` takes it (every task and the merge get the same):
+#   PATHLAB_RUBRIC    the rubric (default: grader/rubric.json of the build's kit)
+#   PATHLAB_SCENES    the hidden scenes (default: the kit's grader/hidden_scenes/ when it holds
+#                     any; "none" for none)
+#   PATHLAB_DEADLINE  flags later submissions as late (e.g. 2026-12-01T23:59)
+#   PATHLAB_TIMES     a CSV of id,submitted_at from your LMS
+# They are exported to the jobs, which pass them on (grade-shard.sbatch, merge.sbatch).
 set -euo pipefail
 if [ $# -lt 2 ]; then
     echo "usage: $0 SUBMISSIONS OUT [SHARDS] [sbatch options...]" >&2
@@ -23,6 +31,17 @@ here=$(dirname "$(realpath "$0")")
 build=$(realpath "${PATHLAB_BUILD:-$here/../../build}")
 cpus=${PATHLAB_CPUS:-4}
 [ -x "$build/grader" ] || { echo "$0: no grader in $build (set PATHLAB_BUILD)" >&2; exit 2; }
+# Paths as every node sees them; a wrong one fails here, before anything is queued.
+for name in PATHLAB_RUBRIC PATHLAB_TIMES; do
+    if [ -n "${!name:-}" ]; then
+        [ -f "${!name}" ] || { echo "$0: $name=${!name} is not a file" >&2; exit 2; }
+        export "$name=$(realpath "${!name}")"
+    fi
+done
+if [ -n "${PATHLAB_SCENES:-}" ] && [ "$PATHLAB_SCENES" != none ]; then
+    [ -d "$PATHLAB_SCENES" ] || { echo "$0: PATHLAB_SCENES=$PATHLAB_SCENES is not a folder" >&2; exit 2; }
+    export PATHLAB_SCENES=$(realpath "$PATHLAB_SCENES")
+fi
 mkdir -p "$out"
 
 array=$(sbatch --parsable --array="0-$((shards - 1))" --cpus-per-task="$cpus" \

@@ -1,5 +1,7 @@
 #include "arguments.h"
 
+#include "grading_scenes.h"
+
 #include "pathlab/input_error.h"
 #include "pathlab/this_process.h"
 
@@ -12,6 +14,7 @@ const char* const usage = R"(usage: grader [options]                       grade
        grader submission PATH --out DIR       grade one submission, in the sandbox
        grader batch SUBMISSIONS --out DIR     grade every submission in a folder, in the sandbox
        grader merge DIR... --out DIR          merge the gradebooks of batch shards
+       grader rubric                          print the rubric in words: points, thresholds, scenes
 
 A submission is a folder, a .zip, a .tar.gz or a git repository holding the four lab files
 (branching.cpp, uniform.cpp, importance.cpp, roulette.cpp); only those are taken.
@@ -21,7 +24,11 @@ options
   --viewer PATH       the viewer whose labs are graded (default: the one beside grader)
   --solution-viewer PATH
                       the viewer whose --solution is the reference (default: --viewer)
-  --scenes DIR        also grade on every .ecs in DIR (references measured from the solutions)
+  --scenes DIR        the hidden scenes: also grade on every .ecs in DIR, references measured
+                      from the solutions (default: grader/hidden_scenes/ when it holds any;
+                      --scenes none grades on the public scenes only)
+  --reveal-hidden     feedback names the hidden scenes and shows their images and tiles
+                      (by default it says only pass or fail and a likely cause)
   --rubric FILE       points and thresholds (default: grader/rubric.json)
   --references DIR    stored references (default: grader/references)
   --seed N            seed base (default 1); a fail is re-checked on fresh seeds anyway
@@ -37,11 +44,20 @@ make-references
                       and timed runs on this machine (about a minute)
   --only-scene NAME   measure only the reference of NAME, a scene of the rubric (a scene just
                       added to it), and not lab_figures.json
+  --only-hidden       measure only the hidden scenes' references, into the reference cache
+                      (Gradescope's setup.sh does this once, so no submission waits for it)
 
 batch
   --out DIR           gradebook.csv, summary.html, batch.log and submissions/ID/ (feedback)
   --jobs N            submissions graded at once (default 1)
   --force             grade again what is already graded (default: a restart skips it)
+  --only ID[,ID...]   grade only these submissions (again); the gradebook keeps the others
+  --keep-stale        keep results graded under another rubric or other scenes (default: grade
+                      them again); the gradebook marks them stale
+  --deadline TIME     flag submissions made after TIME (2026-12-01T23:59, local time, or with
+                      Z or +01:00) as late in the gradebook
+  --times FILE.csv    submission times (id,submitted_at) from your LMS, in place of those found
+                      (a git repository's last commit, else the submission's file time)
   --shard K/N         grade only every N-th submission, starting at the K-th (0-based)
 )";
 
@@ -91,14 +107,15 @@ Arguments parseArguments(int argc, char** argv) {
     int first = 1;
     if (argc > 1) {
         const std::string command = argv[1];
-        for (const char* known : {"make-references", "submission", "batch", "merge"})
+        for (const char* known : {"make-references", "submission", "batch", "merge", "rubric"})
             if (command == known) a.command = command, first = 2;
         // The instructor's commands compile or run the reference solutions.
-        if (!PATHLAB_HAS_SOLUTIONS && first == 2 && a.command != "merge")
+        if (!PATHLAB_HAS_SOLUTIONS && first == 2 && a.command != "merge" && a.command != "rubric")
             throw InputError("grader " + a.command + " is the instructor's: it needs the reference "
                              "solutions (solutions/), which the student release does not have; "
                              "`make grade` grades your labs");
     }
+    bool scenesGiven = false;
     auto value = [&](int& i) -> std::string {
         if (i + 1 >= argc) throw InputError(std::string("option ") + argv[i] + " needs a value");
         return argv[++i];
@@ -112,7 +129,19 @@ Arguments parseArguments(int argc, char** argv) {
             a.labs = {*lab};
         } else if (arg == "--viewer") a.viewer = value(i);
         else if (arg == "--solution-viewer") a.solutionViewer = value(i);
-        else if (arg == "--scenes") a.scenesDir = value(i);
+        else if (arg == "--scenes") a.scenesDir = value(i), scenesGiven = true;
+        else if (arg == "--reveal-hidden") a.revealHidden = true;
+        else if (arg == "--only-hidden") a.onlyHidden = true;
+        else if (arg == "--only") {
+            const std::string ids = value(i);
+            for (size_t at = 0; at <= ids.size();) {
+                const size_t comma = std::min(ids.find(',', at), ids.size());
+                if (comma > at) a.only.push_back(ids.substr(at, comma - at));
+                at = comma + 1;
+            }
+        } else if (arg == "--keep-stale") a.keepStale = true;
+        else if (arg == "--deadline") a.deadline = value(i);
+        else if (arg == "--times") a.times = value(i);
         else if (arg == "--rubric") a.rubric = value(i);
         else if (arg == "--references") a.references = value(i);
         else if (arg == "--seed") a.seed = static_cast<uint64_t>(number(arg, value(i), 0));
@@ -145,7 +174,12 @@ Arguments parseArguments(int argc, char** argv) {
         else if (a.command == "submission" || a.command == "batch" || a.command == "merge") a.inputs.push_back(arg);
         else throw InputError("unexpected argument '" + arg + "' (grader --help lists the commands)");
     }
-    if (a.command == "help") return a;
+    if (a.command == "help" || a.command == "rubric") return a;
+    if (!scenesGiven) a.scenesDir = defaultHiddenScenesFolder();
+    else if (a.scenesDir == "none") a.scenesDir.clear();
+    else hiddenScenePaths(a.scenesDir); // says now if the folder is wrong
+    if (a.referenceCache.empty()) a.referenceCache = (thisProgram().parent_path() / "reference-cache").string();
+    if (!a.only.empty() && a.command != "batch") throw InputError("option --only is for grader batch");
     if (a.command == "submission" && a.inputs.size() != 1)
         throw InputError("grader submission expects one submission (a folder, .zip, .tar.gz or git repository)");
     if ((a.command == "batch" || a.command == "merge") && a.inputs.empty())

@@ -10,11 +10,14 @@
 namespace pathlab::grader {
 
 struct Arguments {
-    /// grade (the labs of this build), make-references, submission, batch, merge, help.
+    /// grade (the labs of this build), make-references, submission, batch, merge, rubric, help.
     std::string command = "grade";
     std::vector<std::string> inputs; ///< submission: one path; batch: folders/files; merge: folders
     std::vector<Lab> labs{AllLabs.begin(), AllLabs.end()};
-    std::string viewer, solutionViewer, scenesDir;
+    std::string viewer, solutionViewer;
+    /// The hidden scenes: grader/hidden_scenes/ when it holds any, or --scenes DIR; "" for none.
+    std::string scenesDir;
+    bool revealHidden = false;  ///< feedback may name hidden scenes and show their images
     std::string rubric, references;
     std::string json, junit, gradescope, html, report;
     std::string out;         ///< submission, batch, merge: the output folder
@@ -23,13 +26,20 @@ struct Arguments {
     bool speed = true;
     bool onlyFigures = false;   ///< make-references: only lab_figures.json
     std::string onlyScene;      ///< make-references: only this rubric scene's reference
+    bool onlyHidden = false;    ///< make-references: only the hidden scenes' (into the cache)
     // batch
     int jobs = 1;
     bool force = false;
+    std::vector<std::string> only; ///< grade only these submission ids (again)
+    bool keepStale = false;        ///< keep results graded under another rubric or scenes
+    std::string deadline;          ///< ISO 8601; a submission after it is flagged late
+    std::string times;             ///< a CSV of id,submitted_at that overrides the times found
     int shard = 0, shards = 1;
     // submission, as batch starts it (and run_autograder)
     std::string kit;            ///< compiled lab kit (default: built in the output folder)
-    std::string referenceCache; ///< references of --scenes, measured once per batch
+    /// References of the hidden scenes, measured once and kept while their files are unchanged
+    /// (default: reference-cache/ beside the grader; a batch keeps its own in OUT/.references).
+    std::string referenceCache;
     std::string timingLock;
     std::vector<int> timingCpus, workCpus;
 };

@@ -14,7 +14,9 @@
 #include "grading_scenes.h"
 #include "lab_figures.h"
 #include "progress_bar.h"
+#include "class_similarity.h"
 #include "submission_grading.h"
+#include "submission_time.h"
 #include "time_limit.h"
 
 #include "pathlab/input_error.h"
@@ -22,6 +24,7 @@
 #include "pathlab/this_process.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -31,6 +34,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <sched.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -117,10 +121,34 @@ std::vector<Submission> listSubmissions(const Arguments& a) {
 /// The options a child `grader submission` shares with the batch.
 std::vector<std::string> sharedOptions(const Arguments& a) {
     std::vector<std::string> options = {"--rubric", a.rubric, "--references", a.references,
-                                        "--seed", std::to_string(a.seed)};
-    if (!a.scenesDir.empty()) options.insert(options.end(), {"--scenes", a.scenesDir});
+                                        "--seed", std::to_string(a.seed),
+                                        "--scenes", a.scenesDir.empty() ? "none" : a.scenesDir};
+    if (a.revealHidden) options.push_back("--reveal-hidden");
     if (!a.speed) options.push_back("--no-speed");
     return options;
+}
+
+/// The most a submission can score under this rubric, as this batch grades (speed or not).
+double maxScoreNow(const Rubric& rubric, bool speed) {
+    double max = 0;
+    for (const LabPoints& p : rubric.points) max += p.correctness + p.noise + (speed ? p.speed : 0);
+    return max;
+}
+
+/// What a batch's gradebook is written against; stored in OUT/batch.json for `grader merge`.
+GradingNow gradingNow(const Arguments& a, const Rubric& rubric) {
+    GradingNow now;
+    now.rubricHash = rubric.hash;
+    now.scenesHash = scenesHash(rubric, a.scenesDir);
+    now.maxScore = maxScoreNow(rubric, a.speed);
+    if (!a.deadline.empty()) {
+        now.deadline = parseTime(a.deadline);
+        if (!now.deadline)
+            throw InputError("option --deadline expects a time like 2026-12-01T23:59 (local), "
+                             "2026-12-01T23:59Z or 2026-12-01T23:59+01:00, got '" + a.deadline + "'");
+    }
+    if (!a.times.empty()) now.times = loadSubmissionTimes(a.times);
+    return now;
 }
 
 /// A child grading one submission.
@@ -146,6 +174,58 @@ Job startJob(const std::vector<std::string>& argv, const Submission& s, const st
     return job;
 }
 
+/// Waits for a child and returns its wait status.
+int waitFor(pid_t pid) {
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    return status;
+}
+
+/// Before anyone is graded: the reference solutions, graded as a submission on every scene (speed
+/// left out: against themselves it measures only the machine), must get full marks, or the
+/// references, the scenes or the rubric are wrong and every grade would be too. Skipped while
+/// the grading it passed is unchanged (OUT/.canary/passed holds its fingerprint).
+void runCanary(const std::vector<std::string>& childBase, const std::string& solutions,
+               const std::string& out, const GradingNow& now, std::ofstream& log) {
+    const std::string folder = out + "/.canary";
+    const std::string fingerprint = now.rubricHash + " " + now.scenesHash + " " + PATHLAB_VERSION;
+    {
+        std::ifstream passed(folder + "/passed");
+        std::string previous;
+        if (passed && std::getline(passed, previous) && previous == fingerprint) return;
+    }
+    std::fprintf(stderr, "canary: grading the reference solutions on every scene ...\n");
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    std::vector<std::string> argv = childBase;
+    argv.insert(argv.end(), {solutions, "--out", folder, "--no-speed"});
+    const auto start = std::chrono::steady_clock::now();
+    const Job job = startJob(argv, {solutions, "canary"}, folder + "/grader.log");
+    waitFor(job.pid);
+    GradebookEntry canary{"canary", solutions, nullptr, ""};
+    std::ifstream result(folder + "/result.json");
+    if (result) canary.result = nlohmann::json::parse(result, nullptr, false);
+    if (canary.result.is_discarded()) canary.result = nullptr;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (canary.result.is_null())
+        throw InputError("canary: the reference solutions could not be graded (see " + folder +
+                         "/grader.log); nothing was graded");
+    const double score = canary.result.value("score", 0.0), max = canary.result.value("max_score", 0.0);
+    log << timestamp() << " canary: reference solutions " << score << " / " << max << ", "
+        << std::lround(seconds) << " s\n" << std::flush;
+    if (score != max || max == 0) {
+        std::string why;
+        for (const auto& d : canary.result.value("diagnoses", nlohmann::json::array()))
+            why += "\n  " + d.value("lab", "") + " " + d.value("check", "") + ": " + d.value("diagnosis", "");
+        throw InputError("canary: the reference solutions score " + std::to_string(score).substr(0, 5) +
+                         " / " + std::to_string(max).substr(0, 5) +
+                         " on this grading, so its references, scenes or rubric are wrong; nothing was "
+                         "graded. What failed:" + why + "\n  (details: " + folder + "/index.html)");
+    }
+    writeFileAtomically(folder + "/passed", fingerprint + "\n");
+}
+
 } // namespace
 
 int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
@@ -160,7 +240,9 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
     // References of hidden scenes come from the solutions, linked into this build's viewer.
     const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
     std::vector<std::string> notes;
-    g.scenes = gradingScenes(rubric, a.references, a.scenesDir, a.referenceCache, solution, scratch, notes);
+    g.scenes = gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden},
+                             solution, scratch, notes);
+    g.scenesHash = scenesHash(rubric, a.scenesDir);
     g.timing = {a.timingCpus, a.timingLock, a.timingCpus.empty() ? 0 : 1};
     g.threads = a.workCpus.empty() ? a.threads : static_cast<int>(a.workCpus.size());
     g.seedBase = a.seed;
@@ -179,7 +261,7 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
     outcome.report.notes.insert(outcome.report.notes.begin(), notes.begin(), notes.end());
     std::printf("%s: %s\n", outcome.id.c_str(), outcome.status.c_str());
     std::fputs(terminalReport(outcome.report, false).c_str(), stdout);
-    writeReports(a, outcome.report);
+    writeReports(a, rubric, outcome.report);
     return 0;
 }
 
@@ -187,51 +269,82 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
     requireSandbox();
     const auto start = std::chrono::steady_clock::now();
     const std::vector<Submission> submissions = listSubmissions(a);
+    for (const std::string& id : a.only)
+        if (std::none_of(submissions.begin(), submissions.end(), [&](const Submission& s) { return s.id == id; }))
+            throw InputError("option --only: no submission has the id '" + id + "' (gradebook.csv lists the ids)");
     fs::create_directories(a.out + "/submissions");
     const std::string out = fs::absolute(a.out).string();
+    const GradingNow grading = gradingNow(a, rubric);
+    writeFileAtomically(out + "/batch.json",
+                        nlohmann::json{{"rubric_hash", grading.rubricHash}, {"scenes_hash", grading.scenesHash},
+                                       {"max_score", grading.maxScore}, {"deadline", a.deadline},
+                                       {"times", a.times.empty() ? "" : fs::absolute(a.times).string()}}
+                                .dump(1) + "\n");
     std::ofstream log(out + "/batch.log", std::ios::app);
     log << timestamp() << " batch of " << submissions.size() << " submission(s), " << a.jobs << " job(s)"
-        << (a.shards > 1 ? ", shard " + std::to_string(a.shard) + "/" + std::to_string(a.shards) : "") << "\n";
+        << (a.shards > 1 ? ", shard " + std::to_string(a.shard) + "/" + std::to_string(a.shards) : "")
+        << ", rubric " << grading.rubricHash << ", scenes " << grading.scenesHash << "\n";
+
+    // What to grade: everything not graded yet, and what was graded under another rubric or on
+    // other scenes (unless --keep-stale); --force: everything; --only: those named.
+    std::vector<Submission> todo;
+    size_t stale = 0;
+    for (const Submission& s : submissions) {
+        const GradebookEntry stored = readGradebookEntry(out, s.id, s.path);
+        const bool isStale = !stored.result.is_null() && !staleness(stored.result, grading).empty();
+        stale += isStale;
+        const bool wanted = a.only.empty() ? a.force || stored.result.is_null() || (isStale && !a.keepStale)
+                                           : std::find(a.only.begin(), a.only.end(), s.id) != a.only.end();
+        if (wanted) todo.push_back(s);
+    }
+    const size_t skipped = submissions.size() - todo.size();
+    if (skipped > 0)
+        std::fprintf(stderr, "%zu submission(s) already graded (--force grades them again)\n", skipped);
+    if (stale > 0)
+        std::fprintf(stderr, "%zu submission(s) were graded under another rubric or on other scenes: %s\n", stale,
+                     a.keepStale || !a.only.empty() ? "kept, marked stale in the gradebook" : "graded again");
 
     // Cores: the first for timed runs, the rest for everything else.
     const std::vector<int> cpus = allowedCpus();
     const std::vector<int> timingCpus = cpus.empty() ? std::vector<int>{} : std::vector<int>{cpus[0]};
     const std::vector<int> workCpus = cpus.size() > 1 ? std::vector<int>(cpus.begin() + 1, cpus.end()) : cpus;
 
-    // Shared by every grading: the compiled kit, and the references of hidden scenes.
+    // Shared by every grading: the compiled kit, and the references of hidden scenes (kept with
+    // this batch's output, measured again when a scene's files change).
     const LabBuild build = labBuildOfThisGrader();
     const std::string kit = out + "/.kit";
-    std::fprintf(stderr, "compiling the lab kit (stubs, table, reference solutions) ...\n");
-    buildLabKit(build, kit, {workCpus, sandboxUserForThisProcess()});
     const std::string referenceCache = out + "/.references";
-    if (!a.scenesDir.empty()) {
-        std::vector<std::string> notes;
-        const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
-        gradingScenes(rubric, a.references, a.scenesDir, referenceCache, solution, scratch, notes);
-    }
-
-    std::vector<Submission> todo;
-    for (const Submission& s : submissions)
-        if (a.force || !fs::exists(out + "/submissions/" + s.id + "/result.json")) todo.push_back(s);
-    const size_t skipped = submissions.size() - todo.size();
-    if (skipped > 0)
-        std::fprintf(stderr, "%zu submission(s) already graded (--force grades them again)\n", skipped);
-
     const std::vector<std::string> childBase = [&] {
         std::vector<std::string> argv = {thisProgram().string(), "submission"};
         const std::vector<std::string> shared = sharedOptions(a);
         argv.insert(argv.end(), shared.begin(), shared.end());
         argv.insert(argv.end(), {"--kit", kit, "--timing-lock", out + "/.timing.lock",
                                  "--timing-cpus", joinCpus(timingCpus), "--work-cpus", joinCpus(workCpus),
-                                 "--viewer", a.viewer, "--solution-viewer", a.solutionViewer});
-        if (!a.scenesDir.empty()) argv.insert(argv.end(), {"--reference-cache", referenceCache});
+                                 "--viewer", a.viewer, "--solution-viewer", a.solutionViewer,
+                                 "--reference-cache", referenceCache});
         return argv;
     }();
+    if (!todo.empty()) {
+        std::fprintf(stderr, "compiling the lab kit (stubs, table, reference solutions) ...\n");
+        buildLabKit(build, kit, {workCpus, sandboxUserForThisProcess()});
+        std::vector<std::string> notes;
+        const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
+        gradingScenes(rubric, {a.references, a.scenesDir, referenceCache, a.revealHidden}, solution, scratch, notes);
+        runCanary(childBase, build.solutions, out, grading, log);
+    }
+
+    std::vector<std::string> queued; // ids waiting or being graded: "pending" in the gradebook
+    for (const Submission& s : todo) queued.push_back(s.id);
     auto entries = [&] {
         std::vector<GradebookEntry> list;
-        for (const Submission& s : submissions) list.push_back(readGradebookEntry(out, s.id, s.path));
+        for (const Submission& s : submissions) {
+            list.push_back(readGradebookEntry(out, s.id, s.path));
+            list.back().pending = std::find(queued.begin(), queued.end(), s.id) != queued.end();
+        }
         return list;
     };
+    const std::vector<SimilarLabs> noSimilarities;
+    writeGradebook(out, entries(), grading, noSimilarities);
 
     ProgressBar progress("grading", "submissions");
     const double jobSeconds = 3600; // far beyond any grading: only a grader fault gets here
@@ -260,6 +373,7 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
             ::usleep(50000);
             continue;
         }
+        queued.erase(std::find(queued.begin(), queued.end(), job->submission.id));
         const GradebookEntry entry = readGradebookEntry(out, job->submission.id, job->submission.path);
         const double seconds = std::chrono::duration<double>(now - job->start).count();
         ++done;
@@ -272,15 +386,19 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
                 << " / " << entry.result.value("max_score", 0.0);
         log << ", " << std::lround(seconds) << " s\n" << std::flush;
         running.erase(job);
-        writeGradebook(out, entries());
+        writeGradebook(out, entries(), grading, noSimilarities);
         progress.update(static_cast<int>(done), static_cast<int>(todo.size()),
                         failed > 0 ? std::to_string(failed) + " not graded" : "");
     }
-    writeGradebook(out, entries());
+    std::vector<std::string> ids;
+    for (const Submission& s : submissions) ids.push_back(s.id);
+    const std::vector<SimilarLabs> similar = similarSubmissions(out, ids);
+    writeGradebook(out, entries(), grading, similar);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     log << timestamp() << " batch finished in " << seconds << " s\n";
-    std::printf("graded %zu submission(s) in %.0f s (%zu skipped, %zu not graded): %s/gradebook.csv, "
-                "%s/summary.html\n", done - failed, seconds, skipped, failed, out.c_str(), out.c_str());
+    std::printf("graded %zu submission(s) in %.0f s (%zu skipped, %zu not graded, %zu similar pair(s)): "
+                "%s/gradebook.csv, %s/lms.csv, %s/summary.html\n",
+                done - failed, seconds, skipped, failed, similar.size(), out.c_str(), out.c_str(), out.c_str());
     return 0;
 }
 

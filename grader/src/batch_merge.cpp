@@ -1,24 +1,60 @@
 // grader merge: the gradebooks of batch shards (grader batch --shard, run on several machines)
 // as one.
+#include "class_similarity.h"
 #include "commands.h"
 #include "gradebook.h"
+#include "submission_time.h"
 
 #include "pathlab/input_error.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 namespace pathlab::grader {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+/// The grading a shard's gradebook was written against (its batch.json).
+GradingNow shardGrading(const std::string& shard, std::string& deadline, std::string& times) {
+    std::ifstream in(shard + "/batch.json");
+    if (!in) throw InputError(shard + ": not a batch's output (no batch.json in it)");
+    try {
+        const nlohmann::json j = nlohmann::json::parse(in);
+        GradingNow now;
+        now.rubricHash = j.at("rubric_hash");
+        now.scenesHash = j.at("scenes_hash");
+        now.maxScore = j.at("max_score");
+        deadline = j.value("deadline", "");
+        times = j.value("times", "");
+        return now;
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(shard + "/batch.json: " + e.what());
+    }
+}
+
+} // namespace
+
 int mergeBatches(const Arguments& a) {
     fs::create_directories(a.out + "/submissions");
     std::vector<GradebookEntry> all;
+    GradingNow now;
+    std::string deadline = a.deadline, times = a.times;
     for (const std::string& shard : a.inputs) {
         const fs::path folder = fs::path(shard) / "submissions";
         if (!fs::is_directory(folder)) throw InputError(shard + ": not a batch's output (no submissions/ in it)");
+        std::string shardDeadline, shardTimes;
+        const GradingNow graded = shardGrading(shard, shardDeadline, shardTimes);
+        if (shard == a.inputs.front()) now = graded;
+        else if (graded.rubricHash != now.rubricHash || graded.scenesHash != now.scenesHash ||
+                 graded.maxScore != now.maxScore)
+            throw InputError(shard + " was graded under another rubric, other scenes or another maximum than " +
+                             a.inputs.front() + ": grade them alike before merging");
+        if (deadline.empty()) deadline = shardDeadline;
+        if (times.empty()) times = shardTimes;
         for (const auto& entry : fs::directory_iterator(folder)) {
             const std::string id = entry.path().filename().string();
             const GradebookEntry e = readGradebookEntry(shard, id, "");
@@ -30,8 +66,15 @@ int mergeBatches(const Arguments& a) {
             all.push_back(e);
         }
     }
+    if (!deadline.empty()) {
+        now.deadline = parseTime(deadline);
+        if (!now.deadline) throw InputError("option --deadline: cannot read the time '" + deadline + "'");
+    }
+    if (!times.empty()) now.times = loadSubmissionTimes(times);
     std::sort(all.begin(), all.end(), [](const GradebookEntry& x, const GradebookEntry& y) { return x.id < y.id; });
-    writeGradebook(a.out, all);
+    std::vector<std::string> ids;
+    for (const GradebookEntry& e : all) ids.push_back(e.id);
+    writeGradebook(a.out, all, now, similarSubmissions(a.out, ids));
     std::printf("merged %zu submission(s) from %zu shard(s): %s/gradebook.csv\n", all.size(),
                 a.inputs.size(), a.out.c_str());
     return 0;

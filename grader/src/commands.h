@@ -10,7 +10,7 @@
 namespace pathlab::grader {
 
 /// Writes the reports the options ask for (--json, --junit, --gradescope, --html).
-void writeReports(const Arguments& a, const GradeReport& report);
+void writeReports(const Arguments& a, const Rubric& rubric, const GradeReport& report);
 
 /// Grades the labs of this build (or of --viewer): exit 0 when every check passed, 1 if not.
 int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scratch);

@@ -32,6 +32,18 @@ struct SceneRuns {
     }
 };
 
+/// A render's failure text as feedback may show it: a hidden scene's path and name (which a
+/// lab's own output or the viewer's message may quote) replaced by what feedback calls it.
+std::string withoutSceneName(std::string text, const GradingScene& scene) {
+    if (!scene.hidden) return text;
+    for (const std::string& secret : {scene.path, scene.reference.scene}) {
+        if (secret.empty()) continue;
+        for (size_t at = text.find(secret); at != std::string::npos; at = text.find(secret, at + scene.name.size()))
+            text.replace(at, secret.size(), scene.name);
+    }
+    return text;
+}
+
 SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab lab, uint64_t seedBase) {
     const Rubric& r = setup.rubric;
     SceneRuns runs;
@@ -94,8 +106,8 @@ struct RunFailure {
 /// One attempt of the correctness check over all scenes; fills `details` and `diagnosis` on
 /// rejection.
 bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, LabGrade& grade,
-                        std::vector<std::string>& details, std::string& diagnosis,
-                        RunFailure& failure, double& noise) {
+                        std::vector<std::string>& details, std::vector<std::string>& hiddenDetails,
+                        std::string& diagnosis, RunFailure& failure, double& noise) {
     const Rubric& r = setup.rubric;
     std::vector<Comparison> comparisons;
     std::vector<double> allP;
@@ -104,7 +116,7 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
     for (const GradingScene& scene : setup.scenes) {
         const SceneRuns runs = renderSeeds(setup, scene, lab, seedBase);
         if (!runs.failure.empty()) {
-            failure = {"on " + scene.reference.scene + " the lab " + runs.failure, runs.failureKind};
+            failure = {"on " + scene.name + " the lab " + withoutSceneName(runs.failure, scene), runs.failureKind};
             return false;
         }
         if (scene.reference.scene == r.noiseScene || noise < 0)
@@ -113,7 +125,8 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
             pathLengths.push_back({scene.furnace->continueProb, runs.rays.bounce});
         comparisons.push_back(compare(runs, scene.reference.forLab(lab), r.seeds));
         allP.insert(allP.end(), comparisons.back().p.begin(), comparisons.back().p.end());
-        LabGrade::Pictures pictures{scene.reference.scene, r.width, r.height, {}, scene.reference.forLab(lab).image};
+        if (scene.hidden) continue; // its images are the instructor's
+        LabGrade::Pictures pictures{scene.name, r.width, r.height, {}, scene.reference.forLab(lab).image};
         pictures.student = runs.meanImage();
         grade.pictures.push_back(std::move(pictures));
     }
@@ -128,6 +141,8 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
     }
     if (std::none_of(rejected.begin(), rejected.end(), [](bool b) { return b; })) {
         if (const std::string note = pathLengthNote(pathLengths); !note.empty()) details.push_back(note);
+        for (const GradingScene& scene : setup.scenes)
+            if (scene.hidden) hiddenDetails.push_back(scene.name + ": matches its reference");
         return true;
     }
 
@@ -146,7 +161,8 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
     for (size_t s = 0; s < setup.scenes.size(); ++s) {
         furnaceRejected = furnaceRejected || (setup.scenes[s].furnace && sceneRejected[s]);
         refractionRejected = refractionRejected ||
-                             (setup.scenes[s].reference.scene == "refraction_check" && sceneRejected[s]);
+                             (!setup.scenes[s].hidden && setup.scenes[s].reference.scene == "refraction_check" &&
+                              sceneRejected[s]);
     }
     // Every furnace's value, accepted or not, narrows down the known bugs that explain them.
     std::vector<FurnaceObservation> furnaces;
@@ -159,8 +175,11 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
         const Expectation& e = scene.reference.forLab(lab);
         const double observed = (c.observed[0].mean + c.observed[1].mean + c.observed[2].mean) / 3;
         if (scene.furnace) furnaces.push_back({*scene.furnace, observed, c.observed[0].standardError});
-        if (sceneRejected[s]) {
-            std::string line = scene.reference.scene + ": observed/expected";
+        if (scene.hidden) {
+            hiddenDetails.push_back(scene.name + (sceneRejected[s] ? ": differs from its reference"
+                                                                   : ": matches its reference"));
+        } else if (sceneRejected[s]) {
+            std::string line = scene.name + ": observed/expected";
             for (int ch = 0; ch < 3; ++ch) {
                 const double ratio = c.observed[ch].mean / e.mean[ch];
                 const double half = critical * std::hypot(c.observed[ch].standardError, e.standardError[ch]) / e.mean[ch];
@@ -178,7 +197,7 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
                 tiles += " (" + std::to_string(tile % r.tiles) + "," + std::to_string(tile / r.tiles) + ")";
             }
             if (tileCount > 0)
-                details.push_back(scene.reference.scene + ": " + std::to_string(tileCount) + " of " +
+                details.push_back(scene.name + ": " + std::to_string(tileCount) + " of " +
                                   std::to_string(r.tiles * r.tiles) + " tiles differ (column,row from the top left):" + tiles);
             if (scene.reference.scene == "mixed_surfaces" && !furnaceRejected && !refractionRejected) {
                 const std::string cause = likelyDirectionCause(lab);
@@ -191,11 +210,18 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
                 if (diagnosis.empty()) diagnosis = cause.substr(0, cause.find(':'));
             }
             if (scene.furnace)
-                details.push_back(scene.reference.scene + format(": %.4f, where a correct lab gives %.4f",
+                details.push_back(scene.name + format(": %.4f, where a correct lab gives %.4f",
                                                                  observed, correctFurnaceValue(lab, *scene.furnace)));
         }
         offset += c.p.size();
     }
+    bool publicRejected = false;
+    for (size_t s = 0; s < setup.scenes.size(); ++s)
+        publicRejected = publicRejected || (!setup.scenes[s].hidden && sceneRejected[s]);
+    if (!publicRejected)
+        hiddenDetails.push_back("every scene you can see matches: what differs is something only a "
+                                "hidden scene has (a material, a light or a path the public scenes "
+                                "lack)");
     if (furnaceRejected) {
         const std::vector<std::string> causes = likelyFurnaceCauses(lab, furnaces);
         if (!causes.empty()) {
@@ -230,18 +256,21 @@ CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade,
     std::vector<std::string> details;
     std::string diagnosis;
     RunFailure failure;
-    if (correctnessAttempt(setup, lab, setup.seedBase * 1000, grade, details, diagnosis, failure,
-                           noise)) {
+    std::vector<std::string> hiddenDetails;
+    if (correctnessAttempt(setup, lab, setup.seedBase * 1000, grade, details, hiddenDetails,
+                           diagnosis, failure, noise)) {
         check.passed = true;
     } else if (failure.empty()) {
         // A rejection at alpha happens to correct labs too, rarely: only a second rejection on
         // fresh seeds counts.
-        std::vector<std::string> retryDetails;
+        std::vector<std::string> retryDetails, retryHiddenDetails;
         std::string retryDiagnosis;
         const bool passed = correctnessAttempt(setup, lab, setup.seedBase * 1000 + 500, grade,
-                                               retryDetails, retryDiagnosis, failure, noise);
+                                               retryDetails, retryHiddenDetails, retryDiagnosis,
+                                               failure, noise);
         check.passed = passed;
-        if (failure.empty()) details = retryDetails, diagnosis = retryDiagnosis;
+        if (failure.empty())
+            details = retryDetails, hiddenDetails = retryHiddenDetails, diagnosis = retryDiagnosis;
     }
     check.score = check.passed ? check.maxScore : 0;
     const std::string expected = isDepthLimited(lab)
@@ -260,6 +289,7 @@ CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade,
         check.diagnosis = diagnosis.empty() ? "wrong mean radiance" : diagnosis;
     }
     check.details = details;
+    check.hiddenSceneDetails = hiddenDetails;
     return check;
 }
 
@@ -277,6 +307,7 @@ GradingScene parameterCheckScene(const Rubric& rubric) {
     ref = referenceHeader(check.scene + " at maxDepth " + std::to_string(check.maxDepth) +
                               format(", continueProb %.2g", check.continueProb),
                           rubric, check.maxDepth, check.continueProb);
+    scene.name = ref.scene;
     // Every region of a furnace averages to its analytic value, known exactly: no standard error.
     const size_t values = 3 * (1 + static_cast<size_t>(rubric.tiles) * rubric.tiles);
     const size_t pixels = 3 * static_cast<size_t>(rubric.width) * rubric.height;

@@ -1,6 +1,8 @@
 #include "expectation.h"
 
+#include "content_hash.h"
 #include "hypothesis_tests.h"
+#include "scene_files.h"
 #include "seed_variance.h"
 
 #include "pathlab/image_io.h"
@@ -70,6 +72,15 @@ Expectation fromJson(const nlohmann::json& j, const std::string& folder, int wid
 
 } // namespace
 
+std::string referenceParametersHash(const Rubric& r) {
+    ContentHash hash;
+    for (const double value : {double(r.width), double(r.height), double(r.tiles), double(r.maxDepth),
+                               double(r.continueProb), double(r.seeds)})
+        hash.add(std::to_string(value));
+    for (const int spp : r.correctnessSpp) hash.add(std::to_string(spp));
+    return hash.hex();
+}
+
 SceneReference referenceHeader(const std::string& scene, const Rubric& rubric, int maxDepth,
                                float continueProb) {
     SceneReference ref;
@@ -80,6 +91,7 @@ SceneReference referenceHeader(const std::string& scene, const Rubric& rubric, i
     ref.tiles = rubric.tiles;
     ref.maxDepth = maxDepth;
     ref.continueProb = continueProb;
+    ref.parametersHash = referenceParametersHash(rubric);
     return ref;
 }
 
@@ -88,6 +100,7 @@ SceneReference measureReference(const LabRunner& solution, const std::string& sc
                                 const std::string& scratch, const Progress& progress) {
     SceneReference ref = referenceHeader(std::filesystem::path(scenePath).stem().string(), rubric,
                                          rubric.maxDepth, rubric.continueProb);
+    ref.sceneFilesHash = sceneFilesHash(scenePath);
     // The noise figure of a correct lab, as the grader measures a student's: the rubric's seeds
     // at the rubric's spp, in several independent groups whose figures are averaged.
     const int noiseGroups = 6;
@@ -131,6 +144,8 @@ void saveReference(const std::string& folder, const SceneReference& ref) {
         {"scene", ref.scene},
         {"made_by", "grader make-references"},
         {"kit_version", ref.kitVersion},
+        {"scene_files_hash", ref.sceneFilesHash},
+        {"grading_parameters_hash", ref.parametersHash},
         {"width", ref.width},
         {"height", ref.height},
         {"tiles", ref.tiles},
@@ -148,25 +163,37 @@ void saveReference(const std::string& folder, const SceneReference& ref) {
     writeFileAtomically(folder + "/" + ref.scene + ".json", j.dump(1) + "\n");
 }
 
-SceneReference loadReference(const std::string& folder, const std::string& scene,
+SceneReference loadReference(const std::string& folder, const std::string& scenePath,
                              const Rubric& rubric) {
+    const std::string scene = std::filesystem::path(scenePath).stem().string();
     const std::string path = folder + "/" + scene + ".json";
     std::ifstream in(path);
-    if (!in) throw InputError(path + ": no stored reference (run: grader make-references)");
+    if (!in) throw InputError(path + ": no stored reference");
     SceneReference ref;
     try {
         const nlohmann::json j = nlohmann::json::parse(in);
         ref.scene = j.at("scene");
         ref.kitVersion = j.at("kit_version");
+        ref.sceneFilesHash = j.value("scene_files_hash", "");
+        ref.parametersHash = j.value("grading_parameters_hash", "");
         ref.width = j.at("width");
         ref.height = j.at("height");
         ref.tiles = j.at("tiles");
         ref.maxDepth = j.at("max_depth");
         ref.continueProb = j.at("continue_prob");
-        if (ref.width != rubric.width || ref.height != rubric.height || ref.tiles != rubric.tiles ||
-            ref.maxDepth != rubric.maxDepth || ref.continueProb != rubric.continueProb)
-            throw InputError(path + ": made for other sizes or parameters than the rubric's "
-                                    "(run: grader make-references)");
+        // Stale before anything else is read: its images may have another size.
+        std::vector<std::string> changed;
+        if (ref.sceneFilesHash != sceneFilesHash(scenePath))
+            changed.push_back("the scene's files (" + scenePath + " and the .obj/.mtl it names) changed");
+        if (ref.parametersHash != referenceParametersHash(rubric))
+            changed.push_back("the rubric's sizes, parameters, seeds or samples per pixel changed");
+        if (ref.kitVersion != PATHLAB_VERSION)
+            changed.push_back("it was made by PathLab " + ref.kitVersion + ", this is " + PATHLAB_VERSION);
+        if (!changed.empty()) {
+            std::string why;
+            for (const std::string& c : changed) why += (why.empty() ? "" : "; ") + c;
+            throw StaleReference(path + " no longer fits: " + why + " since it was measured");
+        }
         ref.depthLimited = fromJson(j.at("depth_limited"), folder, ref.width, ref.height);
         ref.unbiased = fromJson(j.at("unbiased"), folder, ref.width, ref.height);
         for (Lab lab : AllLabs)

@@ -5,6 +5,8 @@
 #include "render_run.h"
 #include "rubric.h"
 
+#include "pathlab/input_error.h"
+
 #include <array>
 #include <functional>
 #include <string>
@@ -23,7 +25,11 @@ struct Expectation {
 /// Everything the grader compares one scene with.
 struct SceneReference {
     std::string scene;             ///< name, e.g. "furnace"
+    /// What it was measured from: a stored or cached reference whose hashes or kit version
+    /// differ from the scene's and rubric's now is stale (loadReference).
     std::string kitVersion;
+    std::string sceneFilesHash;    ///< scene_files.h
+    std::string parametersHash;    ///< referenceParametersHash
     int width = 0, height = 0, tiles = 0, maxDepth = 0;
     float continueProb = 0;
     Expectation depthLimited;      ///< labs 1-3, at maxDepth
@@ -38,6 +44,15 @@ struct SceneReference {
 /// Called with (done, total) as reference renders finish, for a progress bar.
 using Progress = std::function<void(int, int)>;
 
+/// A fingerprint of the rubric's settings that a measured reference depends on: sizes, tiles,
+/// parameters, seeds and samples per pixel.
+std::string referenceParametersHash(const Rubric& rubric);
+
+/// A stored reference made from other scene files, rubric settings or kit version than now.
+struct StaleReference : InputError {
+    using InputError::InputError;
+};
+
 /// A reference with its header filled in for `rubric`'s sizes and these parameters, and no
 /// expectations yet.
 SceneReference referenceHeader(const std::string& scene, const Rubric& rubric, int maxDepth,
@@ -50,7 +65,10 @@ SceneReference measureReference(const LabRunner& solution, const std::string& sc
 
 /// references/NAME.json (+ NAME.depth_limited.exr, NAME.unbiased.exr). Atomic writes.
 void saveReference(const std::string& folder, const SceneReference& reference);
-/// Throws InputError if missing or made for other sizes or parameters than `rubric`'s.
-SceneReference loadReference(const std::string& folder, const std::string& scene, const Rubric& rubric);
+/// The reference of the scene at `scenePath` stored in `folder` (under the scene's name).
+/// Throws InputError if there is none or it is unreadable, StaleReference (saying what changed)
+/// if it was measured from other scene files, rubric settings or kit version than now.
+SceneReference loadReference(const std::string& folder, const std::string& scenePath,
+                             const Rubric& rubric);
 
 } // namespace pathlab::grader

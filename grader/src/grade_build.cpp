@@ -60,6 +60,16 @@ int makeReferences(const Arguments& a, const Rubric& rubric, const std::string& 
         return 0;
     }
     const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
+    if (a.onlyHidden) {
+        if (a.scenesDir.empty())
+            throw InputError("option --only-hidden: no hidden scenes (grader/hidden_scenes/ holds no .ecs; "
+                             "or name a folder with --scenes DIR)");
+        std::vector<std::string> notes;
+        gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden}, solution,
+                      scratch, notes);
+        std::printf("the hidden scenes' references are in %s\n", a.referenceCache.c_str());
+        return 0;
+    }
     if (!a.onlyScene.empty() &&
         std::find(rubric.scenes.begin(), rubric.scenes.end(), a.onlyScene) == rubric.scenes.end())
         throw InputError("option --only-scene: '" + a.onlyScene + "' is not a scene of the rubric's "
@@ -77,10 +87,10 @@ int makeReferences(const Arguments& a, const Rubric& rubric, const std::string& 
     return 0;
 }
 
-void writeReports(const Arguments& a, const GradeReport& report) {
+void writeReports(const Arguments& a, const Rubric& rubric, const GradeReport& report) {
     if (!a.json.empty()) writeFileAtomically(a.json, jsonReport(report));
     if (!a.junit.empty()) writeFileAtomically(a.junit, junitReport(report));
-    if (!a.gradescope.empty()) writeFileAtomically(a.gradescope, gradescopeReport(report));
+    if (!a.gradescope.empty()) writeFileAtomically(a.gradescope, gradescopeReport(report, rubric.hiddenScenesVisibility));
     if (!a.html.empty()) writeHtmlReport(report, a.html);
 }
 
@@ -110,7 +120,8 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
             report.ratiosReference = "the reference solutions on " + stored->machine.describe();
         }
     }
-    setup.scenes = gradingScenes(rubric, a.references, a.scenesDir, "", setup.solution, scratch, report.notes);
+    setup.scenes = gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden},
+                                 setup.solution, scratch, report.notes);
     // The time limits, scaled to this machine's speed now: the reference's start-up where this
     // build has the solutions, the student's own viewer's where it has not (the start-up is the
     // scene and Embree's BVH, the same for any lab).
@@ -126,7 +137,7 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
     }
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fputs(terminalReport(report, ::isatty(STDOUT_FILENO)).c_str(), stdout);
-    writeReports(a, report);
+    writeReports(a, rubric, report);
     if (!a.report.empty()) {
         std::fprintf(stderr, "measuring the lab notebook's figures ...\n");
         LabFigures yours;

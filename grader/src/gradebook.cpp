@@ -1,6 +1,7 @@
 #include "gradebook.h"
 
 #include "reports.h"
+#include "submission_time.h"
 
 #include "pathlab/lab_registry.h"
 #include "pathlab/render_stats.h"
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace pathlab::grader {
@@ -28,21 +30,84 @@ std::string number(double value) {
     return out.str();
 }
 
-std::string csv(const std::vector<GradebookEntry>& entries) {
+/// When a result was submitted (seconds since 1970) and how that is known; 0 when unknown.
+std::pair<long long, std::string> submittedAt(const GradebookEntry& e, const GradingNow& now) {
+    if (const auto given = now.times.find(e.id); given != now.times.end()) return {given->second, "--times"};
+    if (e.result.is_null()) return {0, ""};
+    const nlohmann::json intake = e.result.value("intake", nlohmann::json::object());
+    return {intake.value("submitted_at", 0LL), intake.value("time_source", "")};
+}
+
+/// "yes", "no", or "" where there is no deadline or no time.
+std::string lateness(const GradebookEntry& e, const GradingNow& now) {
+    const long long at = submittedAt(e, now).first;
+    if (!now.deadline || at == 0) return "";
+    return at > *now.deadline ? "yes" : "no";
+}
+
+/// The total a gradebook may show: none for a result whose maximum is not today's.
+std::optional<double> shownTotal(const GradebookEntry& e, const GradingNow& now) {
+    if (e.result.is_null() || e.result.value("max_score", 0.0) != now.maxScore) return std::nullopt;
+    return e.result.value("score", 0.0);
+}
+
+std::string statusOf(const GradebookEntry& e, const GradingNow& now) {
+    if (e.pending) return "pending";
+    if (e.result.is_null()) return "not graded: " + e.problem;
+    std::string status = e.result.value("status", "");
+    if (const std::string stale = staleness(e.result, now); !stale.empty()) {
+        status = "stale: " + stale + "; regrade with grader batch --only " + e.id + " (" + status + ")";
+    }
+    return status;
+}
+
+const char* const checkNames[] = {"correctness", "noise", "speed"};
+
+std::string csv(const std::vector<GradebookEntry>& entries, const GradingNow& now) {
     std::string text = "id";
-    for (Lab lab : AllLabs) text += "," + std::string(labName(lab));
-    text += ",total,max_total,status\n";
+    for (Lab lab : AllLabs) {
+        text += "," + std::string(labName(lab));
+        for (const char* check : checkNames) text += "," + std::string(labName(lab)) + "_" + check;
+    }
+    text += ",total,max_total,status,missing_labs,submitted_at,time_source,late,commit,files_hash,"
+            "rubric_hash\n";
     for (const GradebookEntry& e : entries) {
         text += csvField(e.id);
-        if (e.result.is_null()) {
-            for (size_t i = 0; i < AllLabs.size() + 2; ++i) text += ",";
-            text += "," + csvField("not graded: " + e.problem) + "\n";
-            continue;
+        const std::optional<double> total = shownTotal(e, now);
+        for (Lab lab : AllLabs) {
+            const nlohmann::json labResult =
+                total ? e.result["labs"].value(std::string(labName(lab)), nlohmann::json::object()) : nlohmann::json::object();
+            text += "," + (total ? number(labResult.value("score", 0.0)) : "");
+            for (const char* check : checkNames) {
+                const nlohmann::json c = labResult.value("checks", nlohmann::json::object()).value(check, nlohmann::json());
+                text += "," + (c.is_object() && c.value("graded_here", true) ? number(c.value("score", 0.0)) : "");
+            }
         }
-        for (Lab lab : AllLabs) text += "," + number(e.result["labs"][std::string(labName(lab))].value("score", 0.0));
-        text += "," + number(e.result.value("score", 0.0)) + "," + number(e.result.value("max_score", 0.0));
-        text += "," + csvField(e.result.value("status", "")) + "\n";
+        text += "," + (total ? number(*total) : "") + "," + number(now.maxScore);
+        text += "," + csvField(statusOf(e, now));
+        const nlohmann::json intake = e.result.is_null() ? nlohmann::json::object()
+                                                          : e.result.value("intake", nlohmann::json::object());
+        std::string missing;
+        if (!e.result.is_null())
+            for (const auto& lab : e.result.value("missing_labs", nlohmann::json::array()))
+                missing += (missing.empty() ? "" : " ") + lab.get<std::string>();
+        const auto [at, source] = submittedAt(e, now);
+        text += "," + csvField(missing) + "," + (at ? isoTime(at) : "") + "," + csvField(source) + "," +
+                lateness(e, now) + "," + csvField(intake.value("commit", "")) + "," +
+                csvField(intake.value("files_hash", "")) + "," +
+                csvField(e.result.is_null() ? "" : e.result.value("graded_under", nlohmann::json::object()).value("rubric_hash", "")) +
+                "\n";
     }
+    return text;
+}
+
+/// For an LMS's grade import (Canvas, Moodle): a row per submission with a total today's
+/// maximum; the id stands for the student's login (name submissions after it).
+std::string lmsCsv(const std::vector<GradebookEntry>& entries, const GradingNow& now) {
+    std::string text = "Student,SIS Login ID,PathLab (" + number(now.maxScore) + " points)\n";
+    for (const GradebookEntry& e : entries)
+        if (const std::optional<double> total = shownTotal(e, now))
+            text += csvField(e.id) + "," + csvField(e.id) + "," + number(*total) + "\n";
     return text;
 }
 
@@ -71,12 +136,34 @@ std::string histogram(const std::vector<GradebookEntry>& entries) {
     return svg.str();
 }
 
-std::string summaryPage(const std::vector<GradebookEntry>& entries) {
-    int graded = 0;
+/// The pairs of submissions whose files of a lab are alike: a hint to look, never a verdict.
+std::string similarityTable(const std::vector<SimilarLabs>& similar) {
+    if (similar.empty()) return "<p>No two submissions' files of a lab are alike beyond the threshold.</p>\n";
+    std::ostringstream html;
+    html << "<p>Files of the same lab whose normalised token streams (names, numbers and layout "
+            "ignored, the stub's code left out) are alike: a hint to read them side by side, never a "
+            "grade. \"reference solutions\" is the kit's own.</p>\n<table><tr><th>similarity</th>"
+            "<th>lab</th><th>submission</th><th>submission</th></tr>\n";
+    for (const SimilarLabs& pair : similar)
+        html << "<tr><td>" << number(std::round(100 * pair.similarity)) << "%</td><td>" << escapeXml(pair.lab)
+             << "</td><td>" << escapeXml(pair.first) << "</td><td>" << escapeXml(pair.second) << "</td></tr>\n";
+    html << "</table>\n";
+    return html.str();
+}
+
+std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const GradingNow& now,
+                        const std::vector<SimilarLabs>& similar) {
+    int graded = 0, pending = 0, stale = 0, late = 0;
     double sum = 0;
     std::map<std::pair<std::string, std::string>, int> diagnoses; // (lab, diagnosis) -> count
-    for (const GradebookEntry& e : entries) {
+    std::vector<GradebookEntry> entries; // those with a total out of today's maximum
+    for (const GradebookEntry& e : allEntries) {
+        pending += e.pending;
+        late += lateness(e, now) == "yes";
         if (e.result.is_null()) continue;
+        stale += !staleness(e.result, now).empty();
+        if (!shownTotal(e, now)) continue;
+        entries.push_back(e);
         ++graded;
         const double max = e.result.value("max_score", 0.0);
         sum += max > 0 ? e.result.value("score", 0.0) / max : 0;
@@ -95,24 +182,27 @@ std::string summaryPage(const std::vector<GradebookEntry>& entries) {
     html << "<!doctype html><html><head><meta charset=\"utf-8\"><title>PathLab batch</title><style>"
             "body{font-family:sans-serif;max-width:1100px;margin:auto}td,th{padding:3px 10px;"
             "text-align:left}tr:nth-child(even){background:#f4f4f4}</style></head><body>\n"
-         << "<h1>PathLab batch: " << graded << " of " << entries.size() << " submissions graded</h1>\n";
-    if (graded > 0) html << "<p>Mean total: " << number(std::round(1000 * sum / graded) / 10) << "% of the maximum.</p>\n";
+         << "<h1>PathLab batch: " << graded << " of " << allEntries.size() << " submissions graded</h1>\n";
+    if (graded > 0) html << "<p>Mean total: " << number(std::round(1000 * sum / graded) / 10) << "% of the maximum ("
+                         << number(now.maxScore) << " points).</p>\n";
+    if (pending + stale + late > 0)
+        html << "<p>" << pending << " pending, " << stale << " stale (graded under another rubric or other "
+             << "scenes), " << late << " late.</p>\n";
     html << "<h2>Scores</h2>\n" << histogram(entries) << "<h2>Most common diagnoses</h2>\n"
          << "<table><tr><th>submissions</th><th>lab</th><th>diagnosis</th></tr>\n";
     for (const auto& [count, key] : common)
         html << "<tr><td>" << count << "</td><td>" << escapeXml(key.first) << "</td><td>"
              << escapeXml(key.second) << "</td></tr>\n";
-    html << "</table>\n<h2>Submissions</h2>\n<table><tr><th>id</th><th>score</th><th>status</th></tr>\n";
-    for (const GradebookEntry& e : entries) {
+    html << "</table>\n<h2>Similar submissions</h2>\n" << similarityTable(similar)
+         << "<h2>Submissions</h2>\n<table><tr><th>id</th><th>score</th><th>late</th><th>status</th></tr>\n";
+    for (const GradebookEntry& e : allEntries) {
         const std::string link = "submissions/" + e.id + "/index.html";
-        if (e.result.is_null())
-            html << "<tr><td>" << escapeXml(e.id) << "</td><td></td><td>not graded: "
-                 << escapeXml(e.problem) << "</td></tr>\n";
-        else
-            html << "<tr><td><a href=\"" << escapeXml(link) << "\">" << escapeXml(e.id)
-                 << "</a></td><td>" << number(e.result.value("score", 0.0)) << " / "
-                 << number(e.result.value("max_score", 0.0)) << "</td><td>"
-                 << escapeXml(e.result.value("status", "")) << "</td></tr>\n";
+        const std::optional<double> total = shownTotal(e, now);
+        html << "<tr><td>"
+             << (e.result.is_null() ? escapeXml(e.id)
+                                    : "<a href=\"" + escapeXml(link) + "\">" + escapeXml(e.id) + "</a>")
+             << "</td><td>" << (total ? number(*total) + " / " + number(now.maxScore) : "") << "</td><td>"
+             << lateness(e, now) << "</td><td>" << escapeXml(statusOf(e, now)) << "</td></tr>\n";
     }
     html << "</table></body></html>\n";
     return html.str();
@@ -136,9 +226,20 @@ GradebookEntry readGradebookEntry(const std::string& out, const std::string& id,
     return entry;
 }
 
-void writeGradebook(const std::string& out, const std::vector<GradebookEntry>& entries) {
-    writeFileAtomically(out + "/gradebook.csv", csv(entries));
-    writeFileAtomically(out + "/summary.html", summaryPage(entries));
+std::string staleness(const nlohmann::json& result, const GradingNow& now) {
+    const nlohmann::json under = result.value("graded_under", nlohmann::json::object());
+    if (under.value("rubric_hash", "") != now.rubricHash) return "graded under another rubric";
+    if (under.value("scenes_hash", "") != now.scenesHash) return "graded on other scenes";
+    if (result.value("max_score", 0.0) != now.maxScore)
+        return "graded out of " + number(result.value("max_score", 0.0)) + ", not " + number(now.maxScore);
+    return "";
+}
+
+void writeGradebook(const std::string& out, const std::vector<GradebookEntry>& entries,
+                    const GradingNow& now, const std::vector<SimilarLabs>& similar) {
+    writeFileAtomically(out + "/gradebook.csv", csv(entries, now));
+    writeFileAtomically(out + "/lms.csv", lmsCsv(entries, now));
+    writeFileAtomically(out + "/summary.html", summaryPage(entries, now, similar));
 }
 
 } // namespace pathlab::grader

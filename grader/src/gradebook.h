@@ -1,9 +1,12 @@
 #pragma once
-/// A class's results: gradebook.csv (a row per submission) and summary.html (the score
-/// histogram and the most common diagnoses), made from the submissions' result.json files.
+/// A class's results: gradebook.csv (a row per submission, a column per lab and check),
+/// lms.csv (the totals, for an LMS to import), and summary.html (the score histogram, the most
+/// common diagnoses, the similar pairs), made from the submissions' result.json files.
 
 #include <nlohmann/json.hpp>
 
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,13 +17,36 @@ struct GradebookEntry {
     std::string id, submission;
     nlohmann::json result; ///< null when not graded
     std::string problem;   ///< why not graded
+    bool pending = false;  ///< waiting in a batch that is running: not graded yet
+};
+
+/// What the gradebook is written against: the grading as it is now. A result graded under
+/// another rubric, other scenes or another maximum is stale: shown as such, its total left out
+/// where its maximum differs, so that the gradebook never mixes maxima.
+struct GradingNow {
+    std::string rubricHash, scenesHash;
+    double maxScore = 0;
+    std::optional<long long> deadline;      ///< --deadline, seconds since 1970
+    std::map<std::string, long long> times; ///< --times: id -> submitted at, over what results say
+};
+
+/// Two submissions' files of one lab that are alike (similarity.h), for the summary.
+struct SimilarLabs {
+    std::string first, second, lab;
+    double similarity = 0;
 };
 
 /// Reads OUT/submissions/ID/result.json; an entry with a problem where there is none.
 GradebookEntry readGradebookEntry(const std::string& out, const std::string& id,
                                   const std::string& submission);
 
-/// Writes OUT/gradebook.csv and OUT/summary.html (atomically), rows in the order of `entries`.
-void writeGradebook(const std::string& out, const std::vector<GradebookEntry>& entries);
+/// Why a result does not fit the grading now ("" if it does): another rubric, other scenes,
+/// another maximum.
+std::string staleness(const nlohmann::json& result, const GradingNow& now);
+
+/// Writes OUT/gradebook.csv, OUT/lms.csv and OUT/summary.html (atomically), rows in the order of
+/// `entries`.
+void writeGradebook(const std::string& out, const std::vector<GradebookEntry>& entries,
+                    const GradingNow& now, const std::vector<SimilarLabs>& similar);
 
 } // namespace pathlab::grader

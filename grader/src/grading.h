@@ -24,6 +24,9 @@ struct CheckResult {
     std::string summary;         ///< one line
     std::vector<std::string> details; ///< what to look at, in words
     std::string diagnosis;       ///< a failure's cause in a few words, for a class's summary
+    /// Pass or fail per hidden scene, without its name (in every report; in Gradescope's, a test
+    /// of its own with the visibility the rubric gives hidden scenes).
+    std::vector<std::string> hiddenSceneDetails;
     /// False for a check this build cannot make (speed, without the reference solutions to time
     /// against): the instructor's grader makes it, and its points are not in this build's totals.
     bool gradedHere = true;
@@ -57,6 +60,11 @@ struct GradingScene {
     std::optional<FurnaceModel> furnace; ///< a furnace's analytic values, for the diagnosis
     /// Rendered at these instead of the rubric's parameters (the parameter check).
     std::optional<LabParameters> parameters;
+    /// What feedback calls it: the scene's name, or "hidden scene N" for one of the instructor's
+    /// hidden scenes, of which feedback says pass or fail and a likely cause, never the name,
+    /// the images or the tiles (unless the instructor reveals them).
+    std::string name;
+    bool hidden = false;
 };
 
 /// How the frame-rate check keeps its timings fair on a machine that does other work meanwhile

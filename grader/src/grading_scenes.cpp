@@ -1,7 +1,9 @@
 #include "grading_scenes.h"
 
+#include "content_hash.h"
 #include "correctness_check.h"
 #include "progress_bar.h"
+#include "scene_files.h"
 
 #include "pathlab/input_error.h"
 
@@ -14,17 +16,23 @@ namespace {
 
 namespace fs = std::filesystem;
 
+std::string publicScenePath(const std::string& name) {
+    return std::string(PATHLAB_MODELS_DIR) + "/" + name + ".ecs";
+}
+
+/// The scene's reference from the cache while it fits the scene and rubric, else measured now
+/// (and cached).
 SceneReference measured(const LabRunner& solution, const std::string& path, const Rubric& rubric,
-                        const std::string& scratch, const std::string& cacheFolder) {
-    const std::string name = fs::path(path).stem().string();
+                        const std::string& scratch, const std::string& cacheFolder,
+                        const std::string& shownName) {
     if (!cacheFolder.empty()) {
         try {
-            return loadReference(cacheFolder, name, rubric);
+            return loadReference(cacheFolder, path, rubric);
         } catch (const InputError&) {
-            // Not measured yet (or for another rubric): measure it below.
+            // Not measured yet, or stale (an edited scene, another rubric): measure it below.
         }
     }
-    ProgressBar bar("reference for " + name, "renders");
+    ProgressBar bar("reference for " + shownName, "renders");
     const SceneReference reference = measureReference(
         solution, path, rubric, 20, 4, scratch, [&](int done, int total) { bar.update(done, total); });
     if (!cacheFolder.empty()) {
@@ -36,35 +44,67 @@ SceneReference measured(const LabRunner& solution, const std::string& path, cons
 
 } // namespace
 
-std::vector<GradingScene> gradingScenes(const Rubric& rubric, const std::string& referencesFolder,
-                                        const std::string& hiddenFolder,
-                                        const std::string& cacheFolder, const LabRunner& solution,
-                                        const std::string& scratch, std::vector<std::string>& notes) {
+std::string defaultHiddenScenesFolder() {
+    const std::string folder = std::string(PATHLAB_GRADER_DIR) + "/hidden_scenes";
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(folder, error))
+        if (entry.path().extension() == ".ecs") return folder;
+    return "";
+}
+
+std::vector<std::string> hiddenScenePaths(const std::string& folder) {
+    if (!fs::is_directory(folder)) throw InputError("hidden scenes: '" + folder + "' is not a folder");
+    std::vector<std::string> paths;
+    for (const auto& entry : fs::directory_iterator(folder))
+        if (entry.path().extension() == ".ecs") paths.push_back(fs::absolute(entry.path()).string());
+    std::sort(paths.begin(), paths.end());
+    if (paths.empty()) throw InputError("hidden scenes: no .ecs file in '" + folder + "'");
+    return paths;
+}
+
+std::vector<GradingScene> gradingScenes(const Rubric& rubric, const SceneSources& sources,
+                                        const LabRunner& solution, const std::string& scratch,
+                                        std::vector<std::string>& notes) {
     std::vector<GradingScene> scenes;
     for (const std::string& name : rubric.scenes) {
-        GradingScene s{std::string(PATHLAB_MODELS_DIR) + "/" + name + ".ecs", {},
-                       furnaceModel(name, rubric.maxDepth, rubric.continueProb), std::nullopt};
+        GradingScene s;
+        s.path = publicScenePath(name);
+        s.name = name;
+        s.furnace = furnaceModel(name, rubric.maxDepth, rubric.continueProb);
         try {
-            s.reference = loadReference(referencesFolder, name, rubric);
+            s.reference = loadReference(sources.references, s.path, rubric);
+        } catch (const StaleReference& e) {
+            // Grading against it would fail correct labs (or pass wrong ones): stop instead.
+            throw InputError(std::string(e.what()) + ". Remake it: grader make-references --only-scene " +
+                             name + " (or restore models/ and the rubric as they were)");
         } catch (const InputError& e) {
             notes.push_back(std::string(e.what()) + "; measured on the fly instead");
-            s.reference = measured(solution, s.path, rubric, scratch, cacheFolder);
+            s.reference = measured(solution, s.path, rubric, scratch, sources.cache, name);
         }
         scenes.push_back(std::move(s));
     }
     scenes.push_back(parameterCheckScene(rubric));
-    if (hiddenFolder.empty()) return scenes;
-    if (!fs::is_directory(hiddenFolder))
-        throw InputError("option --scenes: '" + hiddenFolder + "' is not a folder");
-    std::vector<fs::path> hidden;
-    for (const auto& entry : fs::directory_iterator(hiddenFolder))
-        if (entry.path().extension() == ".ecs") hidden.push_back(fs::absolute(entry.path()));
-    std::sort(hidden.begin(), hidden.end());
-    if (hidden.empty()) throw InputError("option --scenes: no .ecs file in '" + hiddenFolder + "'");
-    for (const fs::path& path : hidden)
-        scenes.push_back({path.string(), measured(solution, path.string(), rubric, scratch, cacheFolder),
-                          std::nullopt, std::nullopt});
+    if (sources.hidden.empty()) return scenes;
+    const std::vector<std::string> hidden = hiddenScenePaths(sources.hidden);
+    for (size_t i = 0; i < hidden.size(); ++i) {
+        GradingScene s;
+        s.path = hidden[i];
+        s.hidden = !sources.revealHidden;
+        s.name = s.hidden ? "hidden scene " + std::to_string(i + 1) : fs::path(s.path).stem().string();
+        s.reference = measured(solution, s.path, rubric, scratch, sources.cache, s.name);
+        scenes.push_back(std::move(s));
+    }
     return scenes;
+}
+
+std::string scenesHash(const Rubric& rubric, const std::string& hiddenFolder) {
+    ContentHash hash;
+    hash.add(referenceParametersHash(rubric)).add(PATHLAB_VERSION);
+    for (const std::string& name : rubric.scenes) hash.add(name).add(sceneFilesHash(publicScenePath(name)));
+    if (!hiddenFolder.empty())
+        for (const std::string& path : hiddenScenePaths(hiddenFolder))
+            hash.add(fs::path(path).filename().string()).add(sceneFilesHash(path));
+    return hash.hex();
 }
 
 } // namespace pathlab::grader

@@ -2,6 +2,8 @@
 // solutions, and submitted labs in a sandbox, one or a whole class at a time; writes its verdict
 // for people and platforms. `grader --help` lists the commands.
 #include "commands.h"
+#include "grading_scenes.h"
+#include "rubric_text.h"
 
 #include "pathlab/input_error.h"
 
@@ -22,6 +24,11 @@ int main(int argc, char** argv) {
         }
         if (a.command == "merge") return mergeBatches(a);
         const Rubric rubric = loadRubric(a.rubric);
+        if (a.command == "rubric") {
+            const std::string hidden = defaultHiddenScenesFolder();
+            std::fputs(rubricText(rubric, a.rubric, hidden.empty() ? 0 : static_cast<int>(hiddenScenePaths(hidden).size())).c_str(), stdout);
+            return 0;
+        }
         char pattern[] = "/tmp/pathlab-grader-XXXXXX";
         if (!::mkdtemp(pattern)) throw std::runtime_error("cannot make a scratch folder");
         scratch = pattern;

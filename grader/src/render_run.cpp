@@ -1,15 +1,14 @@
 #include "render_run.h"
 
+#include "scene_files.h"
+
 #include "pathlab/image_io.h"
 #include "pathlab/input_error.h"
-#include "pathlab/render_options.h"
 
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
-#include <map>
-#include <regex>
 #include <thread>
 
 namespace pathlab::grader {
@@ -165,29 +164,6 @@ std::vector<double> regionMeans(const std::vector<float>& image, int width, int 
     for (int region = 0; region < regions; ++region)
         for (int c = 0; c < 3; ++c) sums[3 * region + c] /= counts[region];
     return sums;
-}
-
-std::vector<std::string> sceneFiles(const std::string& ecsPath) {
-    static std::map<std::string, std::vector<std::string>> known; // scenes do not change mid-grading
-    if (const auto found = known.find(ecsPath); found != known.end()) return found->second;
-    const char* argv[] = {"viewer", "-c", ecsPath.c_str()};
-    const RenderOptions options = parseRenderOptions(3, argv);
-    std::vector<std::string> files;
-    for (const std::string& script : options.sceneScripts) files.push_back(fs::absolute(script).string());
-    // tinyobjloader looks for an .obj's material libraries beside it.
-    const std::regex mtllib(R"(^\s*mtllib\s+(.+?)\s*$)");
-    for (const std::string& obj : options.objFiles) {
-        files.push_back(fs::absolute(obj).string());
-        std::ifstream in(obj);
-        std::string line;
-        std::smatch match;
-        while (std::getline(in, line))
-            if (line.find("mtllib") != std::string::npos && std::regex_match(line, match, mtllib)) {
-                const fs::path mtl = fs::absolute(fs::path(obj).parent_path() / match[1].str());
-                if (fs::exists(mtl)) files.push_back(mtl.string());
-            }
-    }
-    return known[ecsPath] = files;
 }
 
 } // namespace pathlab::grader

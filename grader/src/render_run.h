@@ -82,8 +82,4 @@ RenderResult renderLab(const RenderRequest& request, const ProcessLimits& limits
 /// image, then the tiles row by row. Returned flat: [region][channel].
 std::vector<double> regionMeans(const std::vector<float>& image, int width, int height, int tiles);
 
-/// The files a scene script reads: the .ecs files and the .obj and .mtl files they name. A
-/// sandboxed render sees these and nothing else of the host.
-std::vector<std::string> sceneFiles(const std::string& ecsPath);
-
 } // namespace pathlab::grader

@@ -59,9 +59,15 @@ std::string scoreText(double score, double maxScore, double notGradedHere) {
     return text;
 }
 
-std::string checkText(const CheckResult& c) {
+/// A check's summary and details; with the hidden scenes' pass or fail unless `withHidden` is
+/// false (Gradescope shows those in a test of their own).
+std::string checkText(const CheckResult& c, bool withHidden = true) {
     std::string text = c.summary;
     for (const std::string& d : c.details) text += "\n  " + d;
+    if (!c.hiddenSceneDetails.empty())
+        text += withHidden ? "" : "\n  hidden scenes: in the test \"hidden scenes\" of this lab";
+    for (const std::string& d : c.hiddenSceneDetails)
+        if (withHidden) text += "\n  " + d;
     return text;
 }
 
@@ -111,7 +117,7 @@ std::vector<LabRatio> labRatios(const GradeReport& report) {
     return ratios;
 }
 
-std::string terminalReport(const GradeReport& report, bool colour) {
+std::string terminalReport(const GradeReport& report, bool colour, bool withHidden) {
     const char* green = colour ? "\033[32m" : "";
     const char* red = colour ? "\033[31m" : "";
     const char* reset = colour ? "\033[0m" : "";
@@ -138,7 +144,7 @@ std::string terminalReport(const GradeReport& report, bool colour) {
     for (const LabGrade& lab : report.labs)
         for (const CheckResult& c : lab.checks)
             out << "\n" << labName(lab.lab) << " " << c.name << ": "
-                << (c.passed || !c.gradedHere ? "" : red) << checkText(c) << reset;
+                << (c.passed || !c.gradedHere ? "" : red) << checkText(c, withHidden) << reset;
     out << "\n";
     const auto ratios = labRatios(report);
     if (!ratios.empty()) {
@@ -217,20 +223,38 @@ std::string junitReport(const GradeReport& report) {
     return out.str();
 }
 
-std::string gradescopeReport(const GradeReport& report) {
+std::string gradescopeReport(const GradeReport& report, const std::string& hiddenVisibility) {
     nlohmann::json tests = nlohmann::json::array();
-    for (const LabGrade& lab : report.labs)
+    for (const LabGrade& lab : report.labs) {
         for (const CheckResult& c : lab.checks)
             if (c.gradedHere)
                 tests.push_back({{"name", std::string(labName(lab.lab)) + ": " + c.name},
                                  {"score", c.score},
                                  {"max_score", c.maxScore},
                                  {"status", c.passed ? "passed" : "failed"},
-                                 {"output", checkText(c)},
+                                 {"output", checkText(c, false)},
                                  {"visibility", "visible"}});
+        // The hidden scenes' verdicts, without points of their own (they are in correctness's),
+        // shown when the instructor's rubric says.
+        for (const CheckResult& c : lab.checks) {
+            if (c.hiddenSceneDetails.empty()) continue;
+            std::string output;
+            bool passed = true;
+            for (const std::string& d : c.hiddenSceneDetails) {
+                output += (output.empty() ? "" : "\n") + d;
+                passed = passed && d.find("differs") == std::string::npos;
+            }
+            tests.push_back({{"name", std::string(labName(lab.lab)) + ": hidden scenes"},
+                             {"score", 0},
+                             {"max_score", 0},
+                             {"status", passed ? "passed" : "failed"},
+                             {"output", output},
+                             {"visibility", hiddenVisibility}});
+        }
+    }
     const nlohmann::json j = {{"score", report.score()},
                               {"execution_time", static_cast<int>(report.seconds + 0.5)},
-                              {"output", terminalReport(report, false)},
+                              {"output", terminalReport(report, false, false)},
                               {"tests", tests}};
     return j.dump(2) + "\n";
 }

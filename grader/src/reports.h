@@ -26,13 +26,15 @@ struct GradeReport {
 /// `text` with & < > " escaped, for XML and HTML.
 std::string escapeXml(const std::string& text);
 
-/// A table for the terminal, coloured when `colour`.
-std::string terminalReport(const GradeReport& report, bool colour);
+/// A table for the terminal, coloured when `colour`; the hidden scenes' verdicts unless
+/// `withHidden` is false.
+std::string terminalReport(const GradeReport& report, bool colour, bool withHidden = true);
 std::string jsonReport(const GradeReport& report);
 std::string junitReport(const GradeReport& report);
 /// Gradescope's results.json: score, execution_time, output, tests[] (name, score, max_score,
-/// status, output, visibility).
-std::string gradescopeReport(const GradeReport& report);
+/// status, output, visibility). Each lab graded on hidden scenes has a test "LAB: hidden scenes"
+/// (no points of its own) with `hiddenVisibility` (rubric: hidden_scenes.gradescope_visibility).
+std::string gradescopeReport(const GradeReport& report, const std::string& hiddenVisibility);
 /// A Markdown lab report for a student to hand in: the notebook's figures (frame rate, noise,
 /// efficiency) of each lab beside the reference solutions' stored ones, the ratios between labs,
 /// and the grader's verdicts; then the student's own section, "What I observed": `observations`

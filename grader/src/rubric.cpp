@@ -1,5 +1,7 @@
 #include "rubric.h"
 
+#include "content_hash.h"
+
 #include "pathlab/input_error.h"
 
 #include <nlohmann/json.hpp>
@@ -13,7 +15,9 @@ Rubric loadRubric(const std::string& path) {
     if (!in) throw InputError(path + ": cannot open the rubric");
     Rubric r;
     try {
-        const nlohmann::json j = nlohmann::json::parse(in);
+        nlohmann::json j = nlohmann::json::parse(in);
+        j.erase("about");
+        r.hash = ContentHash().add(j.dump()).hex();
         for (Lab lab : AllLabs) {
             const auto& p = j.at("points").at(std::string(labName(lab)));
             r.points[static_cast<int>(lab)] = {p.at("correctness"), p.at("noise"), p.at("speed")};
@@ -51,6 +55,13 @@ Rubric loadRubric(const std::string& path) {
         if (j.contains("parameter_check")) {
             const auto& p = j.at("parameter_check");
             r.parameterCheck = {p.at("scene"), p.at("max_depth"), p.at("continue_prob")};
+        }
+        if (j.contains("hidden_scenes")) {
+            r.hiddenScenesVisibility = j.at("hidden_scenes").value("gradescope_visibility", r.hiddenScenesVisibility);
+            const auto& v = r.hiddenScenesVisibility;
+            if (v != "visible" && v != "hidden" && v != "after_due_date" && v != "after_published")
+                throw InputError(path + ": hidden_scenes.gradescope_visibility is '" + v + "'; it must be "
+                                        "visible, hidden, after_due_date or after_published");
         }
         r.secondsPerRun = j.at("limits").at("seconds_per_run");
         r.memoryBytes = static_cast<long long>(j.at("limits").at("memory_mb").get<double>()) << 20;

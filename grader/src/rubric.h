@@ -47,6 +47,12 @@ struct Rubric {
     ParameterCheck parameterCheck;
     double secondsPerRun = 30;
     long long memoryBytes = 4LL << 30;
+    /// When Gradescope shows students the hidden scenes' verdicts (hidden_scenes.gradescope_visibility):
+    /// visible, hidden, after_due_date or after_published.
+    std::string hiddenScenesVisibility = "after_published";
+    /// A fingerprint of every setting (the file's JSON, reformatted, without "about"): each
+    /// result records it, so that results graded under another rubric are never mixed.
+    std::string hash;
 };
 
 /// Reads a rubric; throws InputError naming the file and the missing or wrong entry.

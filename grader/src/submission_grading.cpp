@@ -1,5 +1,7 @@
 #include "submission_grading.h"
 
+#include "content_hash.h"
+
 #include "pathlab/render_stats.h"
 
 #include <nlohmann/json.hpp>
@@ -35,7 +37,12 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
         makeReadableFolder(f);
     }
 
+    outcome.rubricHash = grader.rubric.hash;
+    outcome.scenesHash = grader.scenesHash;
     outcome.intake = takeSubmission(submission, sources, policy);
+    ContentHash files;
+    for (const auto& [name, where] : outcome.intake.taken) files.add(name).addFile(sources + "/" + name);
+    outcome.filesHash = files.hex();
     GradeReport& report = outcome.report;
     for (const std::string& problem : outcome.intake.problems) report.notes.push_back("submission: " + problem);
     if (outcome.intake.taken.empty()) {
@@ -76,6 +83,11 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
             }
         }
         outcome.status = "graded";
+        std::string missing;
+        for (Lab lab : AllLabs)
+            if (library.labs[static_cast<int>(lab)].status == LabCompilation::Status::NotSubmitted)
+                missing += (missing.empty() ? "" : " ") + std::string(labName(lab));
+        if (!missing.empty()) outcome.status += "; not submitted: " + missing;
         if (!broken.empty()) outcome.status += "; does not compile: " + broken;
         if (!unlinked.empty()) outcome.status += "; does not link: " + unlinked;
     }
@@ -91,24 +103,40 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
 
 std::string resultJson(const SubmissionOutcome& outcome, const std::string& submission) {
     nlohmann::json labs = nlohmann::json::object(), diagnoses = nlohmann::json::array();
+    std::vector<std::string> missing;
     for (const LabGrade& lab : outcome.report.labs) {
-        labs[std::string(labName(lab.lab))] = {{"score", lab.score()}, {"max_score", lab.maxScore()}};
+        nlohmann::json checks = nlohmann::json::object();
+        for (const CheckResult& c : lab.checks)
+            checks[c.name] = {{"score", c.score}, {"max_score", c.maxScore}, {"passed", c.passed},
+                              {"graded_here", c.gradedHere}};
+        labs[std::string(labName(lab.lab))] = {{"score", lab.score()}, {"max_score", lab.maxScore()},
+                                               {"checks", checks}};
+        if (!outcome.intake.taken.count(std::string(labName(lab.lab)) + ".cpp"))
+            missing.push_back(std::string(labName(lab.lab)));
         for (const CheckResult& c : lab.checks)
             if (!c.passed && !c.diagnosis.empty())
                 diagnoses.push_back({{"lab", labName(lab.lab)}, {"check", c.name}, {"diagnosis", c.diagnosis}});
     }
     nlohmann::json taken = nlohmann::json::object();
     for (const auto& [name, where] : outcome.intake.taken) taken[name] = where;
+    const Intake& intake = outcome.intake;
     const nlohmann::json j = {{"id", outcome.id},
                               {"submission", submission},
                               {"status", outcome.status},
                               {"score", outcome.report.score()},
                               {"max_score", outcome.report.maxScore()},
                               {"labs", labs},
+                              {"missing_labs", missing},
                               {"diagnoses", diagnoses},
                               {"seconds", outcome.report.seconds},
-                              {"intake", {{"kind", outcome.intake.kind}, {"taken", taken},
-                                          {"problems", outcome.intake.problems}}}};
+                              {"graded_under", {{"rubric_hash", outcome.rubricHash},
+                                                {"scenes_hash", outcome.scenesHash},
+                                                {"kit_version", PATHLAB_VERSION}}},
+                              {"intake", {{"kind", intake.kind}, {"taken", taken},
+                                          {"problems", intake.problems}, {"commit", intake.commit},
+                                          {"files_hash", outcome.filesHash},
+                                          {"submitted_at", intake.submittedAt},
+                                          {"time_source", intake.timeSource}}}};
     return j.dump(1) + "\n";
 }
 

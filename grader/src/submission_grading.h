@@ -24,10 +24,13 @@ struct SubmissionGrader {
     int threads = 0;           ///< threads per correctness render (0: all cores)
     bool measureSpeed = true;
     double runSeconds = 0;     ///< each render's time limit (GraderSetup::runSeconds)
+    std::string scenesHash;    ///< grading_scenes.h: recorded in result.json with the rubric's hash
 };
 
 struct SubmissionOutcome {
     std::string id;
+    std::string rubricHash, scenesHash; ///< what it was graded under
+    std::string filesHash;              ///< of the lab files taken, by name
     std::string status; ///< "graded", or why it could not be ("no lab files found", ...)
     GradeReport report;
     Intake intake;

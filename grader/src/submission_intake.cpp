@@ -73,6 +73,10 @@ Intake takeSubmission(const std::string& submission, const std::string& folder,
         const nlohmann::json j = nlohmann::json::parse(report->second);
         intake.kind = j.at("kind");
         intake.problems = j.at("problems").get<std::vector<std::string>>();
+        intake.commit = j.value("commit", "");
+        if (j.contains("submitted_at") && j.at("submitted_at").is_number_integer())
+            intake.submittedAt = j.at("submitted_at").get<long long>();
+        intake.timeSource = j.value("time_source", "");
         for (const auto& [name, where] : j.at("taken").items()) {
             const auto file = outcome.files.find(name);
             if (file == outcome.files.end() || file->second.size() > MaxLabFileBytes) continue;

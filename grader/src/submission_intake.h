@@ -18,6 +18,11 @@ struct Intake {
     std::string kind;                         ///< "folder", "zip", "tar", "git repository (HEAD)"
     std::map<std::string, std::string> taken; ///< lab file name -> where it was in the submission
     std::vector<std::string> problems;        ///< skipped files and why, in words
+    std::string commit;                       ///< a repository's HEAD commit ("" otherwise)
+    /// When it was submitted as far as the submission tells (seconds since 1970; 0 unknown) and
+    /// from what: "last commit", "lab files' modification time", "archive's modification time".
+    long long submittedAt = 0;
+    std::string timeSource;
 };
 
 /// Copies the lab files of `submission` into `folder` (which must exist and be empty).

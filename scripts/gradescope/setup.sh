@@ -19,5 +19,9 @@ if [ -e ../run_autograder ]; then chmod 755 ../run_autograder; fi
 bash scripts/install-deps.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPATHLAB_BUILD_TESTS=OFF
 cmake --build build --target grader
+# The hidden scenes' references, measured once here rather than for every submission.
+if ls grader/hidden_scenes/*.ecs >/dev/null 2>&1; then
+    build/grader make-references --only-hidden
+fi
 chmod -R a+rX build
 echo "setup.sh: PathLab's grader is built in $source/build"

@@ -28,7 +28,8 @@ namespace {
 
 const grader::SceneReference& vi2Reference() {
     static const grader::SceneReference reference =
-        grader::loadReference(PATHLAB_GRADER_DIR "/references", "cornell_box_VI2_Specular",
+        grader::loadReference(PATHLAB_GRADER_DIR "/references",
+                              test::modelPath("cornell_box_VI2_Specular.ecs"),
                               grader::loadRubric(PATHLAB_GRADER_DIR "/rubric.json"));
     return reference;
 }

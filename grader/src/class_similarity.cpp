@@ -1,0 +1,47 @@
+#include "class_similarity.h"
+
+#include "similarity.h"
+
+#include "pathlab/lab_registry.h"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace pathlab::grader {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+} // namespace
+
+std::vector<SimilarLabs> similarSubmissions(const std::string& out, const std::vector<std::string>& ids) {
+    const fs::path kit = fs::path(PATHLAB_GRADER_DIR).parent_path();
+    std::vector<SubmittedFile> files;
+    std::map<std::string, std::string> stubs;
+    for (Lab lab : AllLabs) {
+        const std::string name = std::string(labName(lab)), file = name + ".cpp";
+        stubs[name] = readText(kit / "labs" / file);
+        if (fs::is_regular_file(kit / "solutions" / file))
+            files.push_back({"reference solutions", name, readText(kit / "solutions" / file)});
+        for (const std::string& id : ids) {
+            const fs::path submitted = fs::path(out) / "submissions" / id / "submitted" / file;
+            if (fs::is_regular_file(submitted)) files.push_back({id, name, readText(submitted)});
+        }
+    }
+    std::vector<SimilarLabs> similar;
+    for (const SimilarPair& pair : similarPairs(files, stubs, DefaultSimilarityThreshold))
+        similar.push_back({pair.first, pair.second, pair.lab, pair.similarity});
+    return similar;
+}
+
+} // namespace pathlab::grader

@@ -1,0 +1,244 @@
+// What a grade was made under, and what tells that it no longer fits: the scene files' hash, the
+// rubric's, a stored reference's staleness, the submission times and the gradebook's maxima.
+#include "catch.h"
+
+#include "content_hash.h"
+#include "expectation.h"
+#include "gradebook.h"
+#include "rubric.h"
+#include "scene_files.h"
+#include "submission_time.h"
+
+#include "pathlab/input_error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+using namespace pathlab;
+using namespace pathlab::grader;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// A scratch folder, removed at the end of the test.
+struct Scratch {
+    fs::path path = fs::temp_directory_path() / ("pathlab-graded-under-" + std::to_string(::getpid()));
+    Scratch() { fs::create_directories(path); }
+    ~Scratch() { fs::remove_all(path); }
+};
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// models/furnace.{ecs,obj,mtl} copied into `folder`; returns the .ecs.
+std::string copyFurnace(const fs::path& folder) {
+    for (const char* extension : {".ecs", ".obj", ".mtl"})
+        fs::copy_file(fs::path(PATHLAB_MODELS_DIR) / (std::string("furnace") + extension),
+                      folder / (std::string("furnace") + extension));
+    return (folder / "furnace.ecs").string();
+}
+
+Rubric kitRubric() { return loadRubric(std::string(PATHLAB_GRADER_DIR) + "/rubric.json"); }
+
+/// A reference for the scene at `ecs` with flat expectations (no renders needed to test keys).
+SceneReference flatReference(const std::string& ecs, const Rubric& rubric) {
+    SceneReference ref = referenceHeader("furnace", rubric, rubric.maxDepth, rubric.continueProb);
+    ref.sceneFilesHash = sceneFilesHash(ecs);
+    for (Expectation* e : {&ref.depthLimited, &ref.unbiased}) {
+        e->solution = "test";
+        e->seeds = 2, e->spp = 1;
+        e->mean.assign(3, 1.0), e->standardError.assign(3, 0.1);
+        e->image.assign(3 * static_cast<size_t>(rubric.width) * rubric.height, 1.0f);
+    }
+    return ref;
+}
+
+std::string staleWhy(const std::string& folder, const std::string& ecs, const Rubric& rubric) {
+    try {
+        loadReference(folder, ecs, rubric);
+    } catch (const StaleReference& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST_CASE("a scene's files: the .ecs, the .obj it names and the .mtl that names", "[grader]") {
+    Scratch scratch;
+    const std::string ecs = copyFurnace(scratch.path);
+    const std::vector<std::string> files = sceneFiles(ecs);
+    REQUIRE(files.size() == 3);
+    CHECK(fs::path(files[0]).filename() == "furnace.ecs");
+    CHECK(fs::path(files[1]).filename() == "furnace.obj");
+    CHECK(fs::path(files[2]).filename() == "furnace.mtl");
+
+    const std::string before = sceneFilesHash(ecs);
+    CHECK(sceneFilesHash(ecs) == before);
+    std::ofstream(scratch.path / "furnace.mtl", std::ios::app) << "\n# the light changed\n";
+    CHECK(sceneFilesHash(ecs) != before);
+}
+
+TEST_CASE("a stored reference is stale when its scene files, the rubric's sizes or the kit change", "[grader]") {
+    Scratch scratch;
+    const std::string ecs = copyFurnace(scratch.path);
+    const std::string references = (scratch.path / "references").string();
+    fs::create_directories(references);
+    const Rubric rubric = kitRubric();
+    saveReference(references, flatReference(ecs, rubric));
+    CHECK(staleWhy(references, ecs, rubric).empty());
+    CHECK(loadReference(references, ecs, rubric).sceneFilesHash == sceneFilesHash(ecs));
+
+    SECTION("an edited .mtl") {
+        std::ofstream(scratch.path / "furnace.mtl", std::ios::app) << "\n# Ke doubled\n";
+        const std::string why = staleWhy(references, ecs, rubric);
+        CHECK(why.find("the scene's files") != std::string::npos);
+    }
+    SECTION("another image size in the rubric") {
+        Rubric wider = rubric;
+        wider.width = 2 * rubric.width;
+        CHECK(staleWhy(references, ecs, wider).find("the rubric's sizes") != std::string::npos);
+    }
+    SECTION("another kit version") {
+        nlohmann::json j = nlohmann::json::parse(readText(fs::path(references) / "furnace.json"));
+        j["kit_version"] = "0.0.1";
+        std::ofstream(fs::path(references) / "furnace.json") << j.dump();
+        CHECK(staleWhy(references, ecs, rubric).find("PathLab 0.0.1") != std::string::npos);
+    }
+    SECTION("a reference from before the keys existed is stale, a missing one is not there") {
+        nlohmann::json j = nlohmann::json::parse(readText(fs::path(references) / "furnace.json"));
+        j.erase("scene_files_hash");
+        std::ofstream(fs::path(references) / "furnace.json") << j.dump();
+        CHECK_FALSE(staleWhy(references, ecs, rubric).empty());
+        fs::remove(fs::path(references) / "furnace.json");
+        CHECK_THROWS_AS(loadReference(references, ecs, rubric), InputError);
+        CHECK(staleWhy(references, ecs, rubric).empty());
+    }
+}
+
+TEST_CASE("the kit's stored references fit the kit's scenes and rubric", "[grader]") {
+    const Rubric rubric = kitRubric();
+    for (const std::string& scene : rubric.scenes) {
+        INFO(scene);
+        const std::string ecs = std::string(PATHLAB_MODELS_DIR) + "/" + scene + ".ecs";
+        CHECK(staleWhy(std::string(PATHLAB_GRADER_DIR) + "/references", ecs, rubric).empty());
+    }
+}
+
+TEST_CASE("the rubric's hash: its settings, not its layout or its 'about'", "[grader]") {
+    Scratch scratch;
+    nlohmann::json j = nlohmann::json::parse(readText(std::string(PATHLAB_GRADER_DIR) + "/rubric.json"));
+    const std::string path = (scratch.path / "rubric.json").string();
+    auto hashOf = [&](const nlohmann::json& rubric, int indent) {
+        std::ofstream(path) << rubric.dump(indent);
+        return loadRubric(path).hash;
+    };
+    const std::string kit = kitRubric().hash;
+    CHECK(hashOf(j, 4) == kit);
+    j["about"] = "edited by the instructor";
+    CHECK(hashOf(j, -1) == kit);
+    j["points"]["roulette"]["speed"] = 7;
+    CHECK(hashOf(j, 1) != kit);
+}
+
+TEST_CASE("content hashes tell pieces apart", "[grader]") {
+    CHECK(ContentHash().add("ab").add("c").hex() != ContentHash().add("a").add("bc").hex());
+    CHECK(ContentHash().add("x").hex().size() == 16);
+}
+
+TEST_CASE("submission times: ISO 8601 with a zone, a deadline in local time, an LMS's CSV", "[grader]") {
+    CHECK(parseTime("2026-12-01T23:59Z") == 1796169540LL);
+    CHECK(parseTime("2026-12-01T23:59:30Z") == 1796169570LL);
+    CHECK(parseTime("2026-12-02T00:59+01:00") == 1796169540LL);
+    CHECK(parseTime("2026-12-01T18:59-05:00") == 1796169540LL);
+    CHECK(parseTime("2026-12-01T23:59").has_value());
+    CHECK_FALSE(parseTime("yesterday").has_value());
+    CHECK_FALSE(parseTime("2026-13-01T00:00Z").has_value());
+    CHECK_FALSE(parseTime("2026-12-01T23:59+1").has_value());
+    CHECK(isoTime(1796169540LL) == "2026-12-01T23:59:00Z");
+
+    Scratch scratch;
+    const fs::path csv = scratch.path / "times.csv";
+    std::ofstream(csv) << "id,submitted_at\nalice,2026-12-01T10:00:00Z\r\nbob,2026-12-02T10:00:00Z\n";
+    const auto times = loadSubmissionTimes(csv.string());
+    CHECK(times.at("alice") == *parseTime("2026-12-01T10:00Z"));
+    CHECK(times.at("bob") == *parseTime("2026-12-02T10:00Z"));
+    std::ofstream(csv) << "id,submitted_at\nalice,soon\n";
+    CHECK_THROWS_WITH(loadSubmissionTimes(csv.string()), Catch::Contains("times.csv:2"));
+}
+
+TEST_CASE("a gradebook never mixes maxima, says pending, stale and late", "[grader]") {
+    Scratch scratch;
+    GradingNow now{"rubric-now", "scenes-now", 40, parseTime("2026-12-01T23:59Z"), {}};
+    auto result = [](double score, double max, const std::string& rubric, const std::string& submitted) {
+        return nlohmann::json{{"status", "graded"}, {"score", score}, {"max_score", max},
+                              {"labs", nlohmann::json::object()}, {"missing_labs", nlohmann::json::array()},
+                              {"graded_under", {{"rubric_hash", rubric}, {"scenes_hash", "scenes-now"}}},
+                              {"intake", {{"submitted_at", *parseTime(submitted)}, {"time_source", "last commit"},
+                                          {"commit", "abc123"}, {"files_hash", "f00d"}}}};
+    };
+    std::vector<GradebookEntry> entries = {
+        {"alice", "", result(40, 40, "rubric-now", "2026-12-01T12:00Z"), "", false},
+        {"bob", "", result(50, 60, "rubric-before", "2026-12-02T12:00Z"), "", false},
+        {"carol", "", result(30, 40, "rubric-before", "2026-12-01T12:00Z"), "", false},
+        {"dave", "", nullptr, "", true},
+    };
+    CHECK(staleness(entries[0].result, now).empty());
+    CHECK(staleness(entries[1].result, now) == "graded under another rubric");
+    writeGradebook(scratch.path.string(), entries, now, {{"alice", "reference solutions", "uniform", 0.97}});
+
+    std::istringstream csv(readText(scratch.path / "gradebook.csv"));
+    std::string header, line;
+    std::getline(csv, header);
+    std::vector<std::string> columns;
+    for (std::istringstream h(header); std::getline(h, line, ',');) columns.push_back(line);
+    const auto column = [&](const std::string& name) {
+        return std::find(columns.begin(), columns.end(), name) - columns.begin();
+    };
+    std::map<std::string, std::vector<std::string>> rows;
+    while (std::getline(csv, line)) {
+        std::vector<std::string> fields;
+        bool quoted = false;
+        std::string field;
+        for (char c : line) {
+            if (c == '"') quoted = !quoted;
+            else if (c == ',' && !quoted) fields.push_back(field), field.clear();
+            else field += c;
+        }
+        fields.push_back(field);
+        rows[fields[0]] = fields;
+    }
+    REQUIRE(rows.size() == 4);
+    for (const auto& [id, fields] : rows) {
+        INFO(id);
+        REQUIRE(fields.size() == columns.size());
+        CHECK(fields[column("max_total")] == "40");
+    }
+    CHECK(rows["alice"][column("total")] == "40");
+    CHECK(rows["alice"][column("late")] == "no");
+    CHECK(rows["alice"][column("commit")] == "abc123");
+    CHECK(rows["bob"][column("total")].empty()); // out of 60: never shown beside totals out of 40
+    CHECK(rows["bob"][column("status")].find("stale") == 0);
+    CHECK(rows["bob"][column("late")] == "yes");
+    CHECK(rows["carol"][column("total")] == "30"); // kept, same maximum, marked stale
+    CHECK(rows["carol"][column("status")].find("stale: graded under another rubric") == 0);
+    CHECK(rows["dave"][column("status")] == "pending");
+
+    const std::string lms = readText(scratch.path / "lms.csv");
+    CHECK(lms.find("Student,SIS Login ID,PathLab (40 points)\n") == 0);
+    CHECK(lms.find("alice,alice,40\n") != std::string::npos);
+    CHECK(lms.find("bob") == std::string::npos);
+    CHECK(lms.find("dave") == std::string::npos);
+
+    const std::string summary = readText(scratch.path / "summary.html");
+    CHECK(summary.find("1 pending, 2 stale") != std::string::npos);
+    CHECK(summary.find("97%</td><td>uniform</td><td>alice</td><td>reference solutions") != std::string::npos);
+}
