@@ -28,6 +28,11 @@ if [ -d "$kit/solutions" ]; then
         clang libc++-dev libc++abi-dev  # ctest -L platforms: the kit with clang and libc++
         debootstrap                     # ctest -L platforms: the kit on Debian 13, in its own root
     )
+    # ctest grader.pages: the grader's pages in a headless browser. Ubuntu has Chromium only as a
+    # snap, not an apt package; there the test skips.
+    if grep -qx 'ID=debian' /etc/os-release 2>/dev/null; then
+        apt_packages+=(chromium)
+    fi
 fi
 
 # ---- macOS (Homebrew) -------------------------------------------------------------------------

@@ -1,5 +1,7 @@
 #include "gradebook.h"
 
+#include "histogram_svg.h"
+#include "page_style.h"
 #include "reports.h"
 #include "submission_time.h"
 
@@ -120,20 +122,7 @@ std::string histogram(const std::vector<GradebookEntry>& entries) {
         const double fraction = max > 0 ? e.result.value("score", 0.0) / max : 0;
         ++bins[std::min(9, static_cast<int>(std::floor(fraction * 10)))];
     }
-    const int tallest = std::max(1, *std::max_element(bins.begin(), bins.end()));
-    std::ostringstream svg;
-    svg << "<svg width=\"520\" height=\"200\" xmlns=\"http://www.w3.org/2000/svg\" "
-           "font-family=\"sans-serif\" font-size=\"11\">\n";
-    for (int i = 0; i < 10; ++i) {
-        const int h = 150 * bins[i] / tallest, x = 10 + 50 * i;
-        svg << "<rect x=\"" << x << "\" y=\"" << 160 - h << "\" width=\"44\" height=\"" << h
-            << "\" fill=\"#4a7ab5\"/>\n<text x=\"" << x + 22 << "\" y=\"" << 155 - h
-            << "\" text-anchor=\"middle\">" << bins[i] << "</text>\n<text x=\"" << x + 22
-            << "\" y=\"178\" text-anchor=\"middle\">" << 10 * i << "-" << (i == 9 ? 100 : 10 * i + 9)
-            << "%</text>\n";
-    }
-    svg << "<text x=\"260\" y=\"196\" text-anchor=\"middle\">total score, % of the maximum</text></svg>\n";
-    return svg.str();
+    return histogramSvg(bins, "total score, % of the maximum");
 }
 
 /// The pairs of submissions whose files of a lab are alike: a hint to look, never a verdict.
@@ -180,8 +169,7 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
 
     std::ostringstream html;
     html << "<!doctype html><html><head><meta charset=\"utf-8\"><title>PathLab batch</title><style>"
-            "body{font-family:sans-serif;max-width:1100px;margin:auto}td,th{padding:3px 10px;"
-            "text-align:left}tr:nth-child(even){background:#f4f4f4}</style></head><body>\n"
+         << pageStyle() << "</style></head><body>\n"
          << "<h1>PathLab batch: " << graded << " of " << allEntries.size() << " submissions graded</h1>\n";
     if (graded > 0) html << "<p>Mean total: " << number(std::round(1000 * sum / graded) / 10) << "% of the maximum ("
                          << number(now.maxScore) << " points).</p>\n";

@@ -1,5 +1,7 @@
 #include "reports.h"
 
+#include "page_style.h"
+
 #include "pathlab/false_colour.h"
 #include "pathlab/image_io.h"
 #include "pathlab/render_stats.h"
@@ -267,7 +269,7 @@ void writeHtmlReport(const GradeReport& report, const std::string& folder) {
         writeImage(path, w, h, rgb);
         const std::string data = base64(readBytes(path));
         fs::remove(path);
-        return "<img src=\"data:image/png;base64," + data + "\" width=\"" + std::to_string(2 * w) + "\">";
+        return renderImage(data, w, h);
     };
     auto heat = [&](int w, int h, const std::vector<float>& a, const std::vector<float>& b) {
         std::vector<unsigned char> rgba, rgb;
@@ -277,13 +279,11 @@ void writeHtmlReport(const GradeReport& report, const std::string& folder) {
         writeDisplayImage(path, w, h, rgb);
         const std::string data = base64(readBytes(path));
         fs::remove(path);
-        return "<img src=\"data:image/png;base64," + data + "\" width=\"" + std::to_string(2 * w) + "\">";
+        return renderImage(data, w, h);
     };
     std::ostringstream html;
     html << "<!doctype html><html><head><meta charset=\"utf-8\"><title>PathLab grade</title><style>"
-            "body{font-family:sans-serif;max-width:1100px;margin:auto}td,th{padding:4px 10px;text-align:left}"
-            ".pass{color:#080}.fail{color:#b00}pre{background:#f4f4f4;padding:8px;white-space:pre-wrap}"
-            "</style></head><body>\n<h1>PathLab grade: "
+         << pageStyle() << "</style></head><body>\n<h1>PathLab grade: "
          << escapeXml(scoreText(report.score(), report.maxScore(), report.pointsNotGradedHere())) << "</h1>\n"
          << "<table><tr><th>lab</th><th>check</th><th>score</th><th>result</th></tr>\n";
     for (const LabGrade& lab : report.labs)
