@@ -20,6 +20,7 @@
 
 #include "expectation.h"
 #include "rubric.h"
+#include "test_support.h"
 
 using namespace pathlab;
 using namespace pathlab::test;
@@ -29,7 +30,7 @@ namespace {
 const grader::SceneReference& vi2Reference() {
     static const grader::SceneReference reference =
         grader::loadReference(PATHLAB_GRADER_DIR "/references",
-                              test::modelPath("cornell_box_VI2_Specular.ecs"),
+                              pathlab::test::modelPath("cornell_box_VI2_Specular.ecs"),
                               grader::loadRubric(PATHLAB_GRADER_DIR "/rubric.json"));
     return reference;
 }
