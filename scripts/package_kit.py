@@ -31,6 +31,7 @@ STUDENT_EXCLUDED = (
     "tests/grader/hostile/",
     "tests/grader/grader_test.py",
     "tests/grader/batch_test.py",
+    "tests/grader/instructor_test.py",
     "tests/grader/pages_test.py",
     "tests/estimators/catches_mutants.py",
     "tests/release/",

@@ -218,8 +218,9 @@ void runCanary(const std::vector<std::string>& childBase, const std::string& sol
         std::string why;
         for (const auto& d : canary.result.value("diagnoses", nlohmann::json::array()))
             why += "\n  " + d.value("lab", "") + " " + d.value("check", "") + ": " + d.value("diagnosis", "");
-        throw InputError("canary: the reference solutions score " + std::to_string(score).substr(0, 5) +
-                         " / " + std::to_string(max).substr(0, 5) +
+        char points[64];
+        std::snprintf(points, sizeof points, "%g / %g", score, max);
+        throw InputError("canary: the reference solutions score " + std::string(points) +
                          " on this grading, so its references, scenes or rubric are wrong; nothing was "
                          "graded. What failed:" + why + "\n  (details: " + folder + "/index.html)");
     }

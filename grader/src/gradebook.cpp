@@ -65,28 +65,27 @@ std::string statusOf(const GradebookEntry& e, const GradingNow& now) {
 
 const char* const checkNames[] = {"correctness", "noise", "speed"};
 
+/// The columns of the first gradebooks first, in their order (scripts read them by position),
+/// then a column per lab and check and what a registrar asks.
 std::string csv(const std::vector<GradebookEntry>& entries, const GradingNow& now) {
     std::string text = "id";
-    for (Lab lab : AllLabs) {
-        text += "," + std::string(labName(lab));
+    for (Lab lab : AllLabs) text += "," + std::string(labName(lab));
+    text += ",total,max_total,status";
+    for (Lab lab : AllLabs)
         for (const char* check : checkNames) text += "," + std::string(labName(lab)) + "_" + check;
-    }
-    text += ",total,max_total,status,missing_labs,submitted_at,time_source,late,commit,files_hash,"
-            "rubric_hash\n";
+    text += ",missing_labs,submitted_at,time_source,late,commit,files_hash,rubric_hash\n";
     for (const GradebookEntry& e : entries) {
-        text += csvField(e.id);
         const std::optional<double> total = shownTotal(e, now);
-        for (Lab lab : AllLabs) {
-            const nlohmann::json labResult =
-                total ? e.result["labs"].value(std::string(labName(lab)), nlohmann::json::object()) : nlohmann::json::object();
-            text += "," + (total ? number(labResult.value("score", 0.0)) : "");
+        const nlohmann::json labs = total ? e.result.value("labs", nlohmann::json::object()) : nlohmann::json::object();
+        auto labResult = [&](Lab lab) { return labs.value(std::string(labName(lab)), nlohmann::json::object()); };
+        text += csvField(e.id);
+        for (Lab lab : AllLabs) text += "," + (total ? number(labResult(lab).value("score", 0.0)) : "");
+        text += "," + (total ? number(*total) : "") + "," + number(now.maxScore) + "," + csvField(statusOf(e, now));
+        for (Lab lab : AllLabs)
             for (const char* check : checkNames) {
-                const nlohmann::json c = labResult.value("checks", nlohmann::json::object()).value(check, nlohmann::json());
+                const nlohmann::json c = labResult(lab).value("checks", nlohmann::json::object()).value(check, nlohmann::json());
                 text += "," + (c.is_object() && c.value("graded_here", true) ? number(c.value("score", 0.0)) : "");
             }
-        }
-        text += "," + (total ? number(*total) : "") + "," + number(now.maxScore);
-        text += "," + csvField(statusOf(e, now));
         const nlohmann::json intake = e.result.is_null() ? nlohmann::json::object()
                                                           : e.result.value("intake", nlohmann::json::object());
         std::string missing;
@@ -94,11 +93,11 @@ std::string csv(const std::vector<GradebookEntry>& entries, const GradingNow& no
             for (const auto& lab : e.result.value("missing_labs", nlohmann::json::array()))
                 missing += (missing.empty() ? "" : " ") + lab.get<std::string>();
         const auto [at, source] = submittedAt(e, now);
+        const nlohmann::json under = e.result.is_null() ? nlohmann::json::object()
+                                                         : e.result.value("graded_under", nlohmann::json::object());
         text += "," + csvField(missing) + "," + (at ? isoTime(at) : "") + "," + csvField(source) + "," +
                 lateness(e, now) + "," + csvField(intake.value("commit", "")) + "," +
-                csvField(intake.value("files_hash", "")) + "," +
-                csvField(e.result.is_null() ? "" : e.result.value("graded_under", nlohmann::json::object()).value("rubric_hash", "")) +
-                "\n";
+                csvField(intake.value("files_hash", "")) + "," + csvField(under.value("rubric_hash", "")) + "\n";
     }
     return text;
 }

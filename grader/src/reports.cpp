@@ -176,7 +176,8 @@ std::string jsonReport(const GradeReport& report) {
         for (const CheckResult& c : lab.checks)
             checks.push_back({{"name", c.name}, {"score", c.score}, {"max_score", c.maxScore},
                               {"passed", c.passed}, {"graded_here", c.gradedHere},
-                              {"summary", c.summary}, {"details", c.details}});
+                              {"summary", c.summary}, {"details", c.details},
+                              {"hidden_scenes", c.hiddenSceneDetails}});
         auto rays = [](const RaysPerSample& r) {
             return nlohmann::json{{"camera", r.camera}, {"bounce", r.bounce}, {"shadow", r.shadow}};
         };

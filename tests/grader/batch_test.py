@@ -292,7 +292,7 @@ def main():
         slurm = os.path.join(args.source, "grader", "slurm")
         shard_out = os.path.join(root, "sharded")
         environment = dict(os.environ, PATHLAB_BUILD=os.path.abspath(args.build), SLURM_ARRAY_TASK_COUNT="2",
-                           SLURM_CPUS_PER_TASK="2")
+                           SLURM_CPUS_PER_TASK="2", PATHLAB_RUBRIC=rubric)
         for task in ("0", "1"):
             subprocess.run([os.path.join(slurm, "grade-shard.sbatch"), part_subs, shard_out],
                            env=dict(environment, SLURM_ARRAY_TASK_ID=task), capture_output=True, check=True)

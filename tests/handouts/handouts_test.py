@@ -24,6 +24,7 @@ Needs no display.
 """
 import argparse
 import glob
+import json
 import os
 import re
 import shlex
@@ -285,6 +286,38 @@ def check_todos(source, handouts):
     check(not stray, f"every labN.M section of the handouts is a TODO in labs/ {stray or ''}")
 
 
+def section(markdown, heading):
+    """The text under `heading` (a line such as "## Grading") up to the next heading of its level."""
+    level = heading.split(" ")[0]
+    start = markdown.find("\n" + heading + "\n")
+    if start < 0:
+        return ""
+    end = markdown.find("\n" + level + " ", start + len(heading) + 2)
+    return markdown[start:end if end >= 0 else len(markdown)]
+
+
+def check_rubric_numbers(source, readme):
+    """The grading sections students read quote none of the rubric's numbers, which an instructor
+    may change: they point to `grader rubric`, which prints them from the rubric itself."""
+    rubric = json.load(open(os.path.join(source, "grader", "rubric.json")))
+    c, check_ = rubric["correctness"], rubric["parameter_check"]
+    quoted = {
+        f"{c['width']}×{c['height']}", f"{c['tiles']}×{c['tiles']}", f"{c['seeds']} seeds",
+        f"{c['seeds']} renders", f"maxDepth` {rubric['parameters']['max_depth']}",
+        f"maxDepth {rubric['parameters']['max_depth']}", f"continueProb {rubric['parameters']['continue_prob']}",
+        f"continueProb` {rubric['parameters']['continue_prob']}", f"({check_['max_depth']})",
+        f"({check_['continue_prob']})", f"limit is {rubric['noise']['max_ratio']}",
+        f"{rubric['speed']['min_ratio']} times", f"at least {rubric['speed']['min_ratio']}",
+    }
+    for path, heading in ((readme, "## Grading"), (os.path.join(source, "handouts", "00-setup.md"),
+                                                  "## Tests and the grader")):
+        text = section(read(path), heading)
+        found = sorted(q for q in quoted if q in text)
+        check(text and "grader rubric" in text and not found,
+              f"{os.path.basename(path)}, {heading}: points to `grader rubric` and quotes no rubric number"
+              + (f" (quotes {found})" if found else ""))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--build", required=True)
@@ -304,6 +337,7 @@ def main():
         check_links(source, handouts + [readme], pages)
         check_commands(source, build, handouts + [readme], scratch)
     check_todos(source, handouts)
+    check_rubric_numbers(source, readme)
     print(f"{len(failures)} failed" if failures else "all passed")
     return 1 if failures else 0
 

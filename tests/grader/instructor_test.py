@@ -1,0 +1,260 @@
+#!/usr/bin/env python3
+"""An instructor's term, end to end, with the real grader and sandbox: a hidden scene added as
+docs/instructor-guide.md shows, a class graded, the scene's light edited and the class graded
+again, a reference made wrong on purpose, the rubric changed, one student regraded, and the
+Gradescope zip made with the hidden scene git does not track. Each step checks what the guide
+promises:
+
+- the canary (the solutions graded first) passes with the edited scene, so its reference was
+  measured again; and stops the batch, grading no one, when a reference is wrong;
+- results graded under another rubric are graded again, or kept and marked stale with --keep-stale,
+  and no gradebook mixes totals out of different maxima; --only grades just those named;
+- no file of a student's feedback names the hidden scene or shows its images;
+- the similarity report pairs a copy of the solutions with renamed variables with the solutions.
+
+The rubric is the kit's, lighter (32x32 pixels, 6 seeds (with 4, a t-test of 3 degrees of
+freedom can miss even a reference wrong by half after the Holm correction), the furnace as the only public scene,
+no speed check), so that the whole term takes a few minutes; the checks are the same.
+"""
+import argparse
+import csv
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+import zipfile
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--build", required=True)
+parser.add_argument("--source", required=True)
+parser.add_argument("--keep", help="work in this (new) folder and keep it, to look at afterwards")
+args = parser.parse_args()
+args.source = os.path.abspath(args.source)
+GRADER = os.path.join(os.path.abspath(args.build), "grader")
+SOLUTIONS = os.path.join(args.source, "solutions")
+MODELS = os.path.join(args.source, "models")
+LABS = ("branching", "uniform", "importance", "roulette")
+SECRET = "secret_lantern"  # the hidden scene's name: no student may read it
+failures = []
+timings = {}
+
+
+def check(condition, what):
+    print(("PASS " if condition else "FAIL ") + what, flush=True)
+    if not condition:
+        failures.append(what)
+
+
+def read(path):
+    with open(path, errors="replace") as f:
+        return f.read()
+
+
+def write(path, text):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(text)
+
+
+def add_hidden_scene(folder):
+    """The guide's example (the VI2 box with a warmer light), under the secret name."""
+    os.makedirs(folder, exist_ok=True)
+    box = os.path.join(MODELS, "cornell_box_VI2_Specular")
+    obj = re.sub(r"(?m)^mtllib .*$", f"mtllib {SECRET}.mtl", read(box + ".obj"))
+    write(os.path.join(folder, SECRET + ".obj"), obj)
+    write(os.path.join(folder, SECRET + ".mtl"), re.sub(r"(?m)^Ke .*$", "Ke 20 14 8", read(box + ".mtl")))
+    write(os.path.join(folder, SECRET + ".ecs"), read(box + ".ecs").replace("cornell_box_VI2_Specular", SECRET))
+
+
+def renamed(source):
+    """A lab file with its local names changed and its comments dropped: a disguised copy."""
+    for old, new in (("hit", "h"), ("radiance", "L"), ("component", "which"), ("throughput", "beta"),
+                     ("pickProbability", "p"), ("strength", "s"), ("m", "mat")):
+        source = re.sub(rf"\b{old}\b", new, source)
+    return re.sub(r"(?m)^\s*//.*\n", "", source)
+
+
+def make_class(root):
+    subs = os.path.join(root, "subs")
+    for lab in LABS:
+        solution = read(os.path.join(SOLUTIONS, lab + ".cpp"))
+        write(os.path.join(subs, "alice", lab + ".cpp"), renamed(solution))  # the solutions, disguised
+        write(os.path.join(subs, "bob", lab + ".cpp"), solution)
+        if lab != "roulette":
+            write(os.path.join(subs, "carol", lab + ".cpp"), solution)       # lab 4 not handed in
+    shutil.copy(os.path.join(args.source, "tests", "grader", "mutants", "uniform_no_divide", "uniform.cpp"),
+                os.path.join(subs, "bob", "uniform.cpp"))
+    return subs
+
+
+def light_rubric(root, roulette_correctness=6):
+    rubric = json.load(open(os.path.join(args.source, "grader", "rubric.json")))
+    rubric["correctness"].update({"seeds": 6, "width": 32, "height": 32, "tiles": 2, "scenes": ["furnace"]})
+    rubric["noise"]["scene"] = "furnace"
+    rubric["points"]["roulette"]["correctness"] = roulette_correctness
+    path = os.path.join(root, "rubric.json")
+    json.dump(rubric, open(path, "w"), indent=1)
+    return path
+
+
+def batch(step, *options):
+    start = time.time()
+    run = subprocess.run([GRADER, "batch", SUBS, "--out", OUT, "--jobs", "2", "--no-speed",
+                          "--rubric", RUBRIC, "--references", NO_REFERENCES, "--scenes", HIDDEN, *options],
+                         capture_output=True, text=True, timeout=1200)
+    timings[step] = time.time() - start
+    print(f"-- {step}: exit {run.returncode}, {timings[step]:.0f} s\n{run.stdout}{run.stderr[-1500:]}", flush=True)
+    return run
+
+
+def gradebook():
+    return {row["id"]: row for row in csv.DictReader(open(os.path.join(OUT, "gradebook.csv")))}
+
+
+def graded_in_last_batch():
+    """The ids the newest batch in batch.log started."""
+    log = read(os.path.join(OUT, "batch.log")).split(" batch of ")[-1]
+    return sorted(re.findall(r" start (\S+) \(", log))
+
+
+def canaries():
+    return re.findall(r"canary: reference solutions ([\d.]+) / ([\d.]+)", read(os.path.join(OUT, "batch.log")))
+
+
+def feedback_files():
+    """Every file a student gets: their submission folder, but its result.json (the gradebook's)."""
+    for id_ in ("alice", "bob", "carol"):
+        for folder, _, files in os.walk(os.path.join(OUT, "submissions", id_)):
+            for name in files:
+                if name != "result.json":
+                    yield os.path.join(folder, name)
+
+
+class _kept:
+    def __init__(self, path):
+        os.makedirs(path)
+        self.path = os.path.abspath(path)
+
+    def __enter__(self):
+        return self.path
+
+    def __exit__(self, *_):
+        return False
+
+
+def main():
+    global SUBS, OUT, RUBRIC, NO_REFERENCES, HIDDEN
+    with (tempfile.TemporaryDirectory() if not args.keep else _kept(args.keep)) as root:
+        os.chmod(root, 0o755)
+        SUBS, OUT = make_class(root), os.path.join(root, "grades")
+        RUBRIC, NO_REFERENCES, HIDDEN = light_rubric(root), os.path.join(root, "references"), os.path.join(root, "hidden")
+        os.makedirs(NO_REFERENCES)
+        add_hidden_scene(HIDDEN)
+
+        # 1. The class, with a hidden scene and a deadline that everyone met.
+        run = batch("first grading", "--deadline", "2999-01-01T00:00Z")
+        rows = gradebook()
+        check(run.returncode == 0 and canaries() == [("32", "32")], "the canary: the solutions get 32/32 first")
+        check([rows[i]["total"] for i in ("alice", "bob", "carol")] == ["32", "24", "24"]
+              and all(r["max_total"] == "32" for r in rows.values()),
+              "alice (the solutions, disguised) 32/32, bob (lab 2 does not divide) 24, carol (no lab 4) 24")
+        check(rows["carol"]["status"] == "graded; not submitted: roulette" and rows["carol"]["missing_labs"] == "roulette",
+              "the status names the lab not submitted")
+        check(all(rows[i]["late"] == "no" and rows[i]["submitted_at"] and len(rows[i]["files_hash"]) == 16
+                  for i in rows), "every row has a submission time, a late flag and its files' hash")
+        check(rows["bob"]["uniform_correctness"] == "0" and rows["bob"]["branching_correctness"] == "6"
+              and rows["bob"]["uniform_speed"] == "", "a column per check (speed empty: not checked)")
+        lms = read(os.path.join(OUT, "lms.csv")).splitlines()
+        check(lms[0] == "Student,SIS Login ID,PathLab (32 points)" and "alice,alice,32" in lms, "lms.csv")
+        summary = read(os.path.join(OUT, "summary.html"))
+        pairs = re.findall(r"<tr><td>(\d+)%</td><td>(\w+)</td><td>([\w ]+)</td><td>([\w ]+)</td></tr>", summary)
+        disguised = {lab for pct, lab, a, b in pairs if {a, b} == {"alice", "reference solutions"} and int(pct) >= 95}
+        check(disguised == set(LABS), "the similarity report pairs alice's renamed copy with the solutions, every lab")
+
+        # No feedback names the hidden scene or shows its images.
+        leaks = [path for path in feedback_files() if SECRET in read(path) or "lantern" in read(path)]
+        check(leaks == [], "no feedback file names the hidden scene" + (f" (found in {leaks})" if leaks else ""))
+        alice = json.load(open(os.path.join(OUT, "submissions", "alice", "feedback.json")))
+        correctness = [c for lab in alice["labs"] for c in lab["checks"] if c["name"] == "correctness"]
+        check(all("hidden scene 1: matches its reference" in c["summary"] + "\n".join(c["details"])
+                  + "\n".join(c.get("hidden_scenes", [])) for c in correctness),
+              "alice's feedback says hidden scene 1 matches, by that name")
+        page = read(os.path.join(OUT, "submissions", "bob", "index.html"))
+        pictures = re.findall(r"<p>([^<:]+): yours, the reference", page)
+        check(len(pictures) == 4 * 2 and "hidden scene 1" not in pictures,
+              f"bob's page shows the furnace and the parameter check per lab, no hidden scene ({len(pictures)} pictures)")
+
+        # 2. The instructor doubles the hidden scene's light: every result is stale (other scenes)
+        # and graded again; the canary passing proves the reference was measured anew.
+        mtl = os.path.join(HIDDEN, SECRET + ".mtl")
+        write(mtl, read(mtl).replace("Ke 20 14 8", "Ke 40 28 16"))
+        run = batch("after the scene's light changed")
+        check(run.returncode == 0 and canaries()[-1] == ("32", "32") and graded_in_last_batch() == ["alice", "bob", "carol"],
+              "an edited hidden scene: its reference measured again, the canary passes, everyone regraded")
+        check(gradebook()["alice"]["total"] == "32", "alice still gets full marks on the edited scene")
+
+        # 3. A reference made wrong on purpose (its expected means halved, its keys kept): the
+        # canary fails and nobody is graded, nothing lost.
+        cached = os.path.join(OUT, ".references", SECRET + ".json")
+        reference = json.load(open(cached))
+        for part in ("depth_limited", "unbiased"):
+            reference[part]["mean"] = [v / 2 for v in reference[part]["mean"]]
+        json.dump(reference, open(cached, "w"))
+        os.remove(os.path.join(OUT, ".canary", "passed"))
+        before = read(os.path.join(OUT, "gradebook.csv"))
+        run = batch("a wrong reference", "--force")
+        check(run.returncode != 0 and "canary: the reference solutions score 0 / 32 " in run.stderr
+              and "nothing was graded" in run.stderr,
+              "a wrong reference: the canary fails every lab and stops the batch, saying why")
+        check(read(os.path.join(OUT, "gradebook.csv")) == before, "... and the gradebook is as it was")
+        os.remove(cached)  # measured again next time
+
+        # 4. The rubric changes (lab 4's correctness worth 16): --keep-stale keeps the results and
+        # marks them; their totals are out of 32, not the new 42, so none is shown.
+        light_rubric(root, roulette_correctness=16)
+        run = batch("rubric changed, --keep-stale", "--keep-stale")
+        rows = gradebook()
+        check(run.returncode == 0 and graded_in_last_batch() == [], "--keep-stale grades nobody")
+        check(all(r["status"].startswith("stale: graded under another rubric") and r["total"] == ""
+                  and r["max_total"] == "42" for r in rows.values()),
+              "stale results are marked, and no total out of 32 stands in a gradebook out of 42")
+        check(len(read(os.path.join(OUT, "lms.csv")).splitlines()) == 1, "lms.csv holds no total out of another maximum")
+
+        # 5. One student regraded.
+        run = batch("--only alice", "--only", "alice")
+        rows = gradebook()
+        check(graded_in_last_batch() == ["alice"] and rows["alice"]["total"] == "42"
+              and rows["bob"]["total"] == "" and rows["bob"]["status"].startswith("stale"),
+              "--only alice regrades alice alone; the others stay stale, without totals")
+
+        # 6. Resumed without flags: the stale ones are graded again.
+        run = batch("resumed")
+        rows = gradebook()
+        check(graded_in_last_batch() == ["bob", "carol"] and [rows[i]["total"] for i in ("alice", "bob", "carol")]
+              == ["42", "34", "24"] and all(not r["status"].startswith("stale") for r in rows.values()),
+              "a resumed batch regrades what is stale: every total out of 42")
+
+        # 7. The Gradescope zip holds a hidden scene that git does not track, and says so.
+        kit = os.path.join(root, "kit")
+        subprocess.run(["git", "clone", "--quiet", "--no-hardlinks", args.source, kit], check=True)
+        add_hidden_scene(os.path.join(kit, "grader", "hidden_scenes"))
+        tracked = subprocess.run(["git", "-C", kit, "ls-files", "grader/hidden_scenes"], capture_output=True, text=True).stdout
+        zip_path = os.path.join(root, "autograder.zip")
+        made = subprocess.run([sys.executable, os.path.join(kit, "scripts", "package_kit.py"), "gradescope", zip_path],
+                              capture_output=True, text=True)
+        names = zipfile.ZipFile(zip_path).namelist() if made.returncode == 0 else []
+        check(tracked == "" and f"grader/hidden_scenes/{SECRET}.ecs" in names
+              and f"grader/hidden_scenes/{SECRET}.mtl" in names and "hidden scenes packed: 1" in made.stdout,
+              "make gradescope packs an untracked hidden scene and lists it")
+
+    print("timings: " + ", ".join(f"{step} {seconds:.0f} s" for step, seconds in timings.items()))
+    if failures:
+        print(f"{len(failures)} check(s) failed")
+        sys.exit(1)
+
+
+main()
