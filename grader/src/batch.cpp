@@ -9,12 +9,12 @@
 // runs, taken by one grading at a time (an exclusive lock on OUT/.timing.lock for a lab's whole
 // interleaved series, one thread per timed render); compiling and the correctness renders of
 // every job share the other cores.
+#include "class_similarity.h"
 #include "commands.h"
 #include "gradebook.h"
 #include "grading_scenes.h"
 #include "lab_figures.h"
 #include "progress_bar.h"
-#include "class_similarity.h"
 #include "submission_grading.h"
 #include "submission_time.h"
 #include "time_limit.h"
@@ -34,7 +34,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <sched.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -203,20 +202,18 @@ void runCanary(const std::vector<std::string>& childBase, const std::string& sol
     const auto start = std::chrono::steady_clock::now();
     const Job job = startJob(argv, {solutions, "canary"}, folder + "/grader.log");
     waitFor(job.pid);
-    GradebookEntry canary{"canary", solutions, nullptr, ""};
-    std::ifstream result(folder + "/result.json");
-    if (result) canary.result = nlohmann::json::parse(result, nullptr, false);
-    if (canary.result.is_discarded()) canary.result = nullptr;
+    std::ifstream in(folder + "/result.json");
+    const nlohmann::json result = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (canary.result.is_null())
+    if (!result.is_object())
         throw InputError("canary: the reference solutions could not be graded (see " + folder +
                          "/grader.log); nothing was graded");
-    const double score = canary.result.value("score", 0.0), max = canary.result.value("max_score", 0.0);
+    const double score = result.value("score", 0.0), max = result.value("max_score", 0.0);
     log << timestamp() << " canary: reference solutions " << score << " / " << max << ", "
         << std::lround(seconds) << " s\n" << std::flush;
     if (score != max || max == 0) {
         std::string why;
-        for (const auto& d : canary.result.value("diagnoses", nlohmann::json::array()))
+        for (const auto& d : result.value("diagnoses", nlohmann::json::array()))
             why += "\n  " + d.value("lab", "") + " " + d.value("check", "") + ": " + d.value("diagnosis", "");
         char points[64];
         std::snprintf(points, sizeof points, "%g / %g", score, max);
@@ -276,11 +273,6 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
     fs::create_directories(a.out + "/submissions");
     const std::string out = fs::absolute(a.out).string();
     const GradingNow grading = gradingNow(a, rubric);
-    writeFileAtomically(out + "/batch.json",
-                        nlohmann::json{{"rubric_hash", grading.rubricHash}, {"scenes_hash", grading.scenesHash},
-                                       {"max_score", grading.maxScore}, {"deadline", a.deadline},
-                                       {"times", a.times.empty() ? "" : fs::absolute(a.times).string()}}
-                                .dump(1) + "\n");
     std::ofstream log(out + "/batch.log", std::ios::app);
     log << timestamp() << " batch of " << submissions.size() << " submission(s), " << a.jobs << " job(s)"
         << (a.shards > 1 ? ", shard " + std::to_string(a.shard) + "/" + std::to_string(a.shards) : "")
@@ -333,6 +325,13 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
         gradingScenes(rubric, {a.references, a.scenesDir, referenceCache, a.revealHidden}, solution, scratch, notes);
         runCanary(childBase, build.solutions, out, grading, log);
     }
+    // What this batch's gradebook is written against, for `grader merge`: only once the canary
+    // passed, so that a batch it stopped changes nothing.
+    writeFileAtomically(out + "/batch.json",
+                        nlohmann::json{{"rubric_hash", grading.rubricHash}, {"scenes_hash", grading.scenesHash},
+                                       {"max_score", grading.maxScore}, {"deadline", a.deadline},
+                                       {"times", a.times.empty() ? "" : fs::absolute(a.times).string()}}
+                                .dump(1) + "\n");
 
     std::vector<std::string> queued; // ids waiting or being graded: "pending" in the gradebook
     for (const Submission& s : todo) queued.push_back(s.id);
@@ -344,8 +343,7 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
         }
         return list;
     };
-    const std::vector<SimilarLabs> noSimilarities;
-    writeGradebook(out, entries(), grading, noSimilarities);
+    writeGradebook(out, entries(), grading, std::nullopt); // similarity: once all are graded
 
     ProgressBar progress("grading", "submissions");
     const double jobSeconds = 3600; // far beyond any grading: only a grader fault gets here
@@ -387,7 +385,7 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
                 << " / " << entry.result.value("max_score", 0.0);
         log << ", " << std::lround(seconds) << " s\n" << std::flush;
         running.erase(job);
-        writeGradebook(out, entries(), grading, noSimilarities);
+        writeGradebook(out, entries(), grading, std::nullopt);
         progress.update(static_cast<int>(done), static_cast<int>(todo.size()),
                         failed > 0 ? std::to_string(failed) + " not graded" : "");
     }

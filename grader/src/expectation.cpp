@@ -75,9 +75,8 @@ Expectation fromJson(const nlohmann::json& j, const std::string& folder, int wid
 std::string referenceParametersHash(const Rubric& r) {
     ContentHash hash;
     for (const double value : {double(r.width), double(r.height), double(r.tiles), double(r.maxDepth),
-                               double(r.continueProb), double(r.seeds)})
+                               double(r.continueProb)})
         hash.add(std::to_string(value));
-    for (const int spp : r.correctnessSpp) hash.add(std::to_string(spp));
     return hash.hex();
 }
 
@@ -186,7 +185,7 @@ SceneReference loadReference(const std::string& folder, const std::string& scene
         if (ref.sceneFilesHash != sceneFilesHash(scenePath))
             changed.push_back("the scene's files (" + scenePath + " and the .obj/.mtl it names) changed");
         if (ref.parametersHash != referenceParametersHash(rubric))
-            changed.push_back("the rubric's sizes, parameters, seeds or samples per pixel changed");
+            changed.push_back("the rubric's image size, tiles, max_depth or continue_prob changed");
         if (ref.kitVersion != PATHLAB_VERSION)
             changed.push_back("it was made by PathLab " + ref.kitVersion + ", this is " + PATHLAB_VERSION);
         if (!changed.empty()) {

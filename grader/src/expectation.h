@@ -44,8 +44,9 @@ struct SceneReference {
 /// Called with (done, total) as reference renders finish, for a progress bar.
 using Progress = std::function<void(int, int)>;
 
-/// A fingerprint of the rubric's settings that a measured reference depends on: sizes, tiles,
-/// parameters, seeds and samples per pixel.
+/// A fingerprint of the rubric's settings that decide what a correct lab's image averages to:
+/// image size, tiles, max_depth, continue_prob. (Seeds and samples per pixel change only how
+/// precisely it is known; the noise figures' are recorded apart: noiseSeeds, noiseSpp.)
 std::string referenceParametersHash(const Rubric& rubric);
 
 /// A stored reference made from other scene files, rubric settings or kit version than now.

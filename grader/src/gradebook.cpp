@@ -125,7 +125,9 @@ std::string histogram(const std::vector<GradebookEntry>& entries) {
 }
 
 /// The pairs of submissions whose files of a lab are alike: a hint to look, never a verdict.
-std::string similarityTable(const std::vector<SimilarLabs>& similar) {
+std::string similarityTable(const std::optional<std::vector<SimilarLabs>>& pairs) {
+    if (!pairs) return "<p>Compared once every submission is graded.</p>\n";
+    const std::vector<SimilarLabs>& similar = *pairs;
     if (similar.empty()) return "<p>No two submissions' files of a lab are alike beyond the threshold.</p>\n";
     std::ostringstream html;
     html << "<p>Files of the same lab whose normalised token streams (names, numbers and layout "
@@ -140,7 +142,7 @@ std::string similarityTable(const std::vector<SimilarLabs>& similar) {
 }
 
 std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const GradingNow& now,
-                        const std::vector<SimilarLabs>& similar) {
+                        const std::optional<std::vector<SimilarLabs>>& similar) {
     int graded = 0, pending = 0, stale = 0, late = 0;
     double sum = 0;
     std::map<std::pair<std::string, std::string>, int> diagnoses; // (lab, diagnosis) -> count
@@ -223,7 +225,7 @@ std::string staleness(const nlohmann::json& result, const GradingNow& now) {
 }
 
 void writeGradebook(const std::string& out, const std::vector<GradebookEntry>& entries,
-                    const GradingNow& now, const std::vector<SimilarLabs>& similar) {
+                    const GradingNow& now, const std::optional<std::vector<SimilarLabs>>& similar) {
     writeFileAtomically(out + "/gradebook.csv", csv(entries, now));
     writeFileAtomically(out + "/lms.csv", lmsCsv(entries, now));
     writeFileAtomically(out + "/summary.html", summaryPage(entries, now, similar));

@@ -45,8 +45,8 @@ GradebookEntry readGradebookEntry(const std::string& out, const std::string& id,
 std::string staleness(const nlohmann::json& result, const GradingNow& now);
 
 /// Writes OUT/gradebook.csv, OUT/lms.csv and OUT/summary.html (atomically), rows in the order of
-/// `entries`.
+/// `entries`; the summary lists the `similar` pairs, or says they come once the batch is done.
 void writeGradebook(const std::string& out, const std::vector<GradebookEntry>& entries,
-                    const GradingNow& now, const std::vector<SimilarLabs>& similar);
+                    const GradingNow& now, const std::optional<std::vector<SimilarLabs>>& similar);
 
 } // namespace pathlab::grader

@@ -20,6 +20,12 @@ std::string publicScenePath(const std::string& name) {
     return std::string(PATHLAB_MODELS_DIR) + "/" + name + ".ecs";
 }
 
+/// Whether a reference's noise figures were measured at the seeds and samples per pixel the
+/// rubric grades at: the noise check compares figures measured alike.
+bool noiseMeasuredAsGraded(const SceneReference& reference, const Rubric& rubric) {
+    return reference.noiseSeeds == rubric.seeds && reference.noiseSpp == rubric.correctnessSpp;
+}
+
 /// The scene's reference from the cache while it fits the scene and rubric, else measured now
 /// (and cached).
 SceneReference measured(const LabRunner& solution, const std::string& path, const Rubric& rubric,
@@ -27,7 +33,8 @@ SceneReference measured(const LabRunner& solution, const std::string& path, cons
                         const std::string& shownName) {
     if (!cacheFolder.empty()) {
         try {
-            return loadReference(cacheFolder, path, rubric);
+            const SceneReference cached = loadReference(cacheFolder, path, rubric);
+            if (noiseMeasuredAsGraded(cached, rubric)) return cached;
         } catch (const InputError&) {
             // Not measured yet, or stale (an edited scene, another rubric): measure it below.
         }
@@ -73,6 +80,11 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const SceneSources
         s.furnace = furnaceModel(name, rubric.maxDepth, rubric.continueProb);
         try {
             s.reference = loadReference(sources.references, s.path, rubric);
+            if (!noiseMeasuredAsGraded(s.reference, rubric))
+                notes.push_back(name + ": the stored noise figures were measured at " +
+                                std::to_string(s.reference.noiseSeeds) +
+                                " seeds and other samples per pixel than the rubric grades at; `grader "
+                                "make-references --only-scene " + name + "` measures them as graded");
         } catch (const StaleReference& e) {
             // Grading against it would fail correct labs (or pass wrong ones): stop instead.
             throw InputError(std::string(e.what()) + ". Remake it: grader make-references --only-scene " +

@@ -241,7 +241,12 @@ def result_json(identifier, score, diagnoses=()):
             "labs": {lab: {"score": score / 4, "max_score": 8}
                      for lab in ("branching", "uniform", "importance", "roulette")},
             "diagnoses": [{"lab": lab, "check": "correctness", "diagnosis": d}
-                          for lab, d in diagnoses]}
+                          for lab, d in diagnoses],
+            "graded_under": GRADED_UNDER}
+
+
+# What the hand-made batch was graded under (its batch.json), which every result above shares.
+GRADED_UNDER = {"rubric_hash": "0123456789abcdef", "scenes_hash": "fedcba9876543210"}
 
 
 def make_pages(tmp):
@@ -265,6 +270,8 @@ def make_pages(tmp):
         os.makedirs(folder, exist_ok=True)
         with open(os.path.join(folder, "result.json"), "w") as f:
             json.dump(result, f)
+    with open(os.path.join(shard, "batch.json"), "w") as f:
+        json.dump(dict(GRADED_UNDER, max_score=32), f)
     out = os.path.join(tmp, "class")
     run = subprocess.run([GRADER, "merge", shard, "--out", out], capture_output=True, text=True,
                          timeout=60)
