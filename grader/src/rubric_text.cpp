@@ -31,9 +31,10 @@ std::string rubricText(const Rubric& r, const std::string& rubricPath, int hidde
     out << "  total " << total << "; noise and speed count only for a correct lab\n\n";
 
     out << "correctness: the mean radiance of " << r.seeds << " independent renders (seeds) of "
-        << r.width << "x" << r.height << " pixels, over the whole image and each of its " << r.tiles
-        << "x" << r.tiles << " tiles, agrees with the reference (t-tests; a correct lab fails with "
-           "probability at most " << r.alpha << ", and a failure counts only if fresh seeds fail again)\n"
+        << r.width << "x" << r.height << " pixels,\n  over the whole image and each of its " << r.tiles
+        << "x" << r.tiles << " tiles, agrees with the reference's (t-tests: a correct lab\n  fails "
+           "with probability at most " << r.alpha << ", and a failure counts only if fresh seeds fail "
+           "again)\n"
         << "  samples per pixel: " << perLab(r.correctnessSpp) << "\n"
         << "  labs 1-3 at maxDepth " << r.maxDepth << "; lab 4 at continueProb " << r.continueProb << "\n"
         << "  public scenes (models/):";

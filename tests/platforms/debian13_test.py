@@ -58,6 +58,8 @@ LEFT_OUT = {
                      "start-up is subtracted, against 0.1 to 0.5 s of jitter per run; the "
                      "grader's checks run here in grader.batch, on correct, buggy and hostile "
                      "submissions",
+    "grader.instructor": "an instructor's term of batches, 2 minutes; its sandbox, canary and "
+                         "gradebook are those grader.batch runs here",
     "grader.slow": "label slow: 200 gradings, not part of `make test` anywhere",
     "platforms.debian13": "this test",
     "platforms.clang_libcxx": "the kit built again with clang and libc++, which the host's "
