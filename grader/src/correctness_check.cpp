@@ -32,18 +32,6 @@ struct SceneRuns {
     }
 };
 
-/// A render's failure text as feedback may show it: a hidden scene's path and name (which a
-/// lab's own output or the viewer's message may quote) replaced by what feedback calls it.
-std::string withoutSceneName(std::string text, const GradingScene& scene) {
-    if (!scene.hidden) return text;
-    for (const std::string& secret : {scene.path, scene.reference.scene}) {
-        if (secret.empty()) continue;
-        for (size_t at = text.find(secret); at != std::string::npos; at = text.find(secret, at + scene.name.size()))
-            text.replace(at, secret.size(), scene.name);
-    }
-    return text;
-}
-
 SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab lab, uint64_t seedBase) {
     const Rubric& r = setup.rubric;
     SceneRuns runs;
@@ -323,6 +311,16 @@ GradingScene parameterCheckScene(const Rubric& rubric) {
     ref.depthLimited = analytic(Lab::Branching);
     ref.unbiased = analytic(Lab::Roulette);
     return scene;
+}
+
+std::string withoutSceneName(std::string text, const GradingScene& scene) {
+    if (!scene.hidden) return text;
+    for (const std::string& secret : {scene.path, scene.reference.scene}) {
+        if (secret.empty()) continue;
+        for (size_t at = text.find(secret); at != std::string::npos; at = text.find(secret, at + scene.name.size()))
+            text.replace(at, secret.size(), scene.name);
+    }
+    return text;
 }
 
 } // namespace pathlab::grader

@@ -17,4 +17,8 @@ CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade,
 /// is not a furnace.
 GradingScene parameterCheckScene(const Rubric& rubric);
 
+/// A render's failure text as feedback may show it: a hidden scene's path and name (which a
+/// lab's own output or the viewer's message may quote) replaced by what feedback calls it.
+std::string withoutSceneName(std::string text, const GradingScene& scene);
+
 } // namespace pathlab::grader

@@ -2,6 +2,7 @@
 // the rubric's visibility; the lab's visible tests and the submission's output leave them out.
 #include "catch.h"
 
+#include "correctness_check.h"
 #include "reports.h"
 #include "rubric.h"
 
@@ -79,4 +80,18 @@ TEST_CASE("the rubric's visibility of hidden scenes: one of Gradescope's four", 
     CHECK(visibilityError("after_published").empty());
     CHECK(visibilityError("hidden").empty());
     CHECK(visibilityError("sometimes").find("hidden_scenes.gradescope_visibility is 'sometimes'") != std::string::npos);
+}
+
+TEST_CASE("a render's failure on a hidden scene names neither its path nor its name", "[grader]") {
+    GradingScene scene;
+    scene.path = "/course/hidden/secret_lantern.ecs";
+    scene.reference.scene = "secret_lantern";
+    scene.name = "hidden scene 2";
+    scene.hidden = true;
+    const std::string failure = "crashed (signal 11): viewer: /course/hidden/secret_lantern.ecs: "
+                                "loaded secret_lantern, then secret_lantern again";
+    CHECK(withoutSceneName(failure, scene) ==
+          "crashed (signal 11): viewer: hidden scene 2: loaded hidden scene 2, then hidden scene 2 again");
+    scene.hidden = false; // a public scene's, or one the instructor reveals: as it is
+    CHECK(withoutSceneName(failure, scene) == failure);
 }
