@@ -135,19 +135,28 @@ double maxScoreNow(const Rubric& rubric, bool speed) {
 }
 
 /// What a batch's gradebook is written against; stored in OUT/batch.json for `grader merge`.
-GradingNow gradingNow(const Arguments& a, const Rubric& rubric) {
+/// `deadline` and `times` are the options', or those an earlier batch into OUT was given.
+GradingNow gradingNow(const Arguments& a, const Rubric& rubric, const std::string& deadline,
+                      const std::string& times) {
     GradingNow now;
     now.rubricHash = rubric.hash;
     now.scenesHash = scenesHash(rubric, a.scenesDir);
     now.maxScore = maxScoreNow(rubric, a.speed);
-    if (!a.deadline.empty()) {
-        now.deadline = parseTime(a.deadline);
+    if (!deadline.empty()) {
+        now.deadline = parseTime(deadline);
         if (!now.deadline)
             throw InputError("option --deadline expects a time like 2026-12-01T23:59 (local), "
-                             "2026-12-01T23:59Z or 2026-12-01T23:59+01:00, got '" + a.deadline + "'");
+                             "2026-12-01T23:59Z or 2026-12-01T23:59+01:00, got '" + deadline + "'");
     }
-    if (!a.times.empty()) now.times = loadSubmissionTimes(a.times);
+    if (!times.empty()) now.times = loadSubmissionTimes(times);
     return now;
+}
+
+/// An earlier batch's setting in OUT/batch.json ("" if none).
+std::string earlierSetting(const std::string& out, const char* key) {
+    std::ifstream in(out + "/batch.json");
+    const nlohmann::json j = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+    return j.is_object() ? j.value(key, "") : "";
 }
 
 /// A child grading one submission.
@@ -272,7 +281,13 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
             throw InputError("option --only: no submission has the id '" + id + "' (gradebook.csv lists the ids)");
     fs::create_directories(a.out + "/submissions");
     const std::string out = fs::absolute(a.out).string();
-    const GradingNow grading = gradingNow(a, rubric);
+    // A batch run again keeps the deadline and times it was given before, unless told others.
+    const std::string deadline = a.deadline.empty() ? earlierSetting(out, "deadline") : a.deadline;
+    const std::string times = a.times.empty() ? earlierSetting(out, "times") : fs::absolute(a.times).string();
+    if (a.deadline.empty() && !deadline.empty())
+        std::fprintf(stderr, "deadline %s, as the batch before into %s (--deadline sets another)\n",
+                     deadline.c_str(), out.c_str());
+    const GradingNow grading = gradingNow(a, rubric, deadline, times);
     std::ofstream log(out + "/batch.log", std::ios::app);
     log << timestamp() << " batch of " << submissions.size() << " submission(s), " << a.jobs << " job(s)"
         << (a.shards > 1 ? ", shard " + std::to_string(a.shard) + "/" + std::to_string(a.shards) : "")
@@ -329,8 +344,8 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
     // passed, so that a batch it stopped changes nothing.
     writeFileAtomically(out + "/batch.json",
                         nlohmann::json{{"rubric_hash", grading.rubricHash}, {"scenes_hash", grading.scenesHash},
-                                       {"max_score", grading.maxScore}, {"deadline", a.deadline},
-                                       {"times", a.times.empty() ? "" : fs::absolute(a.times).string()}}
+                                       {"max_score", grading.maxScore}, {"deadline", deadline},
+                                       {"times", times}}
                                 .dump(1) + "\n");
 
     std::vector<std::string> queued; // ids waiting or being graded: "pending" in the gradebook

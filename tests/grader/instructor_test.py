@@ -195,7 +195,9 @@ def main():
         run = batch("after the scene's light changed")
         check(run.returncode == 0 and canaries()[-1] == ("32", "32") and graded_in_last_batch() == ["alice", "bob", "carol"],
               "an edited hidden scene: its reference measured again, the canary passes, everyone regraded")
-        check(gradebook()["alice"]["total"] == "32", "alice still gets full marks on the edited scene")
+        rows = gradebook()
+        check(rows["alice"]["total"] == "32", "alice still gets full marks on the edited scene")
+        check(all(r["late"] == "no" for r in rows.values()), "a batch run again keeps its deadline")
 
         # 3. A reference made wrong on purpose (its expected means halved, its keys kept): the
         # canary fails and nobody is graded, nothing lost.
