@@ -10,11 +10,12 @@
 namespace pathlab::grader {
 
 const char* const usage = R"(usage: grader [options]                       grade the labs of this build
+       grader rubric                          print the rubric in words: points, thresholds, scenes
+the instructor's (they need the reference solutions, or a batch's output):
        grader make-references [options]       measure grader/references/ from the solutions
        grader submission PATH --out DIR       grade one submission, in the sandbox
        grader batch SUBMISSIONS --out DIR     grade every submission in a folder, in the sandbox
        grader merge DIR... --out DIR          merge the gradebooks of batch shards
-       grader rubric                          print the rubric in words: points, thresholds, scenes
 
 A submission is a folder, a .zip, a .tar.gz or a git repository holding the four lab files
 (branching.cpp, uniform.cpp, importance.cpp, roulette.cpp); only those are taken.
@@ -177,6 +178,9 @@ Arguments parseArguments(int argc, char** argv) {
     if (a.command == "help" || a.command == "rubric") return a;
     if (!scenesGiven) a.scenesDir = defaultHiddenScenesFolder();
     else if (a.scenesDir == "none") a.scenesDir.clear();
+    else if (!PATHLAB_HAS_SOLUTIONS)
+        throw InputError("option --scenes: a hidden scene's reference is measured from the reference "
+                         "solutions, which the student release does not have");
     else hiddenScenePaths(a.scenesDir); // says now if the folder is wrong
     if (a.referenceCache.empty()) a.referenceCache = (thisProgram().parent_path() / "reference-cache").string();
     if (!a.only.empty() && a.command != "batch") throw InputError("option --only is for grader batch");

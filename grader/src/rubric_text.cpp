@@ -39,16 +39,18 @@ std::string rubricText(const Rubric& r, const std::string& rubricPath, int hidde
         << "  labs 1-3 at maxDepth " << r.maxDepth << "; lab 4 at continueProb " << r.continueProb << "\n"
         << "  public scenes (models/):";
     for (const std::string& scene : r.scenes) out << " " << scene;
-    out << "\n  parameter check: " << r.parameterCheck.scene << " again at maxDepth "
-        << r.parameterCheck.maxDepth << " and continueProb " << r.parameterCheck.continueProb
-        << ", against its exact value\n";
+    out << "\n  parameter check: " << r.parameterCheck.scene << " again, labs 1-3 at maxDepth "
+        << r.parameterCheck.maxDepth << " and lab 4 at continueProb " << r.parameterCheck.continueProb
+        << ",\n  against its exact value by the same test\n";
     if (hiddenScenes > 0)
-        out << "  hidden scenes: " << hiddenScenes << " (feedback says pass or fail and a likely cause)\n";
+        out << "  hidden scenes: " << hiddenScenes << " (feedback says pass or fail; Gradescope shows that "
+            << r.hiddenScenesVisibility << ")\n";
     else
         out << "  hidden scenes: none here (your instructor's grader may add some)\n";
 
-    out << "\nnoise: the per-sample variance on " << r.noiseScene << " at most " << r.maxNoiseRatio
-        << " times the reference solution's\n";
+    out << "\nnoise: the per-sample variance on " << r.noiseScene << ", from the spread of the correctness "
+           "renders' " << r.seeds << " seeds,\n  at most " << r.maxNoiseRatio
+        << " times the reference solution's (a correct lab only)\n";
 
     out << "\nspeed: at least " << r.minSpeedRatio << " times the reference solution's, the median of "
         << r.speedRuns << " interleaved timed renders of " << r.speedWidth << "x" << r.speedHeight

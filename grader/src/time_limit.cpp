@@ -15,7 +15,7 @@ std::string timeLimitNote(double rubricSeconds, double scaledSeconds) {
     char note[200];
     std::snprintf(note, sizeof note,
                   "renders run %.1f times slower here now than when the references were made: "
-                  "each render may take %.0f s (the rubric's %.0f s × %.1f)",
+                  "each render may take %.0f s (the rubric's %.0f s × %.2f)",
                   slowness, scaledSeconds, rubricSeconds, slowness);
     return note;
 }
