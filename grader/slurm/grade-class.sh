@@ -11,13 +11,15 @@
 # kit), also on a shared file system. Each task asks for PATHLAB_CPUS cores (default 4): one is
 # kept for timed runs, the others grade.
 #
-# What is graded, as `grader batch` takes it (every task and the merge get the same):
+# What is graded, as `grader batch` takes it (exported to every task; the merge reads the rubric
+# and scenes each shard was graded under from its batch.json, and takes the deadline and times):
 #   PATHLAB_RUBRIC    the rubric (default: grader/rubric.json of the build's kit)
 #   PATHLAB_SCENES    the hidden scenes (default: the kit's grader/hidden_scenes/ when it holds
 #                     any; "none" for none)
 #   PATHLAB_DEADLINE  flags later submissions as late (e.g. 2026-12-01T23:59)
 #   PATHLAB_TIMES     a CSV of id,submitted_at from your LMS
-# They are exported to the jobs, which pass them on (grade-shard.sbatch, merge.sbatch).
+#   PATHLAB_OPTIONS   any other options of grader batch (e.g. "--no-speed")
+# Each shard runs the canary and measures the hidden scenes' references itself (about a minute).
 set -euo pipefail
 if [ $# -lt 2 ]; then
     echo "usage: $0 SUBMISSIONS OUT [SHARDS] [sbatch options...]" >&2

@@ -135,6 +135,8 @@ Arguments parseArguments(int argc, char** argv) {
         else if (arg == "--only-hidden") a.onlyHidden = true;
         else if (arg == "--only") {
             const std::string ids = value(i);
+            if (ids.find_first_not_of(", ") == std::string::npos)
+                throw InputError("option --only expects submission ids, like alice or alice,bob");
             for (size_t at = 0; at <= ids.size();) {
                 const size_t comma = std::min(ids.find(',', at), ids.size());
                 if (comma > at) a.only.push_back(ids.substr(at, comma - at));
@@ -175,13 +177,14 @@ Arguments parseArguments(int argc, char** argv) {
         else if (a.command == "submission" || a.command == "batch" || a.command == "merge") a.inputs.push_back(arg);
         else throw InputError("unexpected argument '" + arg + "' (grader --help lists the commands)");
     }
-    if (a.command == "help" || a.command == "rubric") return a;
+    if (a.command == "help") return a;
     if (!scenesGiven) a.scenesDir = defaultHiddenScenesFolder();
     else if (a.scenesDir == "none") a.scenesDir.clear();
     else if (!PATHLAB_HAS_SOLUTIONS)
         throw InputError("option --scenes: a hidden scene's reference is measured from the reference "
                          "solutions, which the student release does not have");
     else hiddenScenePaths(a.scenesDir); // says now if the folder is wrong
+    if (a.command == "rubric") return a;
     if (a.referenceCache.empty()) a.referenceCache = (thisProgram().parent_path() / "reference-cache").string();
     if (!a.only.empty() && a.command != "batch") throw InputError("option --only is for grader batch");
     if (a.command == "submission" && a.inputs.size() != 1)

@@ -6,9 +6,9 @@
 // its result.json last and atomically; a restarted batch skips those that have one.
 //
 // Fair timing while other work goes on: the first core the grader may use is kept for timed
-// runs, taken by one grading at a time (an exclusive lock on OUT/.timing.lock for a lab's whole
-// interleaved series, one thread per timed render); compiling and the correctness renders of
-// every job share the other cores.
+// runs, taken by one grading at a time (an exclusive lock on /tmp/pathlab-timing-core-N.lock for
+// a lab's whole interleaved series, one thread per timed render, shared by every batch on the
+// machine); compiling and the correctness renders of every job share the other cores.
 #include "class_similarity.h"
 #include "commands.h"
 #include "gradebook.h"
@@ -132,6 +132,13 @@ double maxScoreNow(const Rubric& rubric, bool speed) {
     double max = 0;
     for (const LabPoints& p : rubric.points) max += p.correctness + p.noise + (speed ? p.speed : 0);
     return max;
+}
+
+/// One lock per timing core for the whole machine: batches on one machine (two shards on one
+/// node, two classes) that time on the same core take turns, as the jobs of one batch do.
+std::string timingLockFor(const std::vector<int>& timingCpus) {
+    const std::string core = timingCpus.empty() ? "any" : std::to_string(timingCpus.front());
+    return (fs::temp_directory_path() / ("pathlab-timing-core-" + core + ".lock")).string();
 }
 
 /// What a batch's gradebook is written against; stored in OUT/batch.json for `grader merge`.
@@ -288,29 +295,42 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
         std::fprintf(stderr, "deadline %s, as the batch before into %s (--deadline sets another)\n",
                      deadline.c_str(), out.c_str());
     const GradingNow grading = gradingNow(a, rubric, deadline, times);
+    for (const auto& [id, when] : grading.times)
+        if (std::none_of(submissions.begin(), submissions.end(), [&](const Submission& s) { return s.id == id; }) &&
+            a.shards == 1)
+            std::fprintf(stderr, "note: the submission times name '%s', which is not a submission here\n", id.c_str());
     std::ofstream log(out + "/batch.log", std::ios::app);
     log << timestamp() << " batch of " << submissions.size() << " submission(s), " << a.jobs << " job(s)"
         << (a.shards > 1 ? ", shard " + std::to_string(a.shard) + "/" + std::to_string(a.shards) : "")
         << ", rubric " << grading.rubricHash << ", scenes " << grading.scenesHash << "\n";
 
-    // What to grade: everything not graded yet, and what was graded under another rubric or on
-    // other scenes (unless --keep-stale); --force: everything; --only: those named.
+    // What to grade: everything not graded yet, and what was graded under another rubric, other
+    // scenes or another maximum (unless --keep-stale); --force: everything; --only: those named.
     std::vector<Submission> todo;
-    size_t stale = 0;
+    size_t current = 0, staleKept = 0, staleRegraded = 0, notNamed = 0;
     for (const Submission& s : submissions) {
         const GradebookEntry stored = readGradebookEntry(out, s.id, s.path);
         const bool isStale = !stored.result.is_null() && !staleness(stored.result, grading).empty();
-        stale += isStale;
+        const bool named = std::find(a.only.begin(), a.only.end(), s.id) != a.only.end();
         const bool wanted = a.only.empty() ? a.force || stored.result.is_null() || (isStale && !a.keepStale)
-                                           : std::find(a.only.begin(), a.only.end(), s.id) != a.only.end();
+                                           : named;
         if (wanted) todo.push_back(s);
+        if (wanted && isStale) ++staleRegraded;
+        else if (!wanted && !a.only.empty()) ++notNamed;
+        else if (!wanted && isStale) ++staleKept;
+        else if (!wanted) ++current;
     }
+    auto sayWhatIsKept = [&] {
+        if (current > 0) std::fprintf(stderr, "%zu submission(s) already graded (--force grades them again)\n", current);
+        if (notNamed > 0) std::fprintf(stderr, "%zu submission(s) not named by --only: kept as they are\n", notNamed);
+        if (staleKept > 0)
+            std::fprintf(stderr, "%zu submission(s) graded under another rubric, other scenes or another "
+                                 "maximum (--no-speed): kept, marked stale in the gradebook\n", staleKept);
+        if (staleRegraded > 0)
+            std::fprintf(stderr, "%zu submission(s) graded under another rubric, other scenes or another "
+                                 "maximum (--no-speed): graded again\n", staleRegraded);
+    };
     const size_t skipped = submissions.size() - todo.size();
-    if (skipped > 0)
-        std::fprintf(stderr, "%zu submission(s) already graded (--force grades them again)\n", skipped);
-    if (stale > 0)
-        std::fprintf(stderr, "%zu submission(s) were graded under another rubric or on other scenes: %s\n", stale,
-                     a.keepStale || !a.only.empty() ? "kept, marked stale in the gradebook" : "graded again");
 
     // Cores: the first for timed runs, the rest for everything else.
     const std::vector<int> cpus = allowedCpus();
@@ -326,7 +346,7 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
         std::vector<std::string> argv = {thisProgram().string(), "submission"};
         const std::vector<std::string> shared = sharedOptions(a);
         argv.insert(argv.end(), shared.begin(), shared.end());
-        argv.insert(argv.end(), {"--kit", kit, "--timing-lock", out + "/.timing.lock",
+        argv.insert(argv.end(), {"--kit", kit, "--timing-lock", timingLockFor(timingCpus),
                                  "--timing-cpus", joinCpus(timingCpus), "--work-cpus", joinCpus(workCpus),
                                  "--viewer", a.viewer, "--solution-viewer", a.solutionViewer,
                                  "--reference-cache", referenceCache});
@@ -340,6 +360,7 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
         gradingScenes(rubric, {a.references, a.scenesDir, referenceCache, a.revealHidden}, solution, scratch, notes);
         runCanary(childBase, build.solutions, out, grading, log);
     }
+    sayWhatIsKept(); // once the scenes' references and the canary let the batch go on
     // What this batch's gradebook is written against, for `grader merge`: only once the canary
     // passed, so that a batch it stopped changes nothing.
     writeFileAtomically(out + "/batch.json",

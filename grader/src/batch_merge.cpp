@@ -39,13 +39,13 @@ GradingNow shardGrading(const std::string& shard, std::string& deadline, std::st
 } // namespace
 
 int mergeBatches(const Arguments& a) {
-    fs::create_directories(a.out + "/submissions");
     std::vector<GradebookEntry> all;
     GradingNow now;
     std::string deadline = a.deadline, times = a.times;
+    // Every shard checked before anything is copied: a refused merge writes nothing.
     for (const std::string& shard : a.inputs) {
-        const fs::path folder = fs::path(shard) / "submissions";
-        if (!fs::is_directory(folder)) throw InputError(shard + ": not a batch's output (no submissions/ in it)");
+        if (!fs::is_directory(fs::path(shard) / "submissions"))
+            throw InputError(shard + ": not a batch's output (no submissions/ in it)");
         std::string shardDeadline, shardTimes;
         const GradingNow graded = shardGrading(shard, shardDeadline, shardTimes);
         if (shard == a.inputs.front()) now = graded;
@@ -55,15 +55,11 @@ int mergeBatches(const Arguments& a) {
                              a.inputs.front() + ": grade them alike before merging");
         if (deadline.empty()) deadline = shardDeadline;
         if (times.empty()) times = shardTimes;
-        for (const auto& entry : fs::directory_iterator(folder)) {
+        for (const auto& entry : fs::directory_iterator(fs::path(shard) / "submissions")) {
             const std::string id = entry.path().filename().string();
-            const GradebookEntry e = readGradebookEntry(shard, id, "");
             if (std::any_of(all.begin(), all.end(), [&](const GradebookEntry& x) { return x.id == id; }))
                 throw InputError("submission '" + id + "' is in more than one shard");
-            if (fs::absolute(shard) != fs::absolute(a.out))
-                fs::copy(entry.path(), fs::path(a.out) / "submissions" / id,
-                         fs::copy_options::recursive | fs::copy_options::overwrite_existing);
-            all.push_back(e);
+            all.push_back(readGradebookEntry(shard, id, ""));
         }
     }
     if (!deadline.empty()) {
@@ -71,6 +67,12 @@ int mergeBatches(const Arguments& a) {
         if (!now.deadline) throw InputError("option --deadline: cannot read the time '" + deadline + "'");
     }
     if (!times.empty()) now.times = loadSubmissionTimes(times);
+    fs::create_directories(a.out + "/submissions");
+    for (const std::string& shard : a.inputs)
+        if (fs::absolute(shard) != fs::absolute(a.out))
+            for (const auto& entry : fs::directory_iterator(fs::path(shard) / "submissions"))
+                fs::copy(entry.path(), fs::path(a.out) / "submissions" / entry.path().filename(),
+                         fs::copy_options::recursive | fs::copy_options::overwrite_existing);
     std::sort(all.begin(), all.end(), [](const GradebookEntry& x, const GradebookEntry& y) { return x.id < y.id; });
     std::vector<std::string> ids;
     for (const GradebookEntry& e : all) ids.push_back(e.id);

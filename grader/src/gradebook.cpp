@@ -58,7 +58,8 @@ std::string statusOf(const GradebookEntry& e, const GradingNow& now) {
     if (e.result.is_null()) return "not graded: " + e.problem;
     std::string status = e.result.value("status", "");
     if (const std::string stale = staleness(e.result, now); !stale.empty()) {
-        status = "stale: " + stale + "; regrade with grader batch --only " + e.id + " (" + status + ")";
+        status = "stale: " + stale + "; grade it again: the batch run again without --keep-stale, or with --only " +
+                 e.id + " (" + status + ")";
     }
     return status;
 }

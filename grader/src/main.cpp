@@ -25,8 +25,8 @@ int main(int argc, char** argv) {
         if (a.command == "merge") return mergeBatches(a);
         const Rubric rubric = loadRubric(a.rubric);
         if (a.command == "rubric") {
-            const std::string hidden = defaultHiddenScenesFolder();
-            std::fputs(rubricText(rubric, a.rubric, hidden.empty() ? 0 : static_cast<int>(hiddenScenePaths(hidden).size())).c_str(), stdout);
+            const int hidden = a.scenesDir.empty() ? 0 : static_cast<int>(hiddenScenePaths(a.scenesDir).size());
+            std::fputs(rubricText(rubric, a.rubric, hidden).c_str(), stdout);
             return 0;
         }
         char pattern[] = "/tmp/pathlab-grader-XXXXXX";

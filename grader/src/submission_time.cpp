@@ -23,6 +23,12 @@ std::optional<long long> parseTime(const std::string& text) {
     std::tm fields{};
     fields.tm_year = year - 1900, fields.tm_mon = month - 1, fields.tm_mday = day;
     fields.tm_hour = hour, fields.tm_min = minute, fields.tm_sec = second;
+    // 2026-02-30 is not a day: timegm would carry it into March.
+    std::tm check = fields;
+    const std::time_t asUtc = timegm(&check);
+    std::tm back{};
+    gmtime_r(&asUtc, &back);
+    if (back.tm_mday != day || back.tm_mon != month - 1) return std::nullopt;
     if (rest.empty()) {
         fields.tm_isdst = -1; // local time, daylight saving as it was on that day
         return static_cast<long long>(std::mktime(&fields));
@@ -59,11 +65,10 @@ std::map<std::string, long long> loadSubmissionTimes(const std::string& path) {
         const std::string id = line.substr(0, comma);
         const std::string time = comma == std::string::npos ? "" : line.substr(comma + 1);
         const std::optional<long long> seconds = parseTime(time);
-        if (!seconds) {
-            if (number == 1) continue; // a header
+        if (number == 1 && !seconds && id == "id") continue; // the header, id,submitted_at
+        if (!seconds)
             throw InputError(path + ":" + std::to_string(number) + ": expected id,time (time as "
                              "2026-12-01T23:59:00Z), got '" + line + "'");
-        }
         times[id] = *seconds;
     }
     return times;

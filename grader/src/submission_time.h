@@ -15,8 +15,8 @@ std::optional<long long> parseTime(const std::string& text);
 /// "2026-12-01T22:59:00Z".
 std::string isoTime(long long seconds);
 
-/// A CSV of id,submitted_at (a header line is allowed); throws InputError naming the file and
-/// line of anything it cannot read.
+/// A CSV of id,submitted_at (a first line "id,..." is its header); throws InputError naming the
+/// file and line of anything it cannot read.
 std::map<std::string, long long> loadSubmissionTimes(const std::string& path);
 
 } // namespace pathlab::grader

@@ -174,6 +174,8 @@ TEST_CASE("submission times: ISO 8601 with a zone, a deadline in local time, an 
     CHECK_FALSE(parseTime("yesterday").has_value());
     CHECK_FALSE(parseTime("2026-13-01T00:00Z").has_value());
     CHECK_FALSE(parseTime("2026-12-01T23:59+1").has_value());
+    CHECK_FALSE(parseTime("2026-02-30T23:59").has_value()); // no such day
+    CHECK(parseTime("2028-02-29T12:00Z").has_value());
     CHECK(isoTime(1796169540LL) == "2026-12-01T23:59:00Z");
 
     Scratch scratch;
@@ -184,6 +186,8 @@ TEST_CASE("submission times: ISO 8601 with a zone, a deadline in local time, an 
     CHECK(times.at("bob") == *parseTime("2026-12-02T10:00Z"));
     std::ofstream(csv) << "id,submitted_at\nalice,soon\n";
     CHECK_THROWS_WITH(loadSubmissionTimes(csv.string()), Catch::Contains("times.csv:2"));
+    std::ofstream(csv) << "dave,yesterday\n"; // a first line is a header only if it says id
+    CHECK_THROWS_WITH(loadSubmissionTimes(csv.string()), Catch::Contains("times.csv:1"));
 }
 
 TEST_CASE("a gradebook never mixes maxima, says pending, stale and late", "[grader]") {
