@@ -34,7 +34,10 @@ class TimingLock {
 public:
     explicit TimingLock(const std::string& path) {
         if (path.empty()) return;
-        fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        // Shared by every batch on the machine, whoever runs it: a lock file another user made is
+        // still locked through a read-only descriptor.
+        fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+        if (fd_ < 0) fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
         if (fd_ >= 0) ::flock(fd_, LOCK_EX);
     }
     ~TimingLock() {
