@@ -81,10 +81,9 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const SceneSources
         try {
             s.reference = loadReference(sources.references, s.path, rubric);
             if (!noiseMeasuredAsGraded(s.reference, rubric))
-                notes.push_back(name + ": the stored noise figures were measured at " +
-                                std::to_string(s.reference.noiseSeeds) +
-                                " seeds and other samples per pixel than the rubric grades at; `grader "
-                                "make-references --only-scene " + name + "` measures them as graded");
+                notes.push_back(name + ": the stored noise figures were measured at other seeds or samples "
+                                "per pixel than the rubric grades at; `grader make-references "
+                                "--only-scene " + name + "` measures them as graded");
         } catch (const StaleReference& e) {
             // Grading against it would fail correct labs (or pass wrong ones): stop instead.
             throw InputError(std::string(e.what()) + ". Remake it: grader make-references --only-scene " +
