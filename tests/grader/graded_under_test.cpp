@@ -13,8 +13,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <unistd.h>
 
@@ -184,10 +186,18 @@ TEST_CASE("submission times: ISO 8601 with a zone, a deadline in local time, an 
     const auto times = loadSubmissionTimes(csv.string());
     CHECK(times.at("alice") == *parseTime("2026-12-01T10:00Z"));
     CHECK(times.at("bob") == *parseTime("2026-12-02T10:00Z"));
+    auto errorOf = [&] {
+        try {
+            loadSubmissionTimes(csv.string());
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
     std::ofstream(csv) << "id,submitted_at\nalice,soon\n";
-    CHECK_THROWS_WITH(loadSubmissionTimes(csv.string()), Catch::Contains("times.csv:2"));
+    CHECK(errorOf().find("times.csv:2") != std::string::npos);
     std::ofstream(csv) << "dave,yesterday\n"; // a first line is a header only if it says id
-    CHECK_THROWS_WITH(loadSubmissionTimes(csv.string()), Catch::Contains("times.csv:1"));
+    CHECK(errorOf().find("times.csv:1") != std::string::npos);
 }
 
 TEST_CASE("a gradebook never mixes maxima, says pending, stale and late", "[grader]") {
