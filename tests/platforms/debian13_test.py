@@ -60,6 +60,8 @@ LEFT_OUT = {
                      "submissions",
     "grader.instructor": "an instructor's term of batches, 2 minutes; its sandbox, canary and "
                          "gradebook are those grader.batch runs here",
+    "grader.pages": "the grader's HTML in headless Chromium: the page's layout, not this "
+                    "system's code, which the host's make test checks",
     "grader.slow": "label slow: 200 gradings, not part of `make test` anywhere",
     "platforms.debian13": "this test",
     "platforms.clang_libcxx": "the kit built again with clang and libc++, which the host's "
