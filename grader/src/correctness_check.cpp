@@ -130,7 +130,7 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
     if (std::none_of(rejected.begin(), rejected.end(), [](bool b) { return b; })) {
         if (const std::string note = pathLengthNote(pathLengths); !note.empty()) details.push_back(note);
         for (const GradingScene& scene : setup.scenes)
-            if (scene.hidden) hiddenDetails.push_back(scene.name + ": matches its reference");
+            if (scene.hidden) hiddenDetails.push_back(scene.name + HiddenSceneMatches);
         return true;
     }
 
@@ -164,8 +164,7 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
         const double observed = (c.observed[0].mean + c.observed[1].mean + c.observed[2].mean) / 3;
         if (scene.furnace) furnaces.push_back({*scene.furnace, observed, c.observed[0].standardError});
         if (scene.hidden) {
-            hiddenDetails.push_back(scene.name + (sceneRejected[s] ? ": differs from its reference"
-                                                                   : ": matches its reference"));
+            hiddenDetails.push_back(scene.name + (sceneRejected[s] ? HiddenSceneDiffers : HiddenSceneMatches));
         } else if (sceneRejected[s]) {
             std::string line = scene.name + ": observed/expected";
             for (int ch = 0; ch < 3; ++ch) {

@@ -17,6 +17,11 @@
 
 namespace pathlab::grader {
 
+/// How a hidden scene's verdict reads in CheckResult::hiddenSceneDetails, after its name: the
+/// Gradescope report tells a failed one by it.
+constexpr const char* HiddenSceneMatches = ": matches its reference";
+constexpr const char* HiddenSceneDiffers = ": differs from its reference";
+
 struct CheckResult {
     std::string name;            ///< "correctness", "noise", "speed"
     double score = 0, maxScore = 0;

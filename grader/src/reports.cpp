@@ -245,7 +245,7 @@ std::string gradescopeReport(const GradeReport& report, const std::string& hidde
             bool passed = true;
             for (const std::string& d : c.hiddenSceneDetails) {
                 output += (output.empty() ? "" : "\n") + d;
-                passed = passed && d.find("differs") == std::string::npos;
+                passed = passed && d.find(HiddenSceneDiffers) == std::string::npos;
             }
             tests.push_back({{"name", std::string(labName(lab.lab)) + ": hidden scenes"},
                              {"score", 0},
