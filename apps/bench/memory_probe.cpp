@@ -1,7 +1,7 @@
 #include "memory_probe.h"
 
 #include "child_process.h"
-#include "progressive_renderer.h"
+#include "pathlab/progressive_renderer.h"
 
 #include "pathlab/false_colour.h"
 #include "pathlab/render_options.h"
@@ -70,7 +70,7 @@ int runMemoryProbe(const BenchScene& benchScene, const BenchOptions& options) {
     const RenderOptions renderOptions =
         renderOptionsFor(benchScene, options.memoryWidth, options.memoryHeight);
     const RenderScene scene(loadScene(renderOptions));
-    viewer::ViewSettings settings;
+    ViewSettings settings;
     settings.lab = Lab::Importance;
     settings.implementation = Implementation::Solution;
     settings.parameters = options.parameters;
@@ -78,10 +78,10 @@ int runMemoryProbe(const BenchScene& benchScene, const BenchOptions& options) {
     settings.width = options.memoryWidth;
     settings.height = options.memoryHeight;
 
-    viewer::ProgressiveRenderer renderer(scene, options.threads, settings, {},
+    ProgressiveRenderer renderer(scene, options.threads, settings, {},
                                          options.memoryFrames);
     // The window's side: take each new frame and turn it into display pixels.
-    viewer::Frame frame;
+    Frame frame;
     uint64_t generation = 0;
     std::vector<unsigned char> rgba;
     while (frame.number < options.memoryFrames) {

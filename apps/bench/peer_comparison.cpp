@@ -6,6 +6,7 @@
 #include "render_timing.h"
 
 #include "pathlab/accumulation_buffer.h"
+#include "pathlab/lab_tables.h"
 #include "pathlab/renderer.h"
 
 #include <algorithm>

@@ -15,7 +15,7 @@ RenderTiming timeRender(const RenderJob& job, int spp, int passes, int threads) 
 
     RenderTiming best;
     for (int pass = 0; pass < passes; ++pass) {
-        renderer.resetRayCounters();
+        renderer.resetCounts();
         const auto start = std::chrono::steady_clock::now();
         renderer.renderPass(image, job.camera, job.pathTrace, job.parameters, seed, spp);
         const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;

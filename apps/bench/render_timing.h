@@ -4,6 +4,7 @@
 #include "pathlab/camera.h"
 #include "pathlab/lab_parameters.h"
 #include "pathlab/lab_registry.h"
+#include "pathlab/renderer.h"
 #include "pathlab/ray_counters.h"
 #include "pathlab/ray_log.h"
 #include "pathlab/render_scene.h"

@@ -1,5 +1,6 @@
 #include "scene_measurement.h"
 
+#include "pathlab/lab_tables.h"
 #include "pathlab/render_options.h"
 
 namespace pathlab::bench {

@@ -5,7 +5,7 @@
 #include "no_new_processes.h"
 
 #include "pathlab/input_error.h"
-#include "pathlab/lab_registry.h"
+#include "pathlab/lab_tables.h"
 #include "pathlab/this_process.h"
 
 #include <cstdlib>

@@ -55,9 +55,7 @@ int renderToFile(const RenderOptions& options) {
                     one.outputImage.c_str(), s.scene.c_str(), s.lab.c_str(), s.impl.c_str(),
                     s.width, s.height, s.spp, s.seconds, s.samplesPerSecond(), s.framesPerSecond,
                     s.width, s.height, s.raysPerSecond(), s.noise, s.efficiencyText().c_str());
-        if (s.nonfinitePixels > 0)
-            std::fprintf(stderr, "warning: %d pixel(s) received NaN or infinite samples (left out)\n",
-                         s.nonfinitePixels);
+        if (s.nonfinitePixels > 0) std::fprintf(stderr, "%s\n", s.nonfiniteWarning().c_str());
     }
     return 0;
 }

@@ -4,8 +4,9 @@
 
 #include "camera_controller.h"
 #include "pathlab/false_colour.h"
-#include "frame_rate.h"
-#include "progressive_renderer.h"
+#include "pathlab/frame_rate.h"
+#include "pathlab/lab_tables.h"
+#include "pathlab/progressive_renderer.h"
 
 #include "pathlab/image_io.h"
 #include "pathlab/input_error.h"
@@ -45,6 +46,14 @@ std::string glfwProblem;
 double perSecond(double seconds) { return seconds > 0 ? 1.0 / seconds : 0.0; }
 
 /// --print-frame-rate: one line per finished frame, with the figures the panel shows, labelled.
+/// "; the first at pixel (x, y), sample n", or nothing.
+std::string firstNonfiniteText(const RenderStats& stats) {
+    if (!stats.firstNonfinite) return "";
+    const NonfiniteSample& f = *stats.firstNonfinite;
+    return "; the first at pixel (" + std::to_string(f.x) + ", " + std::to_string(f.y) +
+           "), sample " + std::to_string(f.sampleIndex);
+}
+
 void printFrameLine(const Frame& frame) {
     const ViewSettings& s = frame.settings;
     std::printf("frame %d: median %.2f fps (%.1f ms) over the last %zu frames, this frame %.2f fps; "
@@ -71,19 +80,24 @@ RenderStats frameStats(const Frame& frame, const RenderOptions& options) {
     return s;
 }
 
-const char* helpText = "h        this help\n"
-                       "f        fullscreen on/off\n"
-                       "drag     orbit the camera\n"
-                       "WASD     move (arrow keys too)\n"
-                       "1-4      lab: branching, uniform, importance, roulette\n"
-                       "Tab      your code <-> reference solution\n"
-                       "+ / -    continueProb up / down (lab 4)\n"
-                       "[ / ]    maxDepth down / up (labs 1-3)\n"
-                       "v        view: image, difference, split\n"
-                       "r        restart accumulation\n"
-                       "Space    screenshot (.exr linear + .png)\n"
-                       "c        print the camera as .ecs options\n"
-                       "Esc, q   quit";
+/// The keys, the labs' from the list of labs.
+std::string helpText() {
+    std::string labs;
+    for (Lab lab : AllLabs) labs += (labs.empty() ? "" : ", ") + std::string(labName(lab));
+    return "h        this help\n"
+           "f        fullscreen on/off\n"
+           "drag     orbit the camera\n"
+           "WASD     move (arrow keys too)\n"
+           "1-" + std::to_string(AllLabs.size()) + "      lab: " + labs + "\n"
+           "Tab      your code <-> reference solution\n"
+           "+ / -    continueProb up / down (lab 4)\n"
+           "[ / ]    maxDepth down / up (labs 1-3)\n"
+           "v        view: image, difference, split\n"
+           "r        restart accumulation\n"
+           "Space    screenshot (.exr linear + .png)\n"
+           "c        print the camera as .ecs options\n"
+           "Esc, q   quit";
+}
 
 class ViewerWindow {
 public:
@@ -117,6 +131,10 @@ public:
             // 60 Hz costs a software-rendered display (Xvfb, a remote desktop) a share of them.
             if (fresh || std::exchange(inputSeen_, false) || finishing_) draw();
             if (done_) break;
+            if (const std::string failure = renderer_->failure(); !failure.empty()) {
+                std::fprintf(stderr, "viewer: error: %s\n", failure.c_str());
+                return 1;
+            }
         }
         if (!options_.statsFile.empty()) writeStats();
         return status_;
@@ -135,13 +153,15 @@ public:
         default: break;
         }
         if (repeat) return;
+        // The number keys choose the labs, in the order of pathlab/lab_list.h.
+        if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + static_cast<int>(AllLabs.size())) {
+            settings_.lab = AllLabs[static_cast<size_t>(key - GLFW_KEY_1)];
+            return;
+        }
         switch (key) {
         case GLFW_KEY_ESCAPE: case GLFW_KEY_Q: glfwSetWindowShouldClose(window_, GLFW_TRUE); break;
         case GLFW_KEY_H: showHelp_ = !showHelp_; break;
         case GLFW_KEY_F: toggleFullscreen(); break;
-        case GLFW_KEY_1: case GLFW_KEY_2: case GLFW_KEY_3: case GLFW_KEY_4:
-            settings_.lab = AllLabs[key - GLFW_KEY_1];
-            break;
         case GLFW_KEY_TAB:
             if (!solution::available()) {
                 std::printf("Tab: the reference solutions are not part of this build\n");
@@ -325,14 +345,15 @@ private:
             ImGui::Text("|image - ref| / ref: black 0, blue .125, green .25, yellow .375, red .5+;"
                         " median %.3f", medianDifference_);
         if (frame_.stats.nonfinitePixels > 0)
-            ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "%d pixels got NaN/inf samples",
-                               frame_.stats.nonfinitePixels);
+            ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "%d pixels got NaN/inf samples%s",
+                               frame_.stats.nonfinitePixels,
+                               firstNonfiniteText(frame_.stats).c_str());
         ImGui::Text("h: help");
         ImGui::End();
         if (showHelp_) {
             ImGui::SetNextWindowPos(ImVec2(8, 200), ImGuiCond_FirstUseEver);
             ImGui::Begin("Keys", &showHelp_, ImGuiWindowFlags_AlwaysAutoResize);
-            ImGui::TextUnformatted(helpText);
+            ImGui::TextUnformatted(helpText().c_str());
             ImGui::End();
         }
         ImGui::Render();

@@ -3,13 +3,13 @@
 namespace pathlab {
 
 std::string_view labName(Lab lab) {
-    switch (lab) {
-    case Lab::Branching: return "branching";
-    case Lab::Uniform: return "uniform";
-    case Lab::Importance: return "importance";
-    case Lab::Roulette: return "roulette";
-    }
-    return "?";
+    // Spelled by the preprocessor from the list, so a name cannot drift from its enumerator.
+    constexpr std::string_view names[] = {
+#define PATHLAB_LAB_NAME(name, Enumerator, depthLimited) #name,
+        PATHLAB_FOR_EACH_LAB(PATHLAB_LAB_NAME)
+#undef PATHLAB_LAB_NAME
+    };
+    return names[labIndex(lab)];
 }
 
 std::optional<Lab> labFromName(std::string_view name) {

@@ -1,15 +1,37 @@
 #include "pathlab/path_context.h"
 
+#include "pathlab/camera_packet.h"
+#include "pathlab/check.h"
 #include "pathlab/constants.h"
+#include "pathlab/lab_parameters.h"
+#include "pathlab/path_driver.h"
+#include "pathlab/ray_log.h"
 #include "pathlab/render_scene.h"
 #include "pathlab/triangle_sampling.h"
 
+#include <cmath>
 #include <utility>
 
 namespace pathlab {
 
+PathContext::PathContext(const RenderScene& scene, const LabParameters& parameters)
+    : sampler(PathDriver::samplerFor(0, 0, 0)), maxDepth(parameters.maxDepth), continueProb(parameters.continueProb),
+      scene_(scene) {}
+
+Sampler PathDriver::samplerFor(uint64_t seed, uint64_t pixelIndex, uint64_t sampleIndex) {
+    const uint64_t key = mix64(mix64(mix64(seed) ^ pixelIndex) ^ sampleIndex);
+    Pcg32 rng;
+    rng.seed(key, mix64(key ^ 0x5851f42d4c957f2dull));
+    return Sampler(rng);
+}
+
 Hit PathContext::trace(const Ray& ray) {
-    ++counters_.intersect;
+    // A ray built by a lab: Embree would trace a non-unit direction, with every distance and
+    // offset along it scaled, and a NaN one would find nothing. Both come from a step before.
+    PATHLAB_CHECK(std::abs(dot(ray.direction, ray.direction) - 1.0f) < 1e-3f,
+                  "ctx.trace(ray) needs a unit-length ray.direction: normalize() it, and look "
+                  "for a division by zero (a NaN) where the direction was made");
+    ++closestHitRays_;
     if (log_) log_->closestHit.push_back(ray);
     if (packet_) {
         // Only the first trace() after priming may be the packet's camera ray.
@@ -20,13 +42,16 @@ Hit PathContext::trace(const Ray& ray) {
 }
 
 Color PathContext::directLight(const Hit& hit) {
+    PATHLAB_CHECK(hit.found, "ctx.directLight(hit) needs a surface: call it after `if (!hit)` "
+                             "has returned for a ray that left the scene");
     const LightSampler& lights = scene_.lights();
-    if (!hit || isBlack(hit.material.Kd) || lights.empty()) return Color();
+    if (isBlack(hit.material.Kd) || lights.empty()) return Color();
 
     float pickProbability = 0;
     const float u = sampler.get1D();
     const float v = sampler.get1D();
     const LightSource& light = lights.pick(u, v, pickProbability);
+    PATHLAB_DCHECK(pickProbability > 0);
 
     // Radiance arriving from the light along the shadow ray, divided by the pdf of the chosen
     // point in solid angle at the receiver, i.e. L·cosθ'/(r²·p_area) for an area light.
@@ -52,7 +77,7 @@ Color PathContext::directLight(const Hit& hit) {
         arriving = light.Ke * (cosTimesArea / distance2);
     }
 
-    ++counters_.occluded;
+    ++shadowRays_;
     const Vec3 origin = offsetRayOrigin(hit, toLight);
     if (log_) log_->occlusion.push_back({origin, lightPosition});
     if (scene_.occluded(origin, lightPosition)) return Color();

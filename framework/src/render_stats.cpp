@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -29,8 +30,27 @@ std::string RenderStats::efficiencyText() const {
     return text;
 }
 
+std::string RenderStats::nonfiniteWarning() const {
+    if (nonfinitePixels == 0) return "";
+    std::string text = "warning: " + std::to_string(nonfinitePixels) +
+                       " pixel(s) received NaN or infinite samples (left out of the image)";
+    if (firstNonfinite) {
+        const NonfiniteSample& f = *firstNonfinite;
+        char where[256];
+        std::snprintf(where, sizeof where,
+                      "; the first: pixel (%d, %d), sample %llu, where lab %s (%s) returned "
+                      "(%g, %g, %g) after tracing %llu ray(s) for that sample",
+                      f.x, f.y, static_cast<unsigned long long>(f.sampleIndex), lab.c_str(),
+                      impl.c_str(), f.radiance.r, f.radiance.g, f.radiance.b,
+                      static_cast<unsigned long long>(f.raysTraced));
+        text += where;
+    }
+    return text;
+}
+
 RenderStats renderStats(const RenderedWhat& what, const AccumulationBuffer& image, int threads,
-                        double seconds, const RayCounters& rays) {
+                        double seconds, const RayCounters& rays,
+                        const std::optional<NonfiniteSample>& firstNonfinite) {
     RenderStats s;
     s.scene = what.scene;
     s.lab = labName(what.lab);
@@ -48,6 +68,7 @@ RenderStats renderStats(const RenderedWhat& what, const AccumulationBuffer& imag
     s.meanRadiance = summary.meanRadiance;
     s.meanVariance = summary.meanVariance;
     s.nonfinitePixels = summary.nonfinitePixels;
+    s.firstNonfinite = firstNonfinite;
     s.noise = summary.noise;
     return s;
 }
@@ -84,7 +105,7 @@ void writeFileAtomically(const std::string& path, const std::string& text) {
 
 void writeRenderStats(const std::string& path, const RenderStats& s) {
     auto rgb = [](const Color& c) { return nlohmann::json::array({c.r, c.g, c.b}); };
-    const nlohmann::json json = {
+    nlohmann::json json = {
         {"scene", s.scene},
         {"lab", s.lab},
         {"impl", s.impl},
@@ -107,6 +128,21 @@ void writeRenderStats(const std::string& path, const RenderStats& s) {
         {"frames_per_second", s.framesPerSecond},
         {"frames_per_second_source", s.framesPerSecondSource},
     };
+    if (s.firstNonfinite) {
+        const NonfiniteSample& f = *s.firstNonfinite;
+        // As text: JSON has no NaN or infinity.
+        const auto component = [](float v) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%g", v);
+            return std::string(text);
+        };
+        json["first_nonfinite"] = {
+            {"pixel", {f.x, f.y}},
+            {"sample", f.sampleIndex},
+            {"rays_traced", f.raysTraced},
+            {"radiance", {component(f.radiance.r), component(f.radiance.g), component(f.radiance.b)}},
+        };
+    }
     writeFileAtomically(path, json.dump(2) + "\n");
 }
 
@@ -139,6 +175,17 @@ RenderStats readRenderStats(const std::string& path) {
         s.noise = j.at("noise").get<double>();
         s.framesPerSecond = j.at("frames_per_second").get<double>();
         s.framesPerSecondSource = j.at("frames_per_second_source").get<std::string>();
+        if (j.contains("first_nonfinite")) {
+            const nlohmann::json& f = j.at("first_nonfinite");
+            const auto component = [&](int i) {
+                return std::strtof(f.at("radiance").at(i).get<std::string>().c_str(), nullptr);
+            };
+            s.firstNonfinite = NonfiniteSample{f.at("pixel").at(0).get<int>(),
+                                               f.at("pixel").at(1).get<int>(),
+                                               f.at("sample").get<uint64_t>(),
+                                               f.at("rays_traced").get<uint64_t>(),
+                                               Color(component(0), component(1), component(2))};
+        }
         return s;
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ": not the stats a viewer writes (" + e.what() + ")");

@@ -1,7 +1,7 @@
 #include "pathlab/renderer.h"
 
 #include "pathlab/camera_packet.h"
-#include "pathlab/path_context.h"
+#include "pathlab/path_driver.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
@@ -32,6 +32,7 @@ void ensureDeepStacks() {
 /// the pixel jitter, where pathTrace takes them up.
 struct PendingSample {
     int pixel;
+    uint64_t sampleIndex;
     Sampler sampler;
 };
 
@@ -55,52 +56,64 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
     const uint64_t firstSample = static_cast<uint64_t>(buffer.samplesPerPixel());
     std::atomic<uint64_t> intersect{0}, occluded{0};
     std::vector<RayLog> tileLogs(log ? static_cast<size_t>(tilesX) * tilesY : 0);
+    FirstNonfiniteSample nonfinite;
 
     arena_->arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY, 1),
                           [&](const tbb::blocked_range<int>& tiles) {
             for (int tile = tiles.begin(); tile != tiles.end(); ++tile) {
                 if (cancel && cancel->load(std::memory_order_relaxed)) return;
-                PathContext ctx(scene_, parameters);
-                if (log) ctx.recordRaysInto(&tileLogs[static_cast<size_t>(tile)]);
+                PathDriver driver(scene_, parameters);
+                if (log) driver.recordRaysInto(&tileLogs[static_cast<size_t>(tile)]);
                 const int x0 = (tile % tilesX) * TileSize, y0 = (tile / tilesX) * TileSize;
                 const int x1 = std::min(x0 + TileSize, width), y1 = std::min(y0 + TileSize, height);
                 // Camera rays go to Embree a packet at a time; each sample's pathTrace then
                 // finds its camera ray's hit waiting in the context. Samples keep their order
                 // within a pixel, so every pixel's sums add up exactly as one by one.
                 CameraPacket packet;
-                PendingSample pending[CameraPacket::Size];
+                std::vector<PendingSample> pending;
+                pending.reserve(CameraPacket::Size);
                 const auto tracePending = [&] {
                     scene_.intersect(packet);
                     for (int i = 0; i < packet.count; ++i) {
-                        ctx.sampler = pending[i].sampler;
-                        ctx.primeCameraHit(&packet, i);
-                        buffer.addSample(pending[i].pixel, pathTrace(packet.rays[i], 0, ctx));
+                        const PendingSample& sample = pending[static_cast<size_t>(i)];
+                        driver.restoreSampler(sample.sampler);
+                        driver.primeCameraHit(&packet, i);
+                        const uint64_t raysBefore = driver.rayCounters().intersect;
+                        const Color radiance = pathTrace(packet.rays[i], 0, driver.context());
+                        if (!isFinite(radiance))
+                            nonfinite.note({sample.pixel % width, sample.pixel / width,
+                                            sample.sampleIndex,
+                                            driver.rayCounters().intersect - raysBefore, radiance});
+                        buffer.addSample(sample.pixel, radiance);
                     }
                     packet.count = 0;
+                    pending.clear();
                 };
                 for (int y = y0; y < y1; ++y) {
                     for (int x = x0; x < x1; ++x) {
                         const int pixel = y * width + x;
                         for (int s = 0; s < spp; ++s) {
-                            ctx.sampler.startSample(seed, static_cast<uint64_t>(pixel),
-                                                    firstSample + static_cast<uint64_t>(s));
-                            const Vec2 jitter = ctx.sampler.get2D();
+                            const uint64_t sampleIndex = firstSample + static_cast<uint64_t>(s);
+                            driver.startSample(seed, static_cast<uint64_t>(pixel), sampleIndex);
+                            const Vec2 jitter = driver.context().sampler.get2D();
                             packet.rays[packet.count] = camera.generateRay(
                                 static_cast<float>(x) + jitter.x, static_cast<float>(y) + jitter.y);
-                            pending[packet.count] = {pixel, ctx.sampler};
+                            pending.push_back({pixel, sampleIndex, driver.savedSampler()});
                             if (++packet.count == CameraPacket::Size) tracePending();
                         }
                     }
                 }
                 if (packet.count > 0) tracePending();
                 // Counted per tile in the context, summed here once: nothing shared per ray.
-                intersect.fetch_add(ctx.rayCounters().intersect, std::memory_order_relaxed);
-                occluded.fetch_add(ctx.rayCounters().occluded, std::memory_order_relaxed);
+                intersect.fetch_add(driver.rayCounters().intersect, std::memory_order_relaxed);
+                occluded.fetch_add(driver.rayCounters().occluded, std::memory_order_relaxed);
             }
         });
     });
     counters_ += RayCounters{intersect.load(), occluded.load()};
+    if (nonfinite.first() && (!firstNonfinite_ || nonfinite.first()->before(*firstNonfinite_)))
+        firstNonfinite_ = nonfinite.first();
     for (const RayLog& tileLog : tileLogs) log->append(tileLog);
     if (cancel && cancel->load()) return false;
     buffer.finishPass(spp);

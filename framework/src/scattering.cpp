@@ -1,22 +1,37 @@
 #include "pathlab/scattering.h"
 
+#include "pathlab/check.h"
 #include "pathlab/cosine_hemisphere.h"
 #include "pathlab/render_scene.h"
 #include "pathlab/specular.h"
 
 namespace pathlab {
 
+namespace {
+
+/// The three bounces need a surface to leave: a missed hit has no position or normal.
+void checkFound(const Hit& hit, const char* bounce) {
+    PATHLAB_CHECK(hit.found, std::string(bounce) +
+                                 " needs a surface: bounce only after `if (!hit)` has returned "
+                                 "for a ray that left the scene");
+}
+
+} // namespace
+
 Ray diffuseRay(const Hit& hit, Vec2 u) {
+    checkFound(hit, "diffuseRay(hit, u)");
     const Vec3 direction = sampleCosineHemisphere(hit.normal, u);
     return {offsetRayOrigin(hit, direction), direction, RayKind::Diffuse};
 }
 
 Ray mirrorRay(const Ray& ray, const Hit& hit) {
+    checkFound(hit, "mirrorRay(ray, hit)");
     const Vec3 direction = normalize(reflect(ray.direction, hit.normal));
     return {offsetRayOrigin(hit, direction), direction, RayKind::Specular};
 }
 
 Ray refractionRay(const Ray& ray, const Hit& hit) {
+    checkFound(hit, "refractionRay(ray, hit)");
     // hit.normal faces the incoming side: entering through the front face goes from air (1) into
     // the material (Ni), leaving through the back goes from Ni into air.
     const float eta = hit.frontFace ? 1.0f / hit.material.Ni : hit.material.Ni;

@@ -33,7 +33,7 @@ std::string compilerMessages(const ProcessOutcome& outcome) {
     std::istringstream in(outcome.output);
     std::string line, text;
     for (int n = 0; n < 25 && std::getline(in, line); ++n) {
-        for (const std::string folder : {"/submission/", "/pathlab/include/"})
+        for (const std::string folder : {"/submission/", "/pathlab/include/", "/pathlab/runner/"})
             for (size_t at; (at = line.find(folder)) != std::string::npos;)
                 line.erase(at, folder.size());
         text += line + "\n";
@@ -61,9 +61,17 @@ std::string compileObject(const LabBuild& build, const std::string& source,
     SandboxRun run;
     run.command = {build.compiler};
     run.command.insert(run.command.end(), build.flags.begin(), build.flags.end());
-    run.command.insert(run.command.end(), {"-DPATHLAB_IMPL=" + implementation, "-I/pathlab/include",
-                                           "-c", "/submission/" + name, "-o", "out.o"});
-    run.files = {{build.include, "/pathlab/include"}, {source, "/submission/" + name}};
+    run.command.insert(run.command.end(), {"-DPATHLAB_IMPL=" + implementation, "-I/pathlab/include"});
+    // The table alone sees the runner's headers; a lab file sees the student API (lab.h).
+    if (source == build.labTable) run.command.push_back("-I/pathlab/runner");
+    // Each lab's namespace named after the set, as CMakeLists.txt's pathlab_lab_library does.
+    for (Lab lab : AllLabs)
+        run.command.push_back("-D" + std::string(labName(lab)) + "=" + std::string(labName(lab)) +
+                              "_" + implementation);
+    run.command.insert(run.command.end(), {"-c", "/submission/" + name, "-o", "out.o"});
+    run.files = {{build.include, "/pathlab/include"},
+                 {build.runnerInclude, "/pathlab/runner"},
+                 {source, "/submission/" + name}};
     run.collect = {"out.o"};
     run.scratchBytes = 128LL << 20;
     const SandboxOutcome outcome = runInSandbox(run, compileLimits, policy);
@@ -117,7 +125,7 @@ LabBuild loadLabBuild(const std::string& path) {
     try {
         const nlohmann::json j = nlohmann::json::parse(in);
         return {j.at("compiler"), j.at("flags").get<std::vector<std::string>>(), j.at("include"),
-                j.at("lab_table"), j.at("stubs"), j.at("solutions"), j.at("viewer")};
+                j.at("runner_include"), j.at("lab_table"), j.at("stubs"), j.at("solutions"), j.at("viewer")};
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ": " + e.what());
     }
@@ -140,8 +148,9 @@ std::string kitFingerprint(const LabBuild& build) {
     std::vector<std::string> files = {build.labTable};
     for (Lab lab : AllLabs)
         files.insert(files.end(), {build.stubs + "/" + labFile(lab), build.solutions + "/" + labFile(lab)});
-    for (const auto& entry : fs::recursive_directory_iterator(build.include))
-        if (entry.is_regular_file()) files.push_back(entry.path().string());
+    for (const std::string& folder : {build.include, build.runnerInclude})
+        for (const auto& entry : fs::recursive_directory_iterator(folder))
+            if (entry.is_regular_file()) files.push_back(entry.path().string());
     std::sort(files.begin(), files.end());
     for (const std::string& file : files) {
         std::ifstream in(file, std::ios::binary);

@@ -2,6 +2,7 @@
 #include "catch.h"
 #include "test_support.h"
 
+#include "pathlab/lab_tables.h"
 #include "pathlab/renderer.h"
 
 #include <cstring>

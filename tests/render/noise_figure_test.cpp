@@ -6,6 +6,7 @@
 #include "pathlab/accumulation_buffer.h"
 #include "pathlab/image_noise.h"
 #include "pathlab/pcg32.h"
+#include "pathlab/lab_tables.h"
 #include "pathlab/renderer.h"
 
 #include <cmath>

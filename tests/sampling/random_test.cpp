@@ -1,8 +1,8 @@
 // PCG32 and the per-sample streams: reproducible, and distinct for distinct keys.
 #include "catch.h"
 
+#include "pathlab/path_driver.h"
 #include "pathlab/pcg32.h"
-#include "pathlab/sampler.h"
 #include "pathlab/triangle_sampling.h"
 
 #include <set>
@@ -18,21 +18,17 @@ TEST_CASE("PCG32 matches the reference implementation's first outputs", "[sampli
 }
 
 TEST_CASE("a sampler restarted with the same key repeats itself", "[sampling][rng]") {
-    Sampler a, b;
-    a.startSample(7, 1234, 5);
-    b.startSample(7, 1234, 5);
+    Sampler a = PathDriver::samplerFor(7, 1234, 5);
+    Sampler b = PathDriver::samplerFor(7, 1234, 5);
     for (int i = 0; i < 100; ++i) CHECK(a.get1D() == b.get1D());
 }
 
 TEST_CASE("different seeds, pixels and samples give different streams", "[sampling][rng]") {
     std::set<float> firsts;
-    Sampler s;
     for (uint64_t seed = 0; seed < 4; ++seed)
         for (uint64_t pixel = 0; pixel < 50; ++pixel)
-            for (uint64_t sample = 0; sample < 50; ++sample) {
-                s.startSample(seed, pixel, sample);
-                firsts.insert(s.get1D());
-            }
+            for (uint64_t sample = 0; sample < 50; ++sample)
+                firsts.insert(PathDriver::samplerFor(seed, pixel, sample).get1D());
     // 10000 draws of 24-bit floats: a handful of collisions at most by chance, not thousands.
     CHECK(firsts.size() > 9990);
 }

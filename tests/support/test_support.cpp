@@ -1,6 +1,6 @@
 #include "test_support.h"
 
-#include "pathlab/lab_registry.h"
+#include "pathlab/lab_tables.h"
 #include "pathlab/this_process.h"
 
 #include <array>

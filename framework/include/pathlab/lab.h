@@ -25,6 +25,7 @@
 #include "pathlab/constants.h"
 #include "pathlab/cosine_hemisphere.h"
 #include "pathlab/hit.h"
+#include "pathlab/lab_list.h"
 #include "pathlab/material.h"
 #include "pathlab/path_context.h"
 #include "pathlab/ray.h"
@@ -34,30 +35,18 @@
 #include "pathlab/vec3.h"
 
 // The build compiles the student's labs/ and the reference solutions/ into one viewer, each set
-// with its own PATHLAB_IMPL (student or solution). The four macros below append that name to the
-// lab namespaces, so that `namespace pathlab::branching { ... }` in a lab file is
-// pathlab::branching_student or pathlab::branching_solution: the two sets, helpers included,
-// never collide, and a lab file needs no macro of its own. (An inline namespace PATHLAB_IMPL
-// around the lab namespaces would read better, but clang, Apple's included, mangles a reopened
-// `namespace pathlab::branching` without it, and the sets would not link.)
+// with its own PATHLAB_IMPL (student or solution) and each lab's name defined as that name with
+// the set's appended (CMakeLists.txt: pathlab_lab_library, and the grader's build of a
+// submission): `namespace pathlab::branching { ... }` in a lab file is pathlab::branching_student
+// or pathlab::branching_solution, so the two sets, helpers included, never collide, and a lab
+// file needs no macro of its own. (An inline namespace PATHLAB_IMPL around the lab namespaces
+// would read better, but clang, Apple's included, mangles a reopened `namespace
+// pathlab::branching` without it, and the sets would not link.)
 #ifdef PATHLAB_IMPL
-#define PATHLAB_JOIN_NAMES_(name, impl) name##_##impl
-#define PATHLAB_JOIN_NAMES(name, impl) PATHLAB_JOIN_NAMES_(name, impl)
-#define branching PATHLAB_JOIN_NAMES(branching, PATHLAB_IMPL)
-#define uniform PATHLAB_JOIN_NAMES(uniform, PATHLAB_IMPL)
-#define importance PATHLAB_JOIN_NAMES(importance, PATHLAB_IMPL)
-#define roulette PATHLAB_JOIN_NAMES(roulette, PATHLAB_IMPL)
-
-namespace pathlab::branching {
-Color pathTrace(const Ray& ray, int depth, PathContext& ctx);
-}
-namespace pathlab::uniform {
-Color pathTrace(const Ray& ray, int depth, PathContext& ctx);
-}
-namespace pathlab::importance {
-Color pathTrace(const Ray& ray, int depth, PathContext& ctx);
-}
-namespace pathlab::roulette {
-Color pathTrace(const Ray& ray, int depth, PathContext& ctx);
-}
+#define PATHLAB_DECLARE_PATH_TRACE(name, Enumerator, depthLimited)                                 \
+    namespace pathlab::name {                                                                      \
+    Color pathTrace(const Ray& ray, int depth, PathContext& ctx);                                  \
+    }
+PATHLAB_FOR_EACH_LAB(PATHLAB_DECLARE_PATH_TRACE)
+#undef PATHLAB_DECLARE_PATH_TRACE
 #endif

@@ -5,9 +5,11 @@
 #include "pathlab/color.h"
 #include "pathlab/lab_parameters.h"
 #include "pathlab/lab_registry.h"
+#include "pathlab/nonfinite_sample.h"
 #include "pathlab/ray_counters.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace pathlab {
@@ -24,6 +26,7 @@ struct RenderStats {
     Color meanRadiance;
     Color meanVariance;            ///< per-sample variance averaged over pixels, per channel
     int nonfinitePixels = 0;
+    std::optional<NonfiniteSample> firstNonfinite; ///< where the first of those samples was
     double noise = 0;              ///< imageNoise of the image (pathlab/image_noise.h)
     /// Frames per second of the window at this size, one sample per pixel per frame: the panel's
     /// median when the window measured it, samples/s ÷ (width × height) for a headless render.
@@ -35,6 +38,9 @@ struct RenderStats {
     double efficiency() const;     ///< renderEfficiency(noise, seconds)
     /// The efficiency for people: "2.44", or "undefined (no noise)" for a noiseless image.
     std::string efficiencyText() const;
+    /// Empty when every sample was finite; otherwise one line for the student: how many pixels,
+    /// and the first sample's pixel, sample index, lab, rays traced and radiance.
+    std::string nonfiniteWarning() const;
 };
 
 /// What to say of one render: what was rendered (scene, lab, implementation, parameters, seed),
@@ -48,7 +54,8 @@ struct RenderedWhat {
     uint64_t seed;
 };
 RenderStats renderStats(const RenderedWhat& what, const AccumulationBuffer& image, int threads,
-                        double seconds, const RayCounters& rays);
+                        double seconds, const RayCounters& rays,
+                        const std::optional<NonfiniteSample>& firstNonfinite);
 
 /// The frame rate of a headless render: samples/s ÷ (width × height), what the window would show
 /// at that size with one sample per pixel per frame.

@@ -3,8 +3,9 @@
 
 #include "pathlab/accumulation_buffer.h"
 #include "pathlab/camera.h"
+#include "pathlab/color.h"
 #include "pathlab/lab_parameters.h"
-#include "pathlab/lab_registry.h"
+#include "pathlab/nonfinite_sample.h"
 #include "pathlab/ray_counters.h"
 #include "pathlab/ray_log.h"
 #include "pathlab/render_scene.h"
@@ -14,6 +15,12 @@
 #include <memory>
 
 namespace pathlab {
+
+class PathContext;
+struct Ray;
+
+/// A lab's estimator: the radiance arriving along `ray` (lab.h).
+using PathTraceFunction = Color (*)(const Ray& ray, int depth, PathContext& ctx);
 
 /// Renders passes of samples into an AccumulationBuffer with TBB over square tiles. Each sample
 /// draws its random numbers from a stream keyed by (seed, pixel, sample index), so the image does
@@ -32,9 +39,14 @@ public:
                     const LabParameters& parameters, uint64_t seed, int spp,
                     const std::atomic<bool>* cancel = nullptr, RayLog* log = nullptr);
 
-    /// Rays traced by all passes since construction (or the last resetRayCounters()).
+    /// Rays traced by all passes since construction (or the last resetCounts()).
     RayCounters rayCounters() const { return counters_; }
-    void resetRayCounters() { counters_ = {}; }
+    /// The first non-finite sample of those passes, by sample index and pixel, if any.
+    const std::optional<NonfiniteSample>& firstNonfinite() const { return firstNonfinite_; }
+    void resetCounts() {
+        counters_ = {};
+        firstNonfinite_.reset();
+    }
     int threads() const { return threads_; }
 
     static constexpr int TileSize = 16; ///< pixels per tile side
@@ -45,6 +57,7 @@ private:
     int threads_;
     std::unique_ptr<Arena> arena_;
     RayCounters counters_;
+    std::optional<NonfiniteSample> firstNonfinite_;
 };
 
 } // namespace pathlab

@@ -1,12 +1,13 @@
-#include "progressive_renderer.h"
+#include "pathlab/progressive_renderer.h"
 
-#include "frame_rate.h"
+#include "pathlab/frame_rate.h"
+#include "pathlab/lab_tables.h"
 
 #include "pathlab/renderer.h"
 
 #include <chrono>
 
-namespace pathlab::viewer {
+namespace pathlab {
 
 bool ViewSettings::operator==(const ViewSettings& o) const {
     const auto same = [](const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
@@ -39,7 +40,16 @@ ProgressiveRenderer::ProgressiveRenderer(const RenderScene& scene, int threads,
                                          std::function<void(const Frame&)> onFrame, int frameLimit)
     : scene_(scene), threads_(threads), onFrame_(std::move(onFrame)), frameLimit_(frameLimit),
       settings_(settings) {
-    thread_ = std::thread([this] { run(); });
+    thread_ = std::thread([this] {
+        // A lab's broken check (pathlab/check.h) or any other error ends the rendering, not the
+        // program: the window reports it (failure()) and closes.
+        try {
+            run();
+        } catch (const std::exception& error) {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            failure_ = error.what();
+        }
+    });
 }
 
 ProgressiveRenderer::~ProgressiveRenderer() {
@@ -68,6 +78,11 @@ void ProgressiveRenderer::restart() {
     wake_.notify_all();
 }
 
+std::string ProgressiveRenderer::failure() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return failure_;
+}
+
 bool ProgressiveRenderer::takeFrame(Frame& frame, uint64_t& generation) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (latestGeneration_ == 0) return false;
@@ -84,6 +99,7 @@ void ProgressiveRenderer::run() {
     AccumulationBuffer buffers[2] = {AccumulationBuffer(1, 1), AccumulationBuffer(1, 1)};
     double seconds[2] = {0, 0};
     RayCounters rays;
+    std::optional<NonfiniteSample> firstNonfinite; // of the shown implementation since the restart
     FrameRate frameRate; // of the implementation shown (buffer 0)
     int frames = 0;
     while (true) {
@@ -105,6 +121,7 @@ void ProgressiveRenderer::run() {
                             settings.split ? settings.height : 1);
                 seconds[0] = seconds[1] = 0;
                 rays = RayCounters();
+                firstNonfinite.reset();
                 frameRate.clear();
                 frames = 0;
             }
@@ -116,7 +133,7 @@ void ProgressiveRenderer::run() {
                        : (settings.implementation == Implementation::Student ? Implementation::Solution
                                                                              : Implementation::Student);
         const Camera camera(settings.camera, settings.width, settings.height);
-        const RayCounters before = renderer.rayCounters();
+        renderer.resetCounts(); // this pass's rays and non-finite samples alone
         const auto start = std::chrono::steady_clock::now();
         const bool finished = renderer.renderPass(buffers[which], camera,
                                                   findPathTrace(settings.lab, impl),
@@ -125,10 +142,12 @@ void ProgressiveRenderer::run() {
         const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
         if (!finished) continue; // restarted mid-pass: the partial pass is thrown away
         seconds[which] += elapsed.count();
-        const RayCounters after = renderer.rayCounters();
-        const RayCounters traced{after.intersect - before.intersect, after.occluded - before.occluded};
+        const RayCounters traced = renderer.rayCounters();
         if (which == 0) {
             rays += traced;
+            const std::optional<NonfiniteSample>& passFirst = renderer.firstNonfinite();
+            if (passFirst && (!firstNonfinite || passFirst->before(*firstNonfinite)))
+                firstNonfinite = passFirst;
             frameRate.add(elapsed.count());
         }
         ++frames;
@@ -143,7 +162,7 @@ void ProgressiveRenderer::run() {
         frame.raysPerSecond = static_cast<double>(traced.total()) / elapsed.count();
         frame.stats = renderStats({"", settings.lab, settings.implementation, settings.parameters,
                                    settings.seed},
-                                  buffers[0], renderer.threads(), seconds[0], rays);
+                                  buffers[0], renderer.threads(), seconds[0], rays, firstNonfinite);
         if (onFrame_) onFrame_(frame);
         std::lock_guard<std::mutex> lock(mutex_);
         if (generation == generation_) {
@@ -162,4 +181,4 @@ void ProgressiveRenderer::run() {
     }
 }
 
-} // namespace pathlab::viewer
+} // namespace pathlab

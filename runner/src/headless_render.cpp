@@ -2,6 +2,7 @@
 
 #include "pathlab/camera.h"
 #include "pathlab/render_scene.h"
+#include "pathlab/lab_tables.h"
 #include "pathlab/renderer.h"
 
 #include <chrono>
@@ -26,7 +27,8 @@ HeadlessResult renderHeadless(const RenderOptions& options, const RenderScene& s
 
     result.stats = renderStats({options.sceneName, options.lab, options.implementation,
                                 options.parameters, options.seed},
-                               result.image, renderer.threads(), elapsed.count(), renderer.rayCounters());
+                               result.image, renderer.threads(), elapsed.count(), renderer.rayCounters(),
+                               renderer.firstNonfinite());
     setHeadlessFrameRate(result.stats);
     return result;
 }

@@ -1,16 +1,19 @@
-// Compiled once with the student's labs/ (PATHLAB_IMPL=student) and once with solutions/
-// (PATHLAB_IMPL=solution): each set's explicit table of its four pathTrace functions.
-// lab.h must come first: it names the lab namespaces after PATHLAB_IMPL (branching_student...).
+// Compiled into each set of labs (CMakeLists.txt, pathlab_lab_library): with the student's
+// labs/ as PATHLAB_IMPL=student, with solutions/ as PATHLAB_IMPL=solution. The build defines
+// each lab's name as that name with the set's appended (branching=branching_student ...), so the
+// table below takes the set's own functions.
 #include "pathlab/lab.h"
-#include "pathlab/lab_registry.h"
+#include "pathlab/lab_tables.h"
 #include "pathlab/this_process.h"
 
 namespace pathlab::PATHLAB_IMPL {
 
 const LabTable& labTable() {
-    // Same order as the Lab enum.
-    static const LabTable table = {&branching::pathTrace, &uniform::pathTrace,
-                                   &importance::pathTrace, &roulette::pathTrace};
+    static const LabTable table = {
+#define PATHLAB_LAB_PATH_TRACE(name, Enumerator, depthLimited) &name::pathTrace,
+        PATHLAB_FOR_EACH_LAB(PATHLAB_LAB_PATH_TRACE)
+#undef PATHLAB_LAB_PATH_TRACE
+    };
     return table;
 }
 

@@ -13,10 +13,11 @@
 #include <cstdint>
 #include <functional>
 #include <mutex>
+#include <string>
 #include <thread>
 #include <vector>
 
-namespace pathlab::viewer {
+namespace pathlab {
 
 /// What the window asks to be rendered. Any change restarts accumulation.
 struct ViewSettings {
@@ -66,6 +67,8 @@ public:
     /// Copies the newest finished frame into `frame` if it is newer than `frame.number` after
     /// the last restart; returns whether it did.
     bool takeFrame(Frame& frame, uint64_t& generation);
+    /// Why rendering stopped for good (a broken check in a lab, say), or "" while it runs.
+    std::string failure();
     /// Frames finished since the renderer started, over all restarts.
     int framesFinished() const { return framesFinished_.load(); }
 
@@ -85,7 +88,8 @@ private:
     std::atomic<int> framesFinished_{0};
     Frame latest_;
     uint64_t latestGeneration_ = 0;
+    std::string failure_;
     std::thread thread_;
 };
 
-} // namespace pathlab::viewer
+} // namespace pathlab

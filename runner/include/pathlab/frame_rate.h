@@ -5,7 +5,7 @@
 #include <deque>
 #include <vector>
 
-namespace pathlab::viewer {
+namespace pathlab {
 
 class FrameRate {
 public:
@@ -31,4 +31,4 @@ private:
     std::deque<double> recent_;
 };
 
-} // namespace pathlab::viewer
+} // namespace pathlab

@@ -1,0 +1,58 @@
+#pragma once
+/// The renderer's side of a PathContext: what a lab must not reach.
+
+#include "pathlab/camera_packet.h"
+#include "pathlab/path_context.h"
+#include "pathlab/ray_counters.h"
+#include "pathlab/ray_log.h"
+
+#include <cstdint>
+
+// Lab files are compiled with PATHLAB_IMPL (student or solution): they see lab.h and nothing of
+// the renderer's side.
+#ifdef PATHLAB_IMPL
+#error "pathlab/path_driver.h is the renderer's side of PathContext: a lab includes pathlab/lab.h only"
+#endif
+
+namespace pathlab {
+
+/// Owns the PathContext a lab's pathTrace receives and does for the renderer what the student
+/// API leaves out: restarting each sample's random numbers, handing over a camera ray already
+/// traced in a packet, counting and recording rays. (pbrt keeps its pixel loop beside the one
+/// function an integrator writes in the same way.)
+class PathDriver {
+public:
+    PathDriver(const RenderScene& scene, const LabParameters& parameters)
+        : ctx_(scene, parameters) {}
+
+    /// What pathTrace is given.
+    PathContext& context() { return ctx_; }
+
+    /// The random numbers of one sample of one pixel, the same wherever and whenever it is
+    /// rendered.
+    static Sampler samplerFor(uint64_t seed, uint64_t pixelIndex, uint64_t sampleIndex);
+    /// Restarts the context's random numbers for one sample of one pixel.
+    void startSample(uint64_t seed, uint64_t pixelIndex, uint64_t sampleIndex) {
+        restoreSampler(samplerFor(seed, pixelIndex, sampleIndex));
+    }
+    /// The context's random numbers where they are now, to take up again with restoreSampler.
+    Sampler savedSampler() const { return ctx_.sampler; }
+    void restoreSampler(const Sampler& saved) { ctx_.sampler.rng_ = saved.rng_; }
+
+    /// Hands the next trace() the hit of the camera ray in `lane` of a traced packet: the
+    /// renderer traces camera rays in packets, and a lab's first trace() is that ray. (Any
+    /// other ray is traced as usual.)
+    void primeCameraHit(const CameraPacket* packet, int lane) {
+        ctx_.packet_ = packet;
+        ctx_.lane_ = lane;
+    }
+    /// Also appends every ray traced from now on to `log` (null: stop recording).
+    void recordRaysInto(RayLog* log) { ctx_.log_ = log; }
+    /// Rays traced through the context so far.
+    RayCounters rayCounters() const { return {ctx_.closestHitRays_, ctx_.shadowRays_}; }
+
+private:
+    PathContext ctx_;
+};
+
+} // namespace pathlab

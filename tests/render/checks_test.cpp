@@ -1,0 +1,152 @@
+// The checks where a lab's bugs first show (pathlab/check.h): a helper given a missed hit, a ray
+// that is not unit length, and the report of the first non-finite sample of a render.
+#include "catch.h"
+#include "test_support.h"
+
+#include "pathlab/check.h"
+#include "pathlab/path_driver.h"
+#include "pathlab/renderer.h"
+#include "pathlab/scattering.h"
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+
+using namespace pathlab;
+
+namespace {
+
+constexpr int Size = 24;
+constexpr uint64_t Seed = 11;
+
+/// Renders `spp` samples per pixel of the VI2 box at Size² with `pathTrace`, on two threads (so
+/// tiles finish in no fixed order).
+Renderer& renderWith(PathTraceFunction pathTrace, int spp, AccumulationBuffer& buffer) {
+    static const std::string scene = test::modelPath("cornell_box_VI2_Specular.ecs");
+    static const char* argv[] = {"viewer", "-c", scene.c_str()};
+    static const RenderScene renderScene(loadScene(parseRenderOptions(3, argv)));
+    static Renderer renderer(renderScene, 2);
+    renderer.resetCounts();
+    const Camera camera(*renderScene.scene().camera, Size, Size);
+    renderer.renderPass(buffer, camera, pathTrace, LabParameters(), Seed, spp);
+    return renderer;
+}
+
+bool mentions(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+std::string checkMessage(PathTraceFunction pathTrace) {
+    AccumulationBuffer buffer(Size, Size);
+    try {
+        renderWith(pathTrace, 1, buffer);
+    } catch (const CheckFailure& failure) {
+        return failure.what();
+    }
+    return "no check failed";
+}
+
+Color bounceOffMissedHit(const Ray&, int, PathContext& ctx) {
+    return Color(diffuseRay(Hit(), ctx.sampler.get2D()).direction.x);
+}
+Color mirrorOffMissedHit(const Ray& ray, int, PathContext&) {
+    return Color(mirrorRay(ray, Hit()).direction.x);
+}
+Color lightAtMissedHit(const Ray&, int, PathContext& ctx) { return ctx.directLight(Hit()); }
+Color traceAndEmit(const Ray& ray, int, PathContext& ctx) { return ctx.trace(ray).emitted; }
+Color traceLongRay(const Ray& ray, int, PathContext& ctx) {
+    return ctx.trace({ray.origin, ray.direction * 2.0f, ray.kind}).emitted;
+}
+
+/// NaN for the samples whose first random number after the pixel jitter is below 1%, after one
+/// bounce (two rays traced); the scene's radiance otherwise.
+constexpr float NanFraction = 0.01f;
+Color nanNowAndThen(const Ray& ray, int, PathContext& ctx) {
+    const Hit hit = ctx.trace(ray);
+    if (ctx.sampler.get1D() >= NanFraction) return hit.emitted;
+    if (hit) ctx.trace(diffuseRay(hit, ctx.sampler.get2D()));
+    return Color(std::numeric_limits<float>::quiet_NaN(), 1.0f, 0.0f);
+}
+
+} // namespace
+
+TEST_CASE("the bounce helpers and directLight refuse a missed hit, naming themselves",
+          "[render][checks]") {
+    const std::string diffuse = checkMessage(bounceOffMissedHit);
+    INFO(diffuse);
+    CHECK(mentions(diffuse, "check failed: hit.found"));
+    CHECK(mentions(diffuse, "diffuseRay(hit, u) needs a surface"));
+    CHECK(mentions(diffuse, "scattering.cpp:"));
+    CHECK(mentions(checkMessage(mirrorOffMissedHit), "mirrorRay(ray, hit) needs a surface"));
+    CHECK(mentions(checkMessage(lightAtMissedHit), "ctx.directLight(hit) needs a surface"));
+}
+
+TEST_CASE("ctx.trace refuses a direction that is not unit length", "[render][checks]") {
+    const std::string message = checkMessage(traceLongRay);
+    INFO(message);
+    CHECK(mentions(message, "unit-length ray.direction"));
+    CHECK(mentions(message, "path_context.cpp:"));
+}
+
+TEST_CASE("the first non-finite sample is reported by sample index and pixel, whatever the "
+          "order tiles ran in", "[render][checks]") {
+    // The expectation, found independently of the renderer: the same random numbers, drawn as
+    // the renderer draws them (the jitter's two, then the lab's first), scanned in order.
+    std::optional<NonfiniteSample> expected;
+    int nanPixels = 0;
+    const int spp = 4;
+    for (int y = 0; y < Size; ++y)
+        for (int x = 0; x < Size; ++x) {
+            bool pixelHasNan = false;
+            for (int s = 0; s < spp; ++s) {
+                Sampler sampler = PathDriver::samplerFor(Seed, static_cast<uint64_t>(y * Size + x),
+                                                         static_cast<uint64_t>(s));
+                sampler.get2D();
+                if (sampler.get1D() >= NanFraction) continue;
+                pixelHasNan = true;
+                const NonfiniteSample sample{x, y, static_cast<uint64_t>(s), 0, Color()};
+                if (!expected || sample.before(*expected)) expected = sample;
+            }
+            nanPixels += pixelHasNan;
+        }
+    REQUIRE(expected); // 2304 samples at 1%: none would be a 1e-10 chance
+
+    AccumulationBuffer buffer(Size, Size);
+    const Renderer& renderer = renderWith(nanNowAndThen, spp, buffer);
+    REQUIRE(renderer.firstNonfinite());
+    const NonfiniteSample& first = *renderer.firstNonfinite();
+    CHECK(first.x == expected->x);
+    CHECK(first.y == expected->y);
+    CHECK(first.sampleIndex == expected->sampleIndex);
+    CHECK(std::isnan(first.radiance.r));
+    CHECK(first.radiance.g == 1.0f);
+    CHECK(buffer.summary().nonfinitePixels == nanPixels);
+
+    // The line the viewer prints names all of it.
+    RenderStats stats = renderStats({"box", Lab::Roulette, Implementation::Student, {}, Seed}, buffer,
+                                    2, 1.0, renderer.rayCounters(), renderer.firstNonfinite());
+    const std::string warning = stats.nonfiniteWarning();
+    INFO(warning);
+    CHECK(mentions(warning, std::to_string(nanPixels) + " pixel(s)"));
+    CHECK(mentions(warning, "pixel (" + std::to_string(expected->x) + ", " +
+                                                  std::to_string(expected->y) + "), sample " +
+                                                  std::to_string(expected->sampleIndex)));
+    CHECK(mentions(warning, "lab roulette (student)"));
+
+    // And --stats keeps it, its NaN as text.
+    const std::string file = test::temporaryFolder("checks") + "/stats.json";
+    writeRenderStats(file, stats);
+    const RenderStats read = readRenderStats(file);
+    REQUIRE(read.firstNonfinite);
+    CHECK(read.firstNonfinite->x == first.x);
+    CHECK(read.firstNonfinite->sampleIndex == first.sampleIndex);
+    CHECK(read.firstNonfinite->raysTraced == first.raysTraced);
+    CHECK(std::isnan(read.firstNonfinite->radiance.r));
+}
+
+TEST_CASE("a render whose samples are all finite reports none", "[render][checks]") {
+    AccumulationBuffer buffer(Size, Size);
+    const Renderer& renderer = renderWith(traceAndEmit, 2, buffer);
+    CHECK_FALSE(renderer.firstNonfinite());
+}
