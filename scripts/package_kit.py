@@ -39,6 +39,7 @@ STUDENT_EXCLUDED = (
     "tests/bench/",
     "tests/viewer/",
     "tests/platforms/",
+    "tests/docs/",
     "grader/hidden_scenes/",
     "grader/slurm/",
     "apps/bench/",
