@@ -26,6 +26,7 @@ if [ -d "$kit/solutions" ]; then
     apt_packages+=(
         git                             # the grader reads submissions that are git repositories
         clang libc++-dev libc++abi-dev  # ctest -L platforms: the kit with clang and libc++
+        clang-format                    # ctest format: the code's layout
         debootstrap                     # ctest -L platforms: the kit on Debian 13, in its own root
     )
     # ctest grader.pages: the grader's pages in a headless browser. Ubuntu has Chromium only as a

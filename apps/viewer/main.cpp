@@ -6,6 +6,7 @@
 #include "pathlab/render_options.h"
 #include "pathlab/render_scene.h"
 #include "viewer_window.h"
+#include "window_options.h"
 
 #include <cstdio>
 #include <exception>
@@ -14,13 +15,14 @@
 namespace {
 
 using namespace pathlab;
+using pathlab::viewer::WindowOptions;
 
 /// Checks output paths before any rendering, so a typo costs nothing and leaves nothing behind.
-void checkOutputs(const RenderOptions& options) {
+void checkOutputs(const RenderOptions& options, const WindowOptions& window) {
     if (!options.outputImage.empty()) checkImageOutputPath(options.outputImage, "-o");
-    if (!options.screenshot.empty()) checkImageOutputPath(options.screenshot, "--screenshot");
-    if (!options.windowCapture.empty())
-        checkImageOutputPath(options.windowCapture, "--capture-window");
+    if (!window.screenshot.empty()) checkImageOutputPath(window.screenshot, "--screenshot");
+    if (!window.windowCapture.empty())
+        checkImageOutputPath(window.windowCapture, "--capture-window");
     if (!options.statsFile.empty()) {
         namespace fs = std::filesystem;
         fs::path folder = fs::path(options.statsFile).parent_path();
@@ -64,16 +66,21 @@ int renderToFile(const RenderOptions& options) {
 
 int main(int argc, char** argv) {
     try {
-        const RenderOptions options = parseRenderOptions(argc, argv);
+        WindowOptions window;
+        const RenderOptions options =
+            parseRenderOptions(argc, argv, viewer::windowOptionReaders(window));
+        viewer::completeWindowOptions(window);
         if (options.help) {
-            std::fputs(renderOptionsHelp(), stdout);
+            std::printf("usage: viewer -c SCENE.ecs [options]\n\n%s%s"
+                        "Single-dash spellings (-vp, -size, ...) work too, as in .ecs files.\n",
+                        renderOptionsHelp().c_str(), viewer::windowOptionsHelp());
             return 0;
         }
         if (options.objFiles.empty())
             throw InputError("no scene given: use -c FILE.ecs or -i FILE.obj (viewer --help)");
-        checkOutputs(options);
+        checkOutputs(options, window);
         if (!options.outputImage.empty()) return renderToFile(options);
-        return runViewerWindow(options);
+        return runViewerWindow(options, window);
     } catch (const InputError& error) {
         std::fprintf(stderr, "viewer: %s\n", error.what());
         return 2;

@@ -101,20 +101,22 @@ std::string helpText() {
 
 class ViewerWindow {
 public:
-    ViewerWindow(const RenderOptions& options, GLFWwindow* window, const RenderScene& scene)
-        : options_(options), window_(window) {
+    ViewerWindow(const RenderOptions& options, const WindowOptions& windowOptions,
+                 GLFWwindow* window, const RenderScene& scene)
+        : options_(options), windowOptions_(windowOptions), window_(window) {
         settings_.lab = options.lab;
         settings_.implementation = options.implementation;
         settings_.parameters = options.parameters;
         settings_.camera = scene.scene().camera.value_or(scene.scene().framingCamera());
         glfwGetFramebufferSize(window, &settings_.width, &settings_.height);
-        settings_.sppPerFrame = options.sppPerFrame;
+        settings_.sppPerFrame = windowOptions.sppPerFrame;
         settings_.seed = options.seed;
-        if (!options.referenceImage.empty()) reference_ = readImage(options.referenceImage);
+        if (!windowOptions.referenceImage.empty())
+            reference_ = readImage(windowOptions.referenceImage);
         std::function<void(const Frame&)> print;
-        if (options.printFrameRate) print = printFrameLine;
+        if (windowOptions.printFrameRate) print = printFrameLine;
         renderer_ = std::make_unique<ProgressiveRenderer>(scene, options.threads, settings_,
-                                                          print, options.frames);
+                                                          print, windowOptions.frames);
         glGenTextures(1, &texture_);
     }
 
@@ -247,8 +249,8 @@ private:
     void onNewFrame() {
         const ViewSettings& s = frame_.settings;
         uploadImage();
-        if (options_.frames > 0 && frame_.number >= options_.frames && s == settings_) {
-            if (!options_.screenshot.empty()) screenshot(options_.screenshot);
+        if (windowOptions_.frames > 0 && frame_.number >= windowOptions_.frames && s == settings_) {
+            if (!windowOptions_.screenshot.empty()) screenshot(windowOptions_.screenshot);
             finishing_ = true; // the next draw captures the window if asked, then the loop ends
         }
     }
@@ -298,7 +300,7 @@ private:
         }
         drawPanel();
         if (finishing_) {
-            if (!options_.windowCapture.empty()) captureWindow(width, height);
+            if (!windowOptions_.windowCapture.empty()) captureWindow(width, height);
             done_ = true;
         }
         glfwSwapBuffers(window_);
@@ -313,8 +315,8 @@ private:
         for (int y = 0; y < height; ++y) // OpenGL's rows start at the bottom
             std::copy_n(&bottomUp[(height - 1 - y) * row], row, &rgb[y * row]);
         try {
-            writeDisplayImage(options_.windowCapture, width, height, rgb);
-            std::printf("window capture %s\n", options_.windowCapture.c_str());
+            writeDisplayImage(windowOptions_.windowCapture, width, height, rgb);
+            std::printf("window capture %s\n", windowOptions_.windowCapture.c_str());
         } catch (const InputError& error) {
             std::fprintf(stderr, "viewer: %s\n", error.what());
             status_ = 2;
@@ -399,6 +401,7 @@ private:
     }
 
     const RenderOptions& options_;
+    const WindowOptions& windowOptions_;
     GLFWwindow* window_;
     ViewSettings settings_;
     std::unique_ptr<ProgressiveRenderer> renderer_;
@@ -443,7 +446,8 @@ int noDisplay(const std::string& why) {
 
 } // namespace pathlab::viewer
 
-int runViewerWindow(const pathlab::RenderOptions& options) {
+int runViewerWindow(const pathlab::RenderOptions& options,
+                    const pathlab::viewer::WindowOptions& windowOptions) {
     using namespace pathlab::viewer;
 #if defined(__linux__) || defined(__FreeBSD__)
     // X11 or Wayland: with neither variable set there is no screen to open a window on, and
@@ -469,7 +473,7 @@ int runViewerWindow(const pathlab::RenderOptions& options) {
     glfwMakeContextCurrent(session.window);
     glfwSwapInterval(0);
 
-    ViewerWindow viewer(options, session.window, scene);
+    ViewerWindow viewer(options, windowOptions, session.window, scene);
     glfwSetWindowUserPointer(session.window, &viewer);
     glfwSetKeyCallback(session.window, [](GLFWwindow* w, int key, int, int action, int mods) {
         windowOf(w)->onKey(key, action, mods);

@@ -2,6 +2,7 @@
 
 #include "pathlab/input_error.h"
 #include "pathlab/obj_loader.h"
+#include "pathlab/option_reader.h"
 #include "pathlab/parse_number.h"
 #include "pathlab/scene_script.h"
 
@@ -18,75 +19,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Walks the tokens, expanding -c files in place, and reports errors where a token came from.
-class OptionReader {
-public:
-    explicit OptionReader(std::vector<Token> tokens) : tokens_(std::move(tokens)) {}
-
-    bool done() const { return next_ >= tokens_.size(); }
-    const Token& take() { return tokens_[next_++]; }
-
-    /// Inserts a scene script's tokens right after the -c that named it.
-    void includeScript(const std::string& path, int depth) {
-        if (depth > 8) fail(current(), "scene scripts include each other more than 8 deep");
-        std::vector<Token> script = readSceneScript(path);
-        tokens_.insert(tokens_.begin() + static_cast<std::ptrdiff_t>(next_), script.begin(),
-                       script.end());
-    }
-
-    /// The value after the current option, or an error naming the option.
-    const Token& value(const Token& option, const char* what) {
-        // In a scene script an option's values sit on its line, so a short one is caught there.
-        const bool missing = done() || (!option.file.empty() &&
-                                        (tokens_[next_].line != option.line ||
-                                         tokens_[next_].file != option.file));
-        if (missing)
-            fail(option, "option " + option.text + " needs " + what);
-        return take();
-    }
-
-    float number(const Token& option, const char* what = "a number") {
-        const Token& t = value(option, what);
-        const std::optional<float> v = parseFloat(t.text);
-        if (!v) fail(option, "option " + option.text + " expects " + what + ", got '" + t.text + "'");
-        return *v;
-    }
-
-    long long integer(const Token& option, const char* what = "an integer") {
-        const Token& t = value(option, what);
-        long long v = 0;
-        const char* end = t.text.data() + t.text.size();
-        auto [ptr, ec] = std::from_chars(t.text.data(), end, v);
-        if (ec != std::errc() || ptr != end)
-            fail(option, "option " + option.text + " expects " + what + ", got '" + t.text + "'");
-        return v;
-    }
-
-    Vec3 vec3(const Token& option) {
-        const float x = number(option, "three numbers x y z");
-        const float y = number(option, "three numbers x y z");
-        const float z = number(option, "three numbers x y z");
-        return {x, y, z};
-    }
-
-    /// A path given after `option`: relative to the scene script that gave it, or as typed.
-    std::string path(const Token& option) {
-        const Token& t = value(option, "a file name");
-        if (t.file.empty() || fs::path(t.text).is_absolute()) return t.text;
-        return (fs::path(t.file).parent_path() / t.text).lexically_normal().string();
-    }
-
-    [[noreturn]] static void fail(const Token& where, const std::string& message) {
-        if (where.file.empty()) throw InputError(message);
-        throw inputErrorAt(where.file, where.line, message);
-    }
-
-    const Token& current() const { return tokens_[next_ - 1]; }
-
-private:
-    std::vector<Token> tokens_;
-    size_t next_ = 0;
-};
+/// The labs' names, in order, between `separator`s.
+std::string labNames(const char* separator) {
+    std::string names;
+    for (Lab lab : AllLabs) names += (names.empty() ? "" : separator) + std::string(labName(lab));
+    return names;
+}
 
 /// "--max-depth", "-max-depth" -> "max-depth": Embree's scene scripts use one dash, GNU style two.
 std::string optionName(const std::string& text) {
@@ -95,17 +33,9 @@ std::string optionName(const std::string& text) {
     return {};
 }
 
-int positive(OptionReader& in, const Token& option, const char* what, long long max) {
-    const long long v = in.integer(option, what);
-    if (v < 1 || v > max)
-        OptionReader::fail(option, "option " + option.text + " expects " + what + " (1.." +
-                                       std::to_string(max) + "), got " + std::to_string(v));
-    return static_cast<int>(v);
-}
-
 } // namespace
 
-RenderOptions parseRenderOptions(int argc, const char* const* argv) {
+RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraOptions& extra) {
     RenderOptions o;
     OptionReader in(commandLineTokens(argc, argv));
     int scriptDepth = 0;
@@ -146,16 +76,16 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv) {
          }},
         {"size",
          [&](const Token& t) {
-             o.width = positive(in, t, "a width in pixels", 16384);
-             o.height = positive(in, t, "a height in pixels", 16384);
+             o.width = in.positive(t, "a width in pixels", 16384);
+             o.height = in.positive(t, "a height in pixels", 16384);
          }},
         {"lab",
          [&](const Token& t) {
              const Token& name = in.value(t, "a lab name");
              const std::optional<Lab> lab = labFromName(name.text);
              if (!lab)
-                 OptionReader::fail(t, "option --lab expects branching, uniform, importance or "
-                                       "roulette, got '" + name.text + "'");
+                 OptionReader::fail(t, "option --lab expects one of " + labNames(", ") +
+                                           ", got '" + name.text + "'");
              o.lab = *lab;
          }},
         {"solution", [&](const Token&) { o.implementation = Implementation::Solution; }},
@@ -183,28 +113,25 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv) {
              if (s < 0) OptionReader::fail(t, "option " + t.text + " expects a seed of 0 or more");
              o.seed = static_cast<uint64_t>(s);
          }},
-        {"threads", [&](const Token& t) { o.threads = positive(in, t, "a thread count", 1024); }},
+        {"threads", [&](const Token& t) { o.threads = in.positive(t, "a thread count", 1024); }},
         {"o", [&](const Token& t) { o.outputImage = in.value(t, "an image file name").text; }},
-        {"spp", [&](const Token& t) { o.spp = positive(in, t, "samples per pixel", 1 << 24); }},
+        {"spp", [&](const Token& t) { o.spp = in.positive(t, "samples per pixel", 1 << 24); }},
         {"stats", [&](const Token& t) { o.statsFile = in.value(t, "a .json file name").text; }},
-        {"seeds", [&](const Token& t) { o.seedCount = positive(in, t, "a number of seeds", 100000); }},
-        {"spp-per-frame",
-         [&](const Token& t) { o.sppPerFrame = positive(in, t, "samples per pixel", 4096); }},
-        {"print-frame-rate", [&](const Token&) { o.printFrameRate = true; }},
-        {"frames", [&](const Token& t) { o.frames = positive(in, t, "a frame count", 1 << 24); }},
-        {"screenshot",
-         [&](const Token& t) { o.screenshot = in.value(t, "an image file name").text; }},
-        {"capture-window",
-         [&](const Token& t) { o.windowCapture = in.value(t, "a .png file name").text; }},
-        {"reference",
-         [&](const Token& t) { o.referenceImage = in.value(t, "an image file name").text; }},
+        {"seeds", [&](const Token& t) { o.seedCount = in.positive(t, "a number of seeds", 100000); }},
         {"help", [&](const Token&) { o.help = true; }},
         {"h", [&](const Token&) { o.help = true; }},
     };
 
     while (!in.done()) {
         const Token& token = in.take();
-        const auto handler = handlers.find(optionName(token.text));
+        const std::string name = optionName(token.text);
+        const auto handler = handlers.find(name);
+        const auto extraHandler = extra.find(name);
+        if (handler == handlers.end() && extraHandler != extra.end()) {
+            const Token option = token;
+            extraHandler->second(in, option);
+            continue;
+        }
         if (handler == handlers.end()) {
             const std::string what = optionName(token.text).empty() ? "unexpected argument '"
                                                                     : "unknown option '";
@@ -213,7 +140,6 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv) {
         const Token option = token; // `token` may move when a -c script is inserted
         handler->second(option);
     }
-    if ((!o.screenshot.empty() || !o.windowCapture.empty()) && o.frames == 0) o.frames = 16;
     return o;
 }
 
@@ -227,10 +153,8 @@ Scene loadScene(const RenderOptions& options) {
     return scene;
 }
 
-const char* renderOptionsHelp() {
-    return R"(usage: viewer -c SCENE.ecs [options]
-
-scene
+std::string renderOptionsHelp() {
+    return std::string(R"(scene
   -c FILE.ecs            read options from an Embree scene script (paths relative to it)
   -i FILE.obj            add an OBJ mesh (and the .mtl files it names)
   --vp X Y Z --vi X Y Z --vu X Y Z --fov DEG
@@ -239,8 +163,9 @@ scene
                          a point light at (X,Y,Z) with intensity (R,G,B) in W/sr
   --size W H             image size in pixels (default 512 512)
 estimator
-  --lab NAME             branching | uniform | importance | roulette (default branching)
-  --solution             run the reference solution instead of your labs/ code
+)") + "  --lab NAME             " + labNames(" | ") + " (default " +
+           std::string(labName(AllLabs[0])) + ")\n" +
+           R"(  --solution             run the reference solution instead of your labs/ code
   --max-depth N          labs 1-3: bounces after the primary hit (default 3)
   --continue-prob P      lab 4: Russian-roulette continuation probability, 0<P<1 (default 0.1)
   --seed S               random seed (default 0); the image depends only on it
@@ -250,21 +175,11 @@ headless
                          radiance; .png: sRGB, clamped), no window
   --spp N                samples per pixel for -o (default 16)
   --stats FILE.json      write what was measured: time, samples/s, frame rate, rays, mean
-                         radiance, noise, efficiency (with the window: after --frames or at
-                         quit, the panel's figures)
+                         radiance, noise, efficiency, the first NaN or infinite sample (with
+                         the window: after --frames or at quit, the panel's figures)
   --seeds K              render K independent images, for seeds S to S+K-1, each to FILE
                          and FILE.json with -SEED before the extension (one process, one
                          scene load: how the grader renders its seeds)
-window
-  --spp-per-frame N      samples per pixel added each frame (default 1)
-  --print-frame-rate     print the panel's figures every frame: median frame rate, spp,
-                         rays/s, noise, efficiency
-  --frames N --screenshot FILE
-                         run N frames, save the image, quit
-  --capture-window FILE.png
-                         with --frames: also save the window as shown, panel included
-  --reference FILE.exr   image for the difference view
-Single-dash spellings (-vp, -size, ...) work too, as in .ecs files.
 )";
 }
 

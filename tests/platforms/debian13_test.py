@@ -64,6 +64,8 @@ LEFT_OUT = {
                     "system's code, which the host's make test checks",
     "grader.slow": "label slow: 200 gradings, not part of `make test` anywhere",
     "platforms.debian13": "this test",
+    "format": "the code's layout, checked with Debian 12's clang-format 14 (Debian 13's 19 lays "
+              "code out otherwise, and the test skips with it)",
     "platforms.clang_libcxx": "the kit built again with clang and libc++, which the host's "
                               "make test runs; 5 minutes more here",
 }

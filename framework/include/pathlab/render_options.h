@@ -4,9 +4,12 @@
 #include "pathlab/camera.h"
 #include "pathlab/lab_parameters.h"
 #include "pathlab/lab_registry.h"
+#include "pathlab/option_reader.h"
 #include "pathlab/scene.h"
 
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,23 +39,19 @@ struct RenderOptions {
     std::string statsFile;         ///< --stats
     int seedCount = 1;             ///< --seeds: that many images, for seeds seed, seed+1, ...
 
-    // Interactive window
-    int sppPerFrame = 1;           ///< --spp-per-frame
-    bool printFrameRate = false;   ///< --print-frame-rate
-    int frames = 0;                ///< --frames: quit after this many (0 = run until closed)
-    std::string screenshot;        ///< --screenshot: save after --frames, then quit
-    std::string windowCapture;     ///< --capture-window: the window as shown, panel included
-    std::string referenceImage;    ///< --reference: image for the difference view
-
     bool help = false;             ///< --help
 };
 
+/// Options a program reads beside these (the viewer's window options, apps/viewer): by name
+/// without dashes, what reads the option's values.
+using ExtraOptions = std::map<std::string, std::function<void(OptionReader& in, const Token& option)>>;
+
 /// Parses the command line; -c files are read in place, as if their tokens had been typed there.
 /// Throws InputError naming the option (and file:line for .ecs files) on anything it cannot use.
-RenderOptions parseRenderOptions(int argc, const char* const* argv);
+RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraOptions& extra = {});
 
-/// The option summary printed by --help.
-const char* renderOptionsHelp();
+/// The summary of these options, for --help.
+std::string renderOptionsHelp();
 
 /// Loads the scene files the options name and adds their lights and camera.
 Scene loadScene(const RenderOptions& options);
