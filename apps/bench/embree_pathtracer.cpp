@@ -1,6 +1,6 @@
 #include "embree_pathtracer.h"
 
-#include "child_process.h"
+#include "pathlab/child_process.h"
 
 #include <algorithm>
 #include <cctype>
@@ -26,10 +26,10 @@ std::vector<std::string> commandLine(const PathtracerJob& job, int spp) {
     return argv;
 }
 
-ChildResult runOrThrow(const std::vector<std::string>& argv) {
-    ChildResult result = runChild(argv);
-    if (result.exitStatus != 0)
-        throw std::runtime_error(argv[0] + " failed (status " + std::to_string(result.exitStatus) +
+ChildRun runOrThrow(const std::vector<std::string>& argv) {
+    ChildRun result = runChild(argv);
+    if (result.exitCode != 0)
+        throw std::runtime_error(argv[0] + " failed (status " + std::to_string(result.exitCode) +
                                  "): " + result.output.substr(0, 400));
     return result;
 }
@@ -67,7 +67,7 @@ double pathtracerSamplesPerSecond(const PathtracerJob& job, int spp, int frames)
     for (const std::string& a : {std::string("--benchmark"), std::string("1"),
                                  std::to_string(frames), std::string("--legacy")})
         argv.push_back(a);
-    const ChildResult result = runOrThrow(argv);
+    const ChildRun result = runOrThrow(argv);
     // "BENCHMARK_RENDER_MAX 3.7026": frames per second of the fastest frame.
     std::istringstream lines(result.output);
     for (std::string line; std::getline(lines, line);) {

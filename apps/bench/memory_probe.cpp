@@ -1,8 +1,8 @@
 #include "memory_probe.h"
 
-#include "child_process.h"
 #include "pathlab/progressive_renderer.h"
 
+#include "pathlab/child_process.h"
 #include "pathlab/false_colour.h"
 #include "pathlab/render_options.h"
 
@@ -53,11 +53,11 @@ MemoryFigures measurePeakMemory(const std::string& self, const BenchScene& scene
         argv.push_back("--threads");
         argv.push_back(std::to_string(options.threads));
     }
-    const ChildResult child = runChild(argv);
+    const ChildRun child = runChild(argv);
     // The probe reports its own high-water mark: getrusage's figure for a child also counts
     // what the parent held when the child was spawned (Linux records the pre-exec memory).
     const size_t at = child.output.find(PeakKey);
-    if (child.exitStatus != 0 || at == std::string::npos) {
+    if (child.exitCode != 0 || at == std::string::npos) {
         m.note = "the probe failed: " + child.output.substr(0, 400);
         return m;
     }

@@ -1,11 +1,11 @@
 #include "peer_comparison.h"
 
 #include "bench_scene.h"
-#include "child_process.h"
 #include "embree_pathtracer.h"
 #include "render_timing.h"
 
 #include "pathlab/accumulation_buffer.h"
+#include "pathlab/child_process.h"
 #include "pathlab/lab_tables.h"
 #include "pathlab/renderer.h"
 

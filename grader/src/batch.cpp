@@ -19,24 +19,20 @@
 #include "submission_time.h"
 #include "time_limit.h"
 
+#include "pathlab/child_process.h"
 #include "pathlab/input_error.h"
 #include "pathlab/render_stats.h"
 #include "pathlab/this_process.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <ctime>
-#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sched.h>
-#include <sys/prctl.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 namespace pathlab::grader {
@@ -168,33 +164,17 @@ std::string earlierSetting(const std::string& out, const char* key) {
 
 /// A child grading one submission.
 struct Job {
-    pid_t pid = -1;
+    ChildProcess child;
     Submission submission;
     std::chrono::steady_clock::time_point start;
 };
 
+/// Starts `grader submission` (argv) for `s`, writing what it prints to `log`.
 Job startJob(const std::vector<std::string>& argv, const Submission& s, const std::string& log) {
-    Job job{-1, s, std::chrono::steady_clock::now()};
-    job.pid = ::fork();
-    if (job.pid == 0) {
-        ::prctl(PR_SET_PDEATHSIG, SIGKILL); // a killed batch leaves no grading behind
-        const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-        if (fd >= 0) ::dup2(fd, STDOUT_FILENO), ::dup2(fd, STDERR_FILENO);
-        std::vector<char*> args;
-        for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
-        args.push_back(nullptr);
-        ::execv(args[0], args.data());
-        ::_exit(127);
-    }
-    return job;
-}
-
-/// Waits for a child and returns its wait status.
-int waitFor(pid_t pid) {
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    return status;
+    ChildSetup setup;
+    setup.dieWithParent = true; // a killed batch leaves no grading behind
+    setup.outputFile = log;
+    return {ChildProcess(argv, setup), s, std::chrono::steady_clock::now()};
 }
 
 /// Before anyone is graded: the reference solutions, graded as a submission on every scene (speed
@@ -216,8 +196,8 @@ void runCanary(const std::vector<std::string>& childBase, const std::string& sol
     std::vector<std::string> argv = childBase;
     argv.insert(argv.end(), {solutions, "--out", folder, "--no-speed"});
     const auto start = std::chrono::steady_clock::now();
-    const Job job = startJob(argv, {solutions, "canary"}, folder + "/grader.log");
-    waitFor(job.pid);
+    Job job = startJob(argv, {solutions, "canary"}, folder + "/grader.log");
+    job.child.wait();
     std::ifstream in(folder + "/result.json");
     const nlohmann::json result = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -397,14 +377,13 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
             running.push_back(startJob(argv, s, folder + "/grader.log"));
             log << timestamp() << " start " << s.id << " (" << s.path << ")\n" << std::flush;
         }
-        int status = 0;
-        const pid_t ended = ::waitpid(-1, &status, WNOHANG);
+        // The first job found to have ended, reaped; the others on later turns.
+        const auto job = std::find_if(running.begin(), running.end(), [](Job& j) { return j.child.poll(); });
         const auto now = std::chrono::steady_clock::now();
-        for (Job& job : running)
-            if (job.pid != ended && std::chrono::duration<double>(now - job.start).count() > jobSeconds)
-                ::kill(job.pid, SIGKILL); // reaped below on a later turn
-        const auto job = std::find_if(running.begin(), running.end(), [&](const Job& j) { return j.pid == ended; });
-        if (ended <= 0 || job == running.end()) {
+        for (Job& j : running)
+            if (std::chrono::duration<double>(now - j.start).count() > jobSeconds)
+                j.child.kill(); // reaped on a later turn (nothing if it already has been)
+        if (job == running.end()) {
             ::usleep(50000);
             continue;
         }

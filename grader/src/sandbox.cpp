@@ -139,6 +139,9 @@ int sandboxUserForThisProcess() {
 
 void killProcessesOf(int user) {
     if (user < 0) return;
+    // The one fork outside pathlab/child_process.h: this child runs no program, only kill(2) as
+    // that user, which takes a process of that user. The helper starts programs; it offers no way
+    // to run our own code in a child, where only async-signal-safe calls may be made.
     const pid_t pid = ::fork();
     if (pid == 0) {
         // As that user, "every process I may signal" is exactly that user's processes.

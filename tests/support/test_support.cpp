@@ -3,16 +3,8 @@
 #include "pathlab/lab_tables.h"
 #include "pathlab/this_process.h"
 
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
-#if defined(_WIN32)
-#define popen _popen
-#define pclose _pclose
-#else
-#include <sys/wait.h>
-#endif
 
 namespace pathlab::test {
 
@@ -49,20 +41,8 @@ Estimate estimateOf(const HeadlessResult& result) {
     return e;
 }
 
-ProcessResult runViewer(const std::string& arguments) {
-    const std::string command = std::string(PATHLAB_VIEWER) + " " + arguments + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return {-1, "popen failed"};
-    std::string output;
-    std::array<char, 4096> buffer;
-    for (size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0;)
-        output.append(buffer.data(), n);
-    const int status = pclose(pipe);
-#if defined(_WIN32)
-    return {status, output};
-#else
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), output};
-#endif
+ShellCommandResult runViewer(const std::string& arguments) {
+    return runShellCommand(std::string(PATHLAB_VIEWER) + " " + arguments);
 }
 
 } // namespace pathlab::test

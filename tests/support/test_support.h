@@ -2,6 +2,7 @@
 /// Shared by the tests: where the models are, rendering in-process, running the viewer.
 
 #include "pathlab/headless_render.h"
+#include "pathlab/shell_command.h"
 
 #include <string>
 #include <vector>
@@ -33,10 +34,6 @@ Estimate estimateOf(const HeadlessResult& result);
 
 /// Runs the built viewer with `arguments` (a shell-quoted string); returns its exit status and
 /// what it printed on stdout and stderr together.
-struct ProcessResult {
-    int exitStatus;
-    std::string output;
-};
-ProcessResult runViewer(const std::string& arguments);
+ShellCommandResult runViewer(const std::string& arguments);
 
 } // namespace pathlab::test

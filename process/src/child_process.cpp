@@ -1,0 +1,271 @@
+// POSIX: Linux and macOS. Pinning to cores and dying with the parent are Linux only.
+#include "pathlab/child_process.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <fcntl.h>
+#include <filesystem>
+#include <grp.h>
+#include <poll.h>
+#include <sstream>
+#include <utility>
+#if defined(__linux__)
+#include <sched.h>
+#include <sys/prctl.h>
+#endif
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace pathlab {
+
+namespace {
+
+/// A pipe whose ends close in the children it is not handed to. Linux sets that atomically
+/// (another thread may fork in between); macOS has no pipe2.
+bool openPipe(int ends[2]) {
+#if defined(__linux__)
+    return ::pipe2(ends, O_CLOEXEC) == 0;
+#else
+    if (::pipe(ends) != 0) return false;
+    ::fcntl(ends[0], F_SETFD, FD_CLOEXEC);
+    ::fcntl(ends[1], F_SETFD, FD_CLOEXEC);
+    return true;
+#endif
+}
+
+void closeIfOpen(int& fd) {
+    if (fd >= 0) ::close(fd);
+    fd = -1;
+}
+
+/// Everything the child needs between fork and exec, made before the fork: the parent may have
+/// other threads, one of which may hold the allocator's lock when it forks, so the child only
+/// makes system calls (no allocation, no locks) until exec replaces it.
+struct ChildPlan {
+    std::vector<char*> argv;
+    std::vector<std::pair<int, rlimit>> limits;
+#if defined(__linux__)
+    bool pinned = false;
+    cpu_set_t cpus;
+#endif
+    bool ownGroup = false;
+    bool dieWithParent = false;
+    int user = -1;
+    int outputFd = -1;  ///< becomes its stdout and stderr (-1: ours)
+    int collectFd = -1; ///< becomes its descriptor 3 (-1: none)
+};
+
+ChildPlan planFor(const std::vector<std::string>& argv, const ChildSetup& setup) {
+    ChildPlan plan;
+    for (const std::string& a : argv) plan.argv.push_back(const_cast<char*>(a.c_str()));
+    plan.argv.push_back(nullptr);
+    const auto limit = [&](int resource, long long value) {
+        const auto v = static_cast<rlim_t>(value);
+        plan.limits.push_back({resource, rlimit{v, v}});
+    };
+    const ResourceLimits& l = setup.limits;
+    if (l.addressSpaceBytes > 0) limit(RLIMIT_AS, l.addressSpaceBytes);
+    if (l.cpuSeconds > 0) limit(RLIMIT_CPU, l.cpuSeconds);
+    if (l.fileBytes > 0) limit(RLIMIT_FSIZE, l.fileBytes);
+    if (l.processes > 0) limit(RLIMIT_NPROC, l.processes);
+    if (l.noCoreFiles) limit(RLIMIT_CORE, 0);
+#if defined(__linux__)
+    CPU_ZERO(&plan.cpus);
+    for (int cpu : setup.cpus) CPU_SET(cpu, &plan.cpus);
+    plan.pinned = !setup.cpus.empty();
+#endif
+    plan.ownGroup = setup.ownProcessGroup;
+    plan.dieWithParent = setup.dieWithParent;
+    plan.user = setup.user;
+    return plan;
+}
+
+/// In the child, between fork and exec: only async-signal-safe calls.
+[[noreturn]] void becomeChild(const ChildPlan& plan) {
+#if defined(__linux__)
+    if (plan.dieWithParent) ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+#endif
+    if (plan.ownGroup) ::setpgid(0, 0);
+    for (const auto& [resource, limit] : plan.limits) ::setrlimit(resource, &limit);
+#if defined(__linux__)
+    if (plan.pinned) ::sched_setaffinity(0, sizeof plan.cpus, &plan.cpus);
+#endif
+    if (plan.user >= 0) {
+        const auto id = static_cast<uid_t>(plan.user);
+        if (::setgroups(0, nullptr) != 0 || ::setgid(id) != 0 || ::setuid(id) != 0) ::_exit(126);
+    }
+    if (plan.outputFd >= 0) {
+        ::dup2(plan.outputFd, STDOUT_FILENO);
+        ::dup2(plan.outputFd, STDERR_FILENO);
+    }
+    if (plan.collectFd >= 0) ::dup2(plan.collectFd, 3); // dup2 clears close-on-exec on the copy
+    ::execv(plan.argv[0], plan.argv.data());
+    ::_exit(127);
+}
+
+/// Appends what is ready on `fd` to `text`, keeping at most `keep` bytes (the last ones when
+/// `keepTail`, else the first, flagging `overflow`). False at end of file.
+bool drain(int fd, std::string& text, size_t keep, bool keepTail, bool& overflow) {
+    char buffer[65536];
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n <= 0) return false;
+    if (keepTail) {
+        text.append(buffer, static_cast<size_t>(n));
+        if (text.size() > keep) text.erase(0, text.size() - keep);
+    } else if (text.size() + static_cast<size_t>(n) > keep) {
+        overflow = true;
+    } else {
+        text.append(buffer, static_cast<size_t>(n));
+    }
+    return true;
+}
+
+} // namespace
+
+ChildProcess::ChildProcess(const std::vector<std::string>& argv, const ChildSetup& setup) {
+    ChildPlan plan = planFor(argv, setup);
+    // Ours are the read ends; the child's ends (or the file it writes to) close here once it
+    // has them.
+    int outputPipe[2] = {-1, -1}, collectPipe[2] = {-1, -1};
+    bool ready = true;
+    if (!setup.outputFile.empty())
+        outputPipe[1] =
+            ::open(setup.outputFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    else
+        ready = openPipe(outputPipe);
+    if (ready && setup.collectPipe) ready = openPipe(collectPipe);
+    plan.outputFd = outputPipe[1];
+    plan.collectFd = collectPipe[1];
+    const pid_t pid = ready ? ::fork() : -1;
+    if (pid == 0) becomeChild(plan);
+    closeIfOpen(outputPipe[1]);
+    closeIfOpen(collectPipe[1]);
+    if (pid < 0) {
+        closeIfOpen(outputPipe[0]);
+        closeIfOpen(collectPipe[0]);
+        return;
+    }
+    // Here too, so that a kill() right after this finds the group.
+    if (setup.ownProcessGroup) ::setpgid(pid, pid);
+    pid_ = pid;
+    output_ = outputPipe[0];
+    collect_ = collectPipe[0];
+    ownGroup_ = setup.ownProcessGroup;
+}
+
+ChildProcess::ChildProcess(ChildProcess&& other) noexcept { swap(other); }
+
+ChildProcess& ChildProcess::operator=(ChildProcess&& other) noexcept {
+    ChildProcess moved(std::move(other));
+    swap(moved);
+    return *this;
+}
+
+ChildProcess::~ChildProcess() {
+    closeIfOpen(output_);
+    closeIfOpen(collect_);
+}
+
+void ChildProcess::swap(ChildProcess& other) noexcept {
+    std::swap(pid_, other.pid_);
+    std::swap(output_, other.output_);
+    std::swap(collect_, other.collect_);
+    std::swap(ownGroup_, other.ownGroup_);
+    std::swap(reaped_, other.reaped_);
+    std::swap(status_, other.status_);
+}
+
+bool ChildProcess::poll() {
+    if (!started()) return true;
+    if (!reaped_) reaped_ = ::waitpid(pid_, &status_, WNOHANG) == pid_;
+    return reaped_;
+}
+
+void ChildProcess::wait() {
+    if (reaped_ || !started()) return;
+    while (::waitpid(pid_, &status_, 0) < 0 && errno == EINTR) {
+    }
+    reaped_ = true;
+}
+
+int ChildProcess::exitCode() const {
+    if (!reaped_) return -1;
+    if (WIFEXITED(status_)) return WEXITSTATUS(status_);
+    return WIFSIGNALED(status_) ? 128 + WTERMSIG(status_) : -1;
+}
+
+void ChildProcess::kill() {
+    if (!started()) return;
+    if (ownGroup_)
+        ::kill(-pid_, SIGKILL);
+    else if (!reaped_) // once reaped, its id may be another process's
+        ::kill(pid_, SIGKILL);
+}
+
+ChildRun runChild(const std::vector<std::string>& argv, const ChildSetup& setup,
+                  const RunLimits& limits) {
+    ChildRun run;
+    const auto start = std::chrono::steady_clock::now();
+    ChildProcess child(argv, setup);
+    if (!child.started()) return run;
+    run.started = true;
+
+    auto elapsed = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    // Read both pipes until both close or time runs out.
+    bool outputOpen = child.outputPipe() >= 0, collectOpen = child.collectPipe() >= 0;
+    bool ignored = false;
+    while (outputOpen || collectOpen) {
+        const double left = limits.wallSeconds - elapsed();
+        if (left <= 0) {
+            run.timedOut = true;
+            child.kill();
+            break;
+        }
+        pollfd fds[2] = {{outputOpen ? child.outputPipe() : -1, POLLIN, 0},
+                         {collectOpen ? child.collectPipe() : -1, POLLIN, 0}};
+        if (::poll(fds, 2, static_cast<int>(std::min(left, 0.25) * 1000) + 1) <= 0) continue;
+        if (fds[0].revents != 0)
+            outputOpen = drain(child.outputPipe(), run.output, limits.outputBytes, true, ignored);
+        if (fds[1].revents != 0)
+            collectOpen = drain(child.collectPipe(), run.collected, limits.collectBytes, false,
+                                run.collectOverflow);
+    }
+    // The pipes closed (or it was killed): wait for the end, still within the limit.
+    while (!child.poll()) {
+        if (elapsed() > limits.wallSeconds) {
+            run.timedOut = true;
+            child.kill();
+            child.wait();
+            break;
+        }
+        ::usleep(2000);
+    }
+    child.kill(); // anything it left behind in its own group
+    run.seconds = elapsed();
+    run.waitStatus = child.waitStatus();
+    run.exitCode = child.exitCode();
+    return run;
+}
+
+std::string findProgram(const std::string& program) {
+    namespace fs = std::filesystem;
+    const auto executable = [](const fs::path& p) {
+        return fs::is_regular_file(p) && ::access(p.c_str(), X_OK) == 0;
+    };
+    if (program.find('/') != std::string::npos) return executable(program) ? program : "";
+    const char* path = std::getenv("PATH");
+    std::istringstream folders(path ? path : "");
+    for (std::string folder; std::getline(folders, folder, ':');) {
+        const fs::path candidate = fs::path(folder.empty() ? "." : folder) / program;
+        if (executable(candidate)) return candidate.string();
+    }
+    return "";
+}
+
+} // namespace pathlab

@@ -1,0 +1,108 @@
+// Starting programs (process/): what the grader, the benchmark and the tests rely on. POSIX only,
+// as the library's child processes are.
+#include "catch.h"
+#include "test_support.h"
+
+#include "pathlab/child_process.h"
+#include "pathlab/shell_command.h"
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+#include <thread>
+#include <vector>
+
+using namespace pathlab;
+
+namespace {
+
+ChildRun shell(const std::string& script, const ChildSetup& setup = {},
+               const RunLimits& limits = {}) {
+    return runChild({"/bin/sh", "-c", script}, setup, limits);
+}
+
+} // namespace
+
+TEST_CASE("a child's output, both streams together, and its exit status", "[process]") {
+    const ChildRun run = shell("echo out; echo err >&2; exit 3");
+    CHECK(run.started);
+    CHECK_FALSE(run.timedOut);
+    CHECK(run.exitCode == 3);
+    CHECK(run.output == "out\nerr\n");
+}
+
+TEST_CASE("a child ended by a signal: 128 + the signal, as a shell says", "[process]") {
+    const ChildRun run = shell("kill -TERM $$");
+    CHECK(run.exitCode == 128 + 15);
+    CHECK(WIFSIGNALED(run.waitStatus));
+}
+
+TEST_CASE("a program that cannot be run exits with 127", "[process]") {
+    const ChildRun run = runChild({"/nonexistent/program"});
+    CHECK(run.started);
+    CHECK(run.exitCode == 127);
+}
+
+TEST_CASE("the time limit kills a child and everything in its process group", "[process]") {
+    const std::string folder = test::temporaryFolder("process-group");
+    ChildSetup setup;
+    setup.ownProcessGroup = true;
+    // The grandchild would write its file after the limit, had it not been killed with its parent.
+    const ChildRun run = shell("(sleep 1; touch " + folder + "/left) & sleep 30", setup, {0.3});
+    CHECK(run.timedOut);
+    CHECK(run.seconds < 5);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    CHECK_FALSE(std::ifstream(folder + "/left"));
+}
+
+TEST_CASE("the last bytes of the output, the first of descriptor 3", "[process]") {
+    ChildSetup setup;
+    setup.collectPipe = true;
+    const ChildRun kept = shell("printf 0123456789; printf abc >&3", setup, {10, 4, 3});
+    CHECK(kept.output == "6789");
+    CHECK(kept.collected == "abc");
+    CHECK_FALSE(kept.collectOverflow);
+    const ChildRun over = shell("printf abcd >&3", setup, {10, 4, 3});
+    CHECK(over.collected.empty());
+    CHECK(over.collectOverflow);
+}
+
+TEST_CASE("resource limits hold in the child", "[process]") {
+    ChildSetup setup;
+    setup.limits.fileBytes = 4096;
+    setup.limits.noCoreFiles = true;
+    CHECK(shell("ulimit -f; ulimit -c", setup).output == "8\n0\n"); // ulimit counts 512-byte blocks
+}
+
+TEST_CASE("output to a file; children started together, reaped as each ends", "[process]") {
+    const std::string folder = test::temporaryFolder("process-file");
+    ChildSetup setup;
+    setup.outputFile = folder + "/log";
+    std::vector<ChildProcess> children;
+    children.emplace_back(std::vector<std::string>{"/bin/sh", "-c", "sleep 30"}, ChildSetup{});
+    children.emplace_back(std::vector<std::string>{"/bin/sh", "-c", "echo logged; exit 4"}, setup);
+    while (!children[1].poll()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    CHECK(children[1].exitCode() == 4);
+    CHECK(children[1].outputPipe() < 0);
+    std::stringstream log;
+    log << std::ifstream(folder + "/log").rdbuf();
+    CHECK(log.str() == "logged\n");
+    CHECK_FALSE(children[0].poll());
+    CHECK(children[0].exitCode() == -1);
+    children[0].kill();
+    children[0].wait();
+    CHECK(children[0].exitCode() == 128 + 9);
+}
+
+TEST_CASE("a program found in PATH", "[process]") {
+    CHECK(findProgram("sh").find("/sh") != std::string::npos);
+    CHECK(findProgram("/bin/sh") == "/bin/sh");
+    CHECK(findProgram("pathlab-no-such-program").empty());
+}
+
+TEST_CASE("a shell command's status and output", "[process]") {
+    const ShellCommandResult result = runShellCommand("echo 'a b'; echo c >&2; exit 2");
+    CHECK(result.exitStatus == 2);
+    CHECK(result.output == "a b\nc\n");
+}
