@@ -33,6 +33,7 @@ STUDENT_EXCLUDED = (
     "tests/grader/batch_test.py",
     "tests/grader/instructor_test.py",
     "tests/grader/pages_test.py",
+    "tests/grader/support.py",
     "tests/estimators/catches_mutants.py",
     "tests/release/",
     "tests/gradescope/",

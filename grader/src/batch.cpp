@@ -126,7 +126,10 @@ std::vector<std::string> sharedOptions(const Arguments& a) {
 /// The most a submission can score under this rubric, as this batch grades (speed or not).
 double maxScoreNow(const Rubric& rubric, bool speed) {
     double max = 0;
-    for (const LabPoints& p : rubric.points) max += p.correctness + p.noise + (speed ? p.speed : 0);
+    for (Lab lab : AllLabs) {
+        const LabPoints& p = rubric.forLab(lab).points;
+        max += p.correctness + p.noise + (speed ? p.speed : 0);
+    }
     return max;
 }
 
@@ -247,7 +250,8 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
     probe.rubric = rubric;
     probe.scratch = scratch;
     probe.threads = a.threads;
-    g.runSeconds = scaledTimeLimit(rubric.secondsPerRun, speedSceneStartUpSeconds(probe, solution),
+    StartUpTimes startUps;
+    g.runSeconds = scaledTimeLimit(rubric.secondsPerRun, speedSceneStartUpSeconds(probe, solution, startUps),
                                    storedStartUpSeconds(a, rubric));
     if (g.runSeconds > rubric.secondsPerRun)
         notes.push_back(timeLimitNote(rubric.secondsPerRun, g.runSeconds));

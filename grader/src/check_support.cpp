@@ -1,14 +1,34 @@
 #include "check_support.h"
 
 #include <algorithm>
-#include <cstdio>
+#include <iomanip>
+#include <locale>
+#include <sstream>
 
 namespace pathlab::grader {
 
-std::string format(const char* pattern, double a, double b, double c, double d) {
-    char text[256];
-    std::snprintf(text, sizeof text, pattern, a, b, c, d);
-    return text;
+namespace {
+
+/// A stream that writes numbers as printf does in the "C" locale, whatever the global one.
+std::ostringstream numberStream() {
+    std::ostringstream out;
+    out.imbue(std::locale::classic());
+    return out;
+}
+
+} // namespace
+
+std::string fixed(double value, int decimals) {
+    std::ostringstream out = numberStream();
+    out << std::fixed << std::setprecision(decimals) << value;
+    return out.str();
+}
+
+// A stream with no floatfield set writes as %g does, with its precision as the digits.
+std::string significant(double value, int digits) {
+    std::ostringstream out = numberStream();
+    out << std::setprecision(digits) << value;
+    return out.str();
 }
 
 ProcessLimits limitsOf(const GraderSetup& setup) {

@@ -1,5 +1,5 @@
 #pragma once
-/// What the three checks of a lab share: each render's limits, number formatting, the median.
+/// What the three checks of a lab share: each render's limits, their numbers in words, the median.
 
 #include "grading.h"
 
@@ -8,8 +8,13 @@
 
 namespace pathlab::grader {
 
-/// printf-style text of up to four numbers, for the checks' sentences.
-std::string format(const char* pattern, double a, double b = 0, double c = 0, double d = 0);
+/// A number in the checks' sentences with `decimals` digits after the point, as printf's %.Nf
+/// writes it: fixed(0.5, 2) is "0.50".
+std::string fixed(double value, int decimals);
+
+/// A number with `digits` significant digits, as printf's %.Ng writes it (no trailing zeros,
+/// an exponent for large and small values): significant(1234.5, 3) is "1.23e+03".
+std::string significant(double value, int digits);
 
 /// Each render's limits: the rubric's, its time limit scaled to this machine (time_limit.h).
 ProcessLimits limitsOf(const GraderSetup& setup);

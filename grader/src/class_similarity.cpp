@@ -1,28 +1,16 @@
 #include "class_similarity.h"
 
+#include "read_file.h"
 #include "similarity.h"
 
 #include "pathlab/lab_registry.h"
 
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 namespace pathlab::grader {
 
-namespace {
-
 namespace fs = std::filesystem;
-
-std::string readText(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-} // namespace
 
 std::vector<SimilarLabs> similarSubmissions(const std::string& out, const std::vector<std::string>& ids) {
     const fs::path kit = fs::path(PATHLAB_GRADER_DIR).parent_path();
@@ -30,12 +18,12 @@ std::vector<SimilarLabs> similarSubmissions(const std::string& out, const std::v
     std::map<std::string, std::string> stubs;
     for (Lab lab : AllLabs) {
         const std::string name = std::string(labName(lab)), file = name + ".cpp";
-        stubs[name] = readText(kit / "labs" / file);
+        stubs[name] = readFile((kit / "labs" / file).string());
         if (fs::is_regular_file(kit / "solutions" / file))
-            files.push_back({"reference solutions", name, readText(kit / "solutions" / file)});
+            files.push_back({"reference solutions", name, readFile((kit / "solutions" / file).string())});
         for (const std::string& id : ids) {
             const fs::path submitted = fs::path(out) / "submissions" / id / "submitted" / file;
-            if (fs::is_regular_file(submitted)) files.push_back({id, name, readText(submitted)});
+            if (fs::is_regular_file(submitted)) files.push_back({id, name, readFile(submitted.string())});
         }
     }
     std::vector<SimilarLabs> similar;

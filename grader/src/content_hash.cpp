@@ -1,10 +1,8 @@
 #include "content_hash.h"
 
-#include "pathlab/input_error.h"
+#include "read_file.h"
 
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 namespace pathlab::grader {
 
@@ -22,11 +20,7 @@ ContentHash& ContentHash::add(std::string_view bytes) {
 }
 
 ContentHash& ContentHash::addFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": cannot be read");
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    return add(bytes.str());
+    return add(readFile(path));
 }
 
 std::string ContentHash::hex() const {

@@ -37,7 +37,7 @@ SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab l
     SceneRuns runs;
     // All seeds in one viewer process: its start-up, longer than a small render, is paid once.
     const LabParameters parameters = scene.parameters.value_or(LabParameters{r.maxDepth, r.continueProb});
-    const int spp = r.correctnessSpp[static_cast<int>(lab)];
+    const int spp = r.forLab(lab).correctnessSpp;
     const RenderRequest request{&setup.student, scene.path, lab, r.width, r.height, spp,
                                 parameters.maxDepth, parameters.continueProb, seedBase, r.seeds,
                                 setup.threads, setup.scratch};
@@ -91,24 +91,37 @@ struct RunFailure {
     bool empty() const { return text.empty(); }
 };
 
-/// One attempt of the correctness check over all scenes; fills `details` and `diagnosis` on
-/// rejection.
-bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, LabGrade& grade,
-                        std::vector<std::string>& details, std::vector<std::string>& hiddenDetails,
-                        std::string& diagnosis, RunFailure& failure, double& noise) {
+/// What one attempt over all scenes found: on rejection, the details and diagnosis.
+struct Attempt {
+    bool passed = false;
+    std::vector<std::string> details, hiddenDetails;
+    std::string diagnosis;
+    RunFailure failure;
+    double noise = -1; ///< see CorrectnessOutcome
+    std::vector<LabGrade::Pictures> pictures;
+};
+
+/// One attempt of the correctness check over all scenes. `noise`: the figure of an earlier
+/// attempt (-1: none), kept where this one does not reach the noise scene.
+Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, double noise) {
     const Rubric& r = setup.rubric;
+    Attempt attempt;
+    attempt.noise = noise;
+    std::vector<std::string>& details = attempt.details;
+    std::vector<std::string>& hiddenDetails = attempt.hiddenDetails;
+    std::string& diagnosis = attempt.diagnosis;
     std::vector<Comparison> comparisons;
     std::vector<double> allP;
     std::vector<PathLengthObservation> pathLengths; // lab 4 in the diffuse furnaces
-    grade.pictures.clear();
     for (const GradingScene& scene : setup.scenes) {
         const SceneRuns runs = renderSeeds(setup, scene, lab, seedBase);
         if (!runs.failure.empty()) {
-            failure = {"on " + scene.name + " the lab " + withoutSceneName(runs.failure, scene), runs.failureKind};
-            return false;
+            attempt.failure = {"on " + scene.name + " the lab " + withoutSceneName(runs.failure, scene),
+                               runs.failureKind};
+            return attempt;
         }
-        if (scene.reference.scene == r.noiseScene || noise < 0)
-            noise = trimmedSampleVariance(runs.images, r.correctnessSpp[static_cast<int>(lab)]);
+        if (scene.reference.scene == r.noiseScene || attempt.noise < 0)
+            attempt.noise = trimmedSampleVariance(runs.images, r.forLab(lab).correctnessSpp);
         if (lab == Lab::Roulette && scene.furnace && scene.furnace->walls == FurnaceWalls::Diffuse)
             pathLengths.push_back({scene.furnace->continueProb, runs.rays.bounce});
         comparisons.push_back(compare(runs, scene.reference.forLab(lab), r.seeds));
@@ -116,7 +129,7 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
         if (scene.hidden) continue; // its images are the instructor's
         LabGrade::Pictures pictures{scene.name, r.width, r.height, {}, scene.reference.forLab(lab).image};
         pictures.student = runs.meanImage();
-        grade.pictures.push_back(std::move(pictures));
+        attempt.pictures.push_back(std::move(pictures));
     }
     const std::vector<bool> rejected = holmRejections(allP, r.alpha);
     // A lab 4 that continues with a constant of its own is unbiased, but not lab 4: its paths
@@ -125,13 +138,14 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
     if (!ignored.empty()) {
         details.push_back("likely cause: " + ignored);
         diagnosis = ignored.substr(0, ignored.find(':'));
-        return false;
+        return attempt;
     }
     if (std::none_of(rejected.begin(), rejected.end(), [](bool b) { return b; })) {
         if (const std::string note = pathLengthNote(pathLengths); !note.empty()) details.push_back(note);
         for (const GradingScene& scene : setup.scenes)
             if (scene.hidden) hiddenDetails.push_back(scene.name + HiddenSceneMatches);
-        return true;
+        attempt.passed = true;
+        return attempt;
     }
 
     // Explain: per scene, the whole image's observed/expected per channel with a confidence
@@ -170,7 +184,8 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
             for (int ch = 0; ch < 3; ++ch) {
                 const double ratio = c.observed[ch].mean / e.mean[ch];
                 const double half = critical * std::hypot(c.observed[ch].standardError, e.standardError[ch]) / e.mean[ch];
-                line += std::string(" ") + channel[ch] + format(" %.3f [%.3f, %.3f]", ratio, ratio - half, ratio + half);
+                line += std::string(" ") + channel[ch] + " " + fixed(ratio, 3) + " [" +
+                        fixed(ratio - half, 3) + ", " + fixed(ratio + half, 3) + "]";
             }
             details.push_back(line);
             std::string tiles;
@@ -197,8 +212,8 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
                 if (diagnosis.empty()) diagnosis = cause.substr(0, cause.find(':'));
             }
             if (scene.furnace)
-                details.push_back(scene.name + format(": %.4f, where a correct lab gives %.4f",
-                                                                 observed, correctFurnaceValue(lab, *scene.furnace)));
+                details.push_back(scene.name + ": " + fixed(observed, 4) + ", where a correct lab gives " +
+                                  fixed(correctFurnaceValue(lab, *scene.furnace), 4));
         }
         offset += c.p.size();
     }
@@ -218,7 +233,7 @@ bool correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, La
             diagnosis = causes.front().substr(0, causes.front().find(':'));
         }
     }
-    return false;
+    return attempt;
 }
 
 /// ", and the furnace's analytic value at maxDepth 5" where the grading has a parameter check.
@@ -227,59 +242,56 @@ std::string parameterCheckText(const GraderSetup& setup, Lab lab) {
         if (!scene.parameters) continue;
         return isDepthLimited(lab)
                    ? ", and the furnace's analytic value at maxDepth " + std::to_string(scene.parameters->maxDepth)
-                   : format(", at continueProb %.2g as at %.2g", scene.parameters->continueProb,
-                            setup.rubric.continueProb);
+                   : ", at continueProb " + significant(scene.parameters->continueProb, 2) + " as at " +
+                         significant(setup.rubric.continueProb, 2);
     }
     return "";
 }
 
 } // namespace
 
-CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade,
-                             double& noise) {
-    CheckResult check;
-    check.name = "correctness";
-    check.maxScore = setup.rubric.points[static_cast<int>(lab)].correctness;
-    std::vector<std::string> details;
-    std::string diagnosis;
-    RunFailure failure;
-    std::vector<std::string> hiddenDetails;
-    if (correctnessAttempt(setup, lab, setup.seedBase * 1000, grade, details, hiddenDetails,
-                           diagnosis, failure, noise)) {
-        check.passed = true;
-    } else if (failure.empty()) {
+CorrectnessOutcome checkCorrectness(const GraderSetup& setup, Lab lab) {
+    CorrectnessOutcome outcome;
+    CheckResult& check = outcome.check;
+    check.kind = CheckKind::Correctness;
+    check.maxScore = setup.rubric.forLab(lab).points.correctness;
+    Attempt attempt = correctnessAttempt(setup, lab, setup.seedBase * 1000, -1);
+    if (!attempt.passed && attempt.failure.empty()) {
         // A rejection at alpha happens to correct labs too, rarely: only a second rejection on
-        // fresh seeds counts.
-        std::vector<std::string> retryDetails, retryHiddenDetails;
-        std::string retryDiagnosis;
-        const bool passed = correctnessAttempt(setup, lab, setup.seedBase * 1000 + 500, grade,
-                                               retryDetails, retryHiddenDetails, retryDiagnosis,
-                                               failure, noise);
-        check.passed = passed;
-        if (failure.empty())
-            details = retryDetails, hiddenDetails = retryHiddenDetails, diagnosis = retryDiagnosis;
+        // fresh seeds counts. A retry whose renders fail keeps the first attempt's words.
+        Attempt retry = correctnessAttempt(setup, lab, setup.seedBase * 1000 + 500, attempt.noise);
+        if (!retry.failure.empty()) {
+            retry.details = std::move(attempt.details);
+            retry.hiddenDetails = std::move(attempt.hiddenDetails);
+            retry.diagnosis = std::move(attempt.diagnosis);
+        }
+        attempt = std::move(retry);
     }
+    check.passed = attempt.passed;
+    outcome.noise = attempt.noise;
+    outcome.pictures = std::move(attempt.pictures);
     check.score = check.passed ? check.maxScore : 0;
     const std::string expected = isDepthLimited(lab)
                                      ? "the depth-limited image (maxDepth " + std::to_string(setup.rubric.maxDepth) + ")"
                                      : "the unbiased image";
+    std::vector<std::string>& details = attempt.details;
+    const RunFailure& failure = attempt.failure;
     if (check.passed) {
         check.summary = "mean radiance matches " + expected + parameterCheckText(setup, lab);
     } else if (!failure.empty()) {
-        grade.rendersFinished = false;
+        outcome.rendersFinished = false;
         check.summary = "could not be checked: " + failure.text;
         check.diagnosis = failure.kind;
         if (failure.kind == NonfiniteRadianceFailure)
             details.push_back("likely cause: " + likelyNonfiniteCause(lab));
     } else {
         check.summary = "mean radiance differs from " + expected + " (twice, on fresh seeds)";
-        check.diagnosis = diagnosis.empty() ? "wrong mean radiance" : diagnosis;
+        check.diagnosis = attempt.diagnosis.empty() ? "wrong mean radiance" : attempt.diagnosis;
     }
-    check.details = details;
-    check.hiddenSceneDetails = hiddenDetails;
-    return check;
+    check.details = std::move(details);
+    check.hiddenSceneDetails = std::move(attempt.hiddenDetails);
+    return outcome;
 }
-
 
 GradingScene parameterCheckScene(const Rubric& rubric) {
     const ParameterCheck& check = rubric.parameterCheck;
@@ -292,7 +304,7 @@ GradingScene parameterCheckScene(const Rubric& rubric) {
                          "of models/ (furnace, furnace_a08, mirror_furnace)");
     SceneReference& ref = scene.reference;
     ref = referenceHeader(check.scene + " at maxDepth " + std::to_string(check.maxDepth) +
-                              format(", continueProb %.2g", check.continueProb),
+                              ", continueProb " + significant(check.continueProb, 2),
                           rubric, check.maxDepth, check.continueProb);
     scene.name = ref.scene;
     // Every region of a furnace averages to its analytic value, known exactly: no standard error.

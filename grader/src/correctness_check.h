@@ -8,9 +8,17 @@
 
 namespace pathlab::grader {
 
-/// Grades correctness. Sets `noise` to the trimmed per-sample variance of the renders on the
-/// rubric's noise scene (-1 if none finished), and the reports' pictures in `grade`.
-CheckResult checkCorrectness(const GraderSetup& setup, Lab lab, LabGrade& grade, double& noise);
+/// The verdict and what its renders leave for the other checks and the reports.
+struct CorrectnessOutcome {
+    CheckResult check;
+    /// The trimmed per-sample variance of the renders on the rubric's noise scene (-1 if none
+    /// finished), for the noise check.
+    double noise = -1;
+    std::vector<LabGrade::Pictures> pictures;
+    bool rendersFinished = true; ///< false when a render crashed, hung or ran out
+};
+
+CorrectnessOutcome checkCorrectness(const GraderSetup& setup, Lab lab);
 
 /// The parameter check's scene: the rubric's parameter_check furnace rendered at its maxDepth
 /// and continueProb, with the analytic values as its reference. Throws InputError when the scene

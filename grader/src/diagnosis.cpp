@@ -3,51 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <utility>
 
 namespace pathlab::grader {
 
 namespace {
 
-/// The handouts' step for each part of a lab, indexed by Lab (0: that lab has no such step).
-/// Labs 2-4 trace the picked component and weigh it in one step (lab 4 divides by both of its
-/// probabilities in step 4.4); lab 4 has no depth limit.
-using StepTable = int[4];
-constexpr StepTable EmissionStep = {1, 1, 1, 1};
-constexpr StepTable DepthLimitStep = {2, 2, 2, 0};
-constexpr StepTable FirstBounceStep = {3, 3, 3, 2};
-constexpr StepTable DiffuseWeightStep = {3, 4, 4, 4};
-constexpr StepTable RefractionStep = {5, 4, 4, 3};
-constexpr StepTable ProbabilityDivisionStep = {0, 4, 4, 4};
-constexpr StepTable NearBlackStopStep = {0, 0, 3, 3};
-
-/// "TODO lab3.1": the lab's step in `steps`, as the lab file and its handout name it.
-std::string todo(Lab lab, const StepTable& steps) {
-    return "TODO lab" + std::to_string(static_cast<int>(lab) + 1) + "." +
-           std::to_string(steps[static_cast<int>(lab)]);
-}
-
-/// A cause for the student, ending with the lab's step it is about.
-std::string withStep(const std::string& cause, Lab lab, const StepTable& step) {
-    return cause + " (" + todo(lab, step) + ")";
-}
-
-/// How a (possibly wrong) lab behaves in a furnace, in the few numbers that decide its value.
-struct Behaviour {
-    double diffuseWeight = 1; ///< a diffuse bounce's weight relative to Kd, in expectation
-    double mirrorWeight = 1;  ///< a mirror bounce's weight relative to Ks, in expectation
-    double directWeight = 1;  ///< next-event estimation's weight (none: 0)
-    bool emissionAfterDiffuse = false;
-    bool emissionAfterSpecular = true;
-    int depthShift = 0;        ///< labs 1-3: bounces beyond (or short of) maxDepth
-    int fixedDepth = -1;       ///< labs 1-3: a depth limit of its own, whatever maxDepth is (-1: none)
-    int rouletteDivisions = 1; ///< lab 4: how often a continued path is divided by continueProb
-};
-
 /// Σ over path vertices of the expected weight of the paths that reach them, times what they
 /// add there: Le if the ray that arrived may add emission, and next-event estimation's a·Le.
-double furnaceValue(Lab lab, const FurnaceModel& m, const Behaviour& b) {
+double furnaceValue(Lab lab, const FurnaceModel& m, const FurnaceBehaviour& b) {
     const double a = m.walls == FurnaceWalls::Diffuse ? m.reflectance : 0;
     const double s = m.walls == FurnaceWalls::Mirror ? m.reflectance : 0;
     const double roulette =
@@ -71,76 +35,27 @@ double furnaceValue(Lab lab, const FurnaceModel& m, const Behaviour& b) {
 
 struct Candidate {
     std::string cause;
-    Behaviour behaviour;
+    FurnaceBehaviour behaviour;
 };
 
-/// The known bugs of this lab, each with the behaviour that gives its furnace values;
-/// `depths`: the maxDepths the furnaces were rendered at.
+/// The known bugs of this lab (diagnosis_table.h), each with the behaviour that gives its
+/// furnace values; `depths`: the maxDepths the furnaces were rendered at.
 std::vector<Candidate> candidates(Lab lab, const std::vector<int>& depths) {
-    const double pi = 3.14159265358979;
     std::vector<Candidate> list;
-    // A cause ends with the lab's step it is about, where the lab has one.
-    auto add = [&](const std::string& cause, const StepTable* step,
-                   const std::function<void(Behaviour&)>& change) {
-        Behaviour b;
-        change(b);
-        list.push_back({step ? withStep(cause, lab, *step) : cause, b});
-    };
-    const std::string firstBounce = todo(lab, FirstBounceStep);
-    add("no bounce rays yet: the lab renders direct light only (its steps from " + firstBounce +
-            " on are still open)",
-        nullptr, [](Behaviour& b) { b.diffuseWeight = b.mirrorWeight = 0; });
-    add("emission after a specular bounce missing: a ray that left a mirror or a refraction "
-        "(RayKind::Specular) must add hit.emitted, since next-event estimation never finds a "
-        "light in one exact direction",
-        &EmissionStep, [](Behaviour& b) { b.emissionAfterSpecular = false; });
-    add("emission counted twice: it is added after diffuse bounces too, although next-event "
-        "estimation already counted it",
-        &EmissionStep, [](Behaviour& b) { b.emissionAfterDiffuse = true; });
-    add("no next-event estimation: ctx.directLight(hit), given in the lab file, is missing",
-        nullptr, [](Behaviour& b) { b.directWeight = 0; });
-    add("no next-event estimation, with emission added after every bounce instead: emission "
-        "belongs after camera and specular rays only, beside ctx.directLight(hit)",
-        &EmissionStep, [](Behaviour& b) { b.directWeight = 0, b.emissionAfterDiffuse = true; });
-    add("a factor of pi: the diffuse bounce is weighted by pi*Kd; with cosine sampling the weight "
-        "is Kd alone",
-        &DiffuseWeightStep, [&](Behaviour& b) { b.diffuseWeight = pi; });
-    add("a factor of 1/pi: the diffuse bounce is weighted by Kd/pi; with cosine sampling the "
-        "weight is Kd alone",
-        &DiffuseWeightStep, [&](Behaviour& b) { b.diffuseWeight = 1 / pi; });
-    add("direct light weighted by an extra pi", nullptr,
-        [&](Behaviour& b) { b.directWeight = pi; });
-    if (isDepthLimited(lab)) {
-        add("depth off by one: one bounce too many: return before the bounce when depth >= "
-            "ctx.maxDepth (the primary hit is depth 0)",
-            &DepthLimitStep, [](Behaviour& b) { b.depthShift = 1; });
-        add("depth off by one: one bounce too few: the primary hit is depth 0", &DepthLimitStep,
-            [](Behaviour& b) { b.depthShift = -1; });
-        // Furnaces at two maxDepths tell a lab that ignores it: it renders one of them right.
-        if (depths.size() >= 2)
-            for (int depth : depths)
-                add("ctx.maxDepth ignored: the lab renders as if maxDepth were " +
-                        std::to_string(depth) + ", whatever ctx.maxDepth says (a constant in its "
-                        "place?)",
-                    &DepthLimitStep, [depth](Behaviour& b) { b.fixedDepth = depth; });
-    }
-    // A wrong pick weight scales whichever component is picked.
-    auto pickWeight = [](double w) {
-        return [w](Behaviour& b) { b.diffuseWeight = b.mirrorWeight = w; };
-    };
-    if (lab == Lab::Uniform) {
-        add("forgot to divide by the pick probability 1/3", &ProbabilityDivisionStep,
-            pickWeight(1.0 / 3));
-        add("divided by the pick probability twice", &ProbabilityDivisionStep, pickWeight(3));
-    }
-    if (lab == Lab::Importance)
-        add("divided by 1/3 instead of the chosen component's probability",
-            &ProbabilityDivisionStep, pickWeight(3));
-    if (lab == Lab::Roulette) {
-        add("Russian-roulette weight missing: a continued path must be divided by continueProb",
-            &ProbabilityDivisionStep, [](Behaviour& b) { b.rouletteDivisions = 0; });
-        add("divided by continueProb twice", &ProbabilityDivisionStep,
-            [](Behaviour& b) { b.rouletteDivisions = 2; });
+    for (const KnownBug& bug : knownBugs()) {
+        if (!(bug.labs & labBit(lab))) continue;
+        FurnaceBehaviour b;
+        bug.behave(b);
+        if (!bug.perObservedDepth) {
+            list.push_back({bugSentence(bug, lab), b});
+            continue;
+        }
+        // Only furnaces at two maxDepths tell a lab that renders at one of them regardless.
+        if (depths.size() < 2) continue;
+        for (int depth : depths) {
+            b.fixedDepth = depth;
+            list.push_back({bugSentence(bug, lab, depth), b});
+        }
     }
     return list;
 }
@@ -164,7 +79,7 @@ std::optional<FurnaceModel> furnaceModel(const std::string& scene, int maxDepth,
 }
 
 double correctFurnaceValue(Lab lab, const FurnaceModel& model) {
-    return furnaceValue(lab, model, Behaviour{});
+    return furnaceValue(lab, model, FurnaceBehaviour{});
 }
 
 std::string furnaceFormula(Lab lab, const FurnaceModel& m) {
@@ -216,31 +131,17 @@ std::vector<std::string> likelyFurnaceCauses(Lab lab,
     return causes;
 }
 
-std::string likelyNonfiniteCause(Lab lab) {
-    if (NearBlackStopStep[static_cast<int>(lab)] == 0)
-        return "a division by zero (0/0 is NaN, x/0 infinite) or a value used before it is set, "
-               "in the lab's own arithmetic";
-    return withStep("a division by zero: on a surface with no component at all (the light's "
-                    "material has only Ke) the strengths sum to 0 and total/strength is 0/0; the "
-                    "near-black stop must return before the pick",
-                    lab, NearBlackStopStep);
-}
+std::string likelyNonfiniteCause(Lab lab) { return hintFor(HintTopic::NonfiniteRadiance, lab); }
 
-std::string likelyDirectionCause(Lab lab) {
-    std::string cause =
-        "diffuse directions drawn from part of the hemisphere: on surfaces that are part diffuse, "
-        "part mirror or glass, lit from one side, the image differs; is a random number used "
-        "twice (the pick's u again in diffuseRay's u, or one number for both of its "
-        "coordinates), or the direction drawn around a normal that does not face the incoming "
-        "ray? diffuseRay(hit, ctx.sampler.get2D()) with a fresh get2D() after the pick";
-    return withStep(cause, lab, DiffuseWeightStep);
-}
+std::string likelyDirectionCause(Lab lab) { return hintFor(HintTopic::DiffuseDirection, lab); }
 
-std::string likelyRefractionCause(Lab lab) {
-    return withStep("the view through the glass sphere is wrong: the Kt component must trace "
-                    "refractionRay(ray, hit), which bends the ray by Ni and turns into a mirror "
-                    "ray under total internal reflection",
-                    lab, RefractionStep);
+std::string likelyRefractionCause(Lab lab) { return hintFor(HintTopic::Refraction, lab); }
+
+double furnaceValueWithBug(Lab lab, const FurnaceModel& model, const KnownBug& bug, int depth) {
+    FurnaceBehaviour b;
+    bug.behave(b);
+    if (bug.perObservedDepth) b.fixedDepth = depth;
+    return furnaceValue(lab, model, b);
 }
 
 } // namespace pathlab::grader

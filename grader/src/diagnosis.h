@@ -2,6 +2,8 @@
 /// Likely causes of a wrong image, each naming the step of the lab it is about: recognised by
 /// the values known bugs give in the furnaces, or by NaN. Shared by the grader and the lab tests.
 
+#include "diagnosis_table.h"
+
 #include "pathlab/lab_registry.h"
 
 #include <optional>
@@ -60,5 +62,9 @@ std::string likelyDirectionCause(Lab lab);
 /// What a wrong view through a glass sphere means, when the furnaces (which hold no glass)
 /// accept the lab, naming its step.
 std::string likelyRefractionCause(Lab lab);
+
+/// The furnace's radiance as a lab with `bug` renders it (`depth`: where the bug is
+/// perObservedDepth, the depth it renders at), to check that the diagnosis finds each bug.
+double furnaceValueWithBug(Lab lab, const FurnaceModel& model, const KnownBug& bug, int depth = -1);
 
 } // namespace pathlab::grader

@@ -106,12 +106,12 @@ SceneReference measureReference(const LabRunner& solution, const std::string& sc
     const int total = 2 * seeds + 4 * noiseGroups;
     int done = 0;
     auto step = [&] { if (progress) progress(++done, total); };
-    const int spp = rubric.correctnessSpp[static_cast<int>(Lab::Importance)] * sppFactor;
+    const int spp = rubric.forLab(Lab::Importance).correctnessSpp * sppFactor;
     // Importance and roulette: the fastest to converge of the depth-limited and unbiased labs.
     ref.depthLimited = measure(solution, scenePath, Lab::Importance, rubric, seeds, spp, scratch, step);
     ref.unbiased = measure(solution, scenePath, Lab::Roulette, rubric, seeds, spp, scratch, step);
     for (Lab lab : AllLabs) {
-        const int labSpp = rubric.correctnessSpp[static_cast<int>(lab)];
+        const int labSpp = rubric.forLab(lab).correctnessSpp;
         double sum = 0;
         for (int g = 0; g < noiseGroups; ++g) {
             const RenderRequest r{&solution, scenePath, lab, rubric.width, rubric.height, labSpp,
@@ -125,8 +125,8 @@ SceneReference measureReference(const LabRunner& solution, const std::string& sc
             sum += trimmedSampleVariance(images, labSpp) / noiseGroups;
             step();
         }
-        ref.noise[static_cast<int>(lab)] = sum;
-        ref.noiseSpp[static_cast<int>(lab)] = labSpp;
+        ref.noise[lab] = sum;
+        ref.noiseSpp[lab] = labSpp;
     }
     ref.noiseSeeds = rubric.seeds;
     return ref;
@@ -138,7 +138,7 @@ void saveReference(const std::string& folder, const SceneReference& ref) {
     writeImage(folder + "/" + depthImage, ref.width, ref.height, ref.depthLimited.image);
     writeImage(folder + "/" + unbiasedImage, ref.width, ref.height, ref.unbiased.image);
     nlohmann::json noise;
-    for (Lab lab : AllLabs) noise[std::string(labName(lab))] = ref.noise[static_cast<int>(lab)];
+    for (Lab lab : AllLabs) noise[std::string(labName(lab))] = ref.noise[lab];
     const nlohmann::json j = {
         {"scene", ref.scene},
         {"made_by", "grader make-references"},
@@ -154,7 +154,7 @@ void saveReference(const std::string& folder, const SceneReference& ref) {
         {"unbiased", toJson(ref.unbiased, unbiasedImage)},
         {"noise", noise},
         {"noise_seeds", ref.noiseSeeds},
-        {"noise_spp", ref.noiseSpp},
+        {"noise_spp", ref.noiseSpp.values},
         {"noise_is", "per-sample variance of the reference solutions, from the spread of the "
                      "rubric's seeds at the rubric's spp, the noisiest 1% of pixels left out "
                      "(grader/src/seed_variance.h)"},
@@ -196,9 +196,9 @@ SceneReference loadReference(const std::string& folder, const std::string& scene
         ref.depthLimited = fromJson(j.at("depth_limited"), folder, ref.width, ref.height);
         ref.unbiased = fromJson(j.at("unbiased"), folder, ref.width, ref.height);
         for (Lab lab : AllLabs)
-            ref.noise[static_cast<int>(lab)] = j.at("noise").at(std::string(labName(lab)));
+            ref.noise[lab] = j.at("noise").at(std::string(labName(lab)));
         ref.noiseSeeds = j.at("noise_seeds");
-        ref.noiseSpp = j.at("noise_spp").get<std::array<int, 4>>();
+        ref.noiseSpp.values = j.at("noise_spp").get<decltype(ref.noiseSpp.values)>();
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ": " + e.what());
     }

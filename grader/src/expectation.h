@@ -2,12 +2,12 @@
 /// What a correct lab's image should average to, region by region, and how noisy a correct lab
 /// is: measured from the reference solutions, stored in grader/references/ or made on the fly.
 
+#include "by_lab.h"
 #include "render_run.h"
 #include "rubric.h"
 
 #include "pathlab/input_error.h"
 
-#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -34,9 +34,9 @@ struct SceneReference {
     float continueProb = 0;
     Expectation depthLimited;      ///< labs 1-3, at maxDepth
     Expectation unbiased;          ///< lab 4
-    std::array<double, 4> noise{}; ///< each lab's solution's trimmedSampleVariance at the rubric's seeds and spp
+    ByLab<double> noise;           ///< each lab's solution's trimmedSampleVariance at the rubric's seeds and spp
     int noiseSeeds = 0;            ///< the seeds and spp (by lab) the noise was measured at
-    std::array<int, 4> noiseSpp{};
+    ByLab<int> noiseSpp;
 
     const Expectation& forLab(Lab lab) const { return isDepthLimited(lab) ? depthLimited : unbiased; }
 };

@@ -33,13 +33,14 @@ void makeLabFigures(const Arguments& a, const Rubric& rubric, const std::string&
     setup.threads = a.threads;
     LabFigures figures;
     figures.machine = thisMachine(a.threads);
-    figures.startUpSeconds = speedSceneStartUpSeconds(setup, setup.solution);
+    StartUpTimes startUps;
+    figures.startUpSeconds = speedSceneStartUpSeconds(setup, setup.solution, startUps);
     {
         ProgressBar bar("lab figures: timed runs", "labs");
+        int timed = 0;
         for (Lab lab : AllLabs) {
-            figures.timedSamplesPerSecond[static_cast<int>(lab)] =
-                timedSamplesPerSecond(setup, setup.solution, lab);
-            bar.update(static_cast<int>(lab) + 1, static_cast<int>(AllLabs.size()));
+            figures.timedSamplesPerSecond[lab] = timedSamplesPerSecond(setup, setup.solution, lab, startUps);
+            bar.update(++timed, static_cast<int>(AllLabs.size()));
         }
     }
     std::fprintf(stderr, "lab figures: the notebook's renders ...\n");
@@ -125,15 +126,16 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
     // The time limits, scaled to this machine's speed now: the reference's start-up where this
     // build has the solutions, the student's own viewer's where it has not (the start-up is the
     // scene and Embree's BVH, the same for any lab).
+    StartUpTimes startUps;
     setup.runSeconds = scaledTimeLimit(
         rubric.secondsPerRun,
-        speedSceneStartUpSeconds(setup, PATHLAB_HAS_SOLUTIONS ? setup.solution : setup.student),
+        speedSceneStartUpSeconds(setup, PATHLAB_HAS_SOLUTIONS ? setup.solution : setup.student, startUps),
         stored ? stored->startUpSeconds : 0);
     if (setup.runSeconds > rubric.secondsPerRun)
         report.notes.push_back(timeLimitNote(rubric.secondsPerRun, setup.runSeconds));
     for (Lab lab : a.labs) {
         std::fprintf(stderr, "grading %s ...\n", std::string(labName(lab)).c_str());
-        report.labs.push_back(gradeLab(setup, lab));
+        report.labs.push_back(gradeLab(setup, lab, startUps));
     }
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fputs(terminalReport(report, ::isatty(STDOUT_FILENO)).c_str(), stdout);

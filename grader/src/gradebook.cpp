@@ -1,5 +1,6 @@
 #include "gradebook.h"
 
+#include "check_kind.h"
 #include "histogram_svg.h"
 #include "page_style.h"
 #include "reports.h"
@@ -64,8 +65,6 @@ std::string statusOf(const GradebookEntry& e, const GradingNow& now) {
     return status;
 }
 
-const char* const checkNames[] = {"correctness", "noise", "speed"};
-
 /// The columns of the first gradebooks first, in their order (scripts read them by position),
 /// then a column per lab and check and what a registrar asks.
 std::string csv(const std::vector<GradebookEntry>& entries, const GradingNow& now) {
@@ -73,7 +72,7 @@ std::string csv(const std::vector<GradebookEntry>& entries, const GradingNow& no
     for (Lab lab : AllLabs) text += "," + std::string(labName(lab));
     text += ",total,max_total,status";
     for (Lab lab : AllLabs)
-        for (const char* check : checkNames) text += "," + std::string(labName(lab)) + "_" + check;
+        for (CheckKind check : AllChecks) text += "," + std::string(labName(lab)) + "_" + std::string(checkName(check));
     text += ",missing_labs,submitted_at,time_source,late,commit,files_hash,rubric_hash\n";
     for (const GradebookEntry& e : entries) {
         const std::optional<double> total = shownTotal(e, now);
@@ -83,8 +82,9 @@ std::string csv(const std::vector<GradebookEntry>& entries, const GradingNow& no
         for (Lab lab : AllLabs) text += "," + (total ? number(labResult(lab).value("score", 0.0)) : "");
         text += "," + (total ? number(*total) : "") + "," + number(now.maxScore) + "," + csvField(statusOf(e, now));
         for (Lab lab : AllLabs)
-            for (const char* check : checkNames) {
-                const nlohmann::json c = labResult(lab).value("checks", nlohmann::json::object()).value(check, nlohmann::json());
+            for (CheckKind check : AllChecks) {
+                const nlohmann::json c = labResult(lab).value("checks", nlohmann::json::object())
+                                             .value(std::string(checkName(check)), nlohmann::json());
                 text += "," + (c.is_object() && c.value("graded_here", true) ? number(c.value("score", 0.0)) : "");
             }
         const nlohmann::json intake = e.result.is_null() ? nlohmann::json::object()
@@ -159,7 +159,7 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
         const double max = e.result.value("max_score", 0.0);
         sum += max > 0 ? e.result.value("score", 0.0) / max : 0;
         for (const auto& d : e.result.value("diagnoses", nlohmann::json::array()))
-            if (d.value("check", "") == "correctness" || d.value("diagnosis", "") == "too noisy" ||
+            if (d.value("check", "") == std::string(checkName(CheckKind::Correctness)) || d.value("diagnosis", "") == "too noisy" ||
                 d.value("diagnosis", "") == "too slow")
                 ++diagnoses[{d.value("lab", ""), d.value("diagnosis", "")}];
     }

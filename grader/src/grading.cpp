@@ -28,40 +28,49 @@ LabGrade ungradedLab(const Rubric& rubric, Lab lab, bool measureSpeed, const std
                      const std::vector<std::string>& details) {
     LabGrade grade;
     grade.lab = lab;
-    const LabPoints& points = rubric.points[static_cast<int>(lab)];
-    std::vector<std::pair<std::string, double>> checks = {{"correctness", points.correctness},
-                                                          {"noise", points.noise}};
-    if (measureSpeed) checks.push_back({"speed", points.speed});
-    for (const auto& [name, maxScore] : checks) {
+    for (CheckKind kind : AllChecks) {
+        if (kind == CheckKind::Speed && !measureSpeed) continue;
         CheckResult check;
-        check.name = name;
-        check.maxScore = maxScore;
+        check.kind = kind;
+        check.maxScore = rubric.forLab(lab).points.of(kind);
         check.summary = reason;
         check.diagnosis = reason;
-        if (name == "correctness") check.details = details;
+        if (kind == CheckKind::Correctness) check.details = details;
         grade.checks.push_back(check);
     }
     return grade;
 }
 
-LabGrade gradeLab(const GraderSetup& setup, Lab lab) {
+LabGrade gradeLab(const GraderSetup& setup, Lab lab, StartUpTimes& startUps) {
     LabGrade grade;
     grade.lab = lab;
-    double noise = -1; // the noise figure of the correctness renders on the noise scene
-    grade.checks.push_back(checkCorrectness(setup, lab, grade, noise));
-    grade.checks.push_back(checkNoise(setup, lab, grade.checks[0].passed, noise, grade));
+    CorrectnessOutcome correctness = checkCorrectness(setup, lab);
+    const bool correct = correctness.check.passed;
+    grade.checks.push_back(correctness.check);
+    grade.pictures = std::move(correctness.pictures);
+    grade.rendersFinished = correctness.rendersFinished;
+    const NoiseOutcome noise = checkNoise(setup, lab, correct, correctness.noise);
+    grade.checks.push_back(noise.check);
+    grade.studentVariance = noise.variances.student;
+    grade.solutionVariance = noise.variances.solution;
     if (!setup.measureSpeed && !setup.timeWithoutSolutions) return grade;
-    if (grade.rendersFinished) {
-        grade.checks.push_back(checkSpeed(setup, lab, grade.checks[0].passed, grade));
-    } else {
+    if (!grade.rendersFinished) {
         // A lab that crashed or hung in 64x64 renders would do the same in longer ones.
         CheckResult speed;
-        speed.name = "speed";
-        speed.maxScore = setup.rubric.points[static_cast<int>(lab)].speed;
+        speed.kind = CheckKind::Speed;
+        speed.maxScore = setup.rubric.forLab(lab).points.speed;
         speed.summary = "not measured: the lab's correctness renders failed, and speed counts "
                         "only for a correct lab";
         grade.checks.push_back(speed);
+        return grade;
     }
+    const SpeedOutcome speed = checkSpeed(setup, lab, correct, noise.variances, startUps);
+    grade.checks.push_back(speed.check);
+    grade.studentSamplesPerSecond = speed.studentSamplesPerSecond;
+    grade.solutionSamplesPerSecond = speed.solutionSamplesPerSecond;
+    grade.studentRays = speed.studentRays;
+    grade.solutionRays = speed.solutionRays;
+    grade.efficiencyRatio = speed.efficiencyRatio;
     return grade;
 }
 

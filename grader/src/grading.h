@@ -1,16 +1,16 @@
 #pragma once
 /// The three checks of one lab: correctness, noise, frame rate.
 
+#include "check_kind.h"
 #include "diagnosis.h"
 #include "expectation.h"
 #include "rays_per_sample.h"
 #include "render_run.h"
 #include "rubric.h"
+#include "start_up_times.h"
 
 #include "pathlab/lab_parameters.h"
 
-#include <array>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,7 +23,7 @@ constexpr const char* HiddenSceneMatches = ": matches its reference";
 constexpr const char* HiddenSceneDiffers = ": differs from its reference";
 
 struct CheckResult {
-    std::string name;            ///< "correctness", "noise", "speed"
+    CheckKind kind = CheckKind::Correctness;
     double score = 0, maxScore = 0;
     bool passed = false;
     std::string summary;         ///< one line
@@ -35,6 +35,9 @@ struct CheckResult {
     /// False for a check this build cannot make (speed, without the reference solutions to time
     /// against): the instructor's grader makes it, and its points are not in this build's totals.
     bool gradedHere = true;
+
+    /// The check's name in every report (check_kind.h).
+    std::string name() const { return std::string(checkName(kind)); }
 };
 
 struct LabGrade {
@@ -96,19 +99,23 @@ struct GraderSetup {
     /// the student's labs, for the speed ratios between them; the reference's ratios then come
     /// from the stored figures (lab_figures.json, by lab; 0 where none).
     bool timeWithoutSolutions = false;
-    std::array<double, 4> storedSolutionSamplesPerSecond{};
+    ByLab<double> storedSolutionSamplesPerSecond;
 };
 
-LabGrade gradeLab(const GraderSetup& setup, Lab lab);
+/// `startUps`: the grading's start-up measurements, shared by the labs it grades.
+LabGrade gradeLab(const GraderSetup& setup, Lab lab, StartUpTimes& startUps);
 
 /// The start-up of one render on the rubric's speed scene with `runner`'s labs (one pixel:
-/// loading the scene and building Embree's BVH), the median of three, measured once per grading;
-/// 0 if none ran. The speed check subtracts it; time_limit.h scales the limits with it.
-double speedSceneStartUpSeconds(const GraderSetup& setup, const LabRunner& runner);
+/// loading the scene and building Embree's BVH), the median of three, measured once per grading
+/// (in `startUps`); 0 if none ran. The speed check subtracts it; time_limit.h scales the limits
+/// with it.
+double speedSceneStartUpSeconds(const GraderSetup& setup, const LabRunner& runner,
+                                StartUpTimes& startUps);
 
 /// The median samples/s of the rubric's timed runs of one lab with `runner`'s labs alone (for
 /// the stored reference figures); 0 if a run failed.
-double timedSamplesPerSecond(const GraderSetup& setup, const LabRunner& runner, Lab lab);
+double timedSamplesPerSecond(const GraderSetup& setup, const LabRunner& runner, Lab lab,
+                             StartUpTimes& startUps);
 
 /// A lab that could not be graded at all (not submitted, does not compile): every check fails
 /// with `reason` as its summary and diagnosis.

@@ -23,7 +23,10 @@ std::string publicScenePath(const std::string& name) {
 /// Whether a reference's noise figures were measured at the seeds and samples per pixel the
 /// rubric grades at: the noise check compares figures measured alike.
 bool noiseMeasuredAsGraded(const SceneReference& reference, const Rubric& rubric) {
-    return reference.noiseSeeds == rubric.seeds && reference.noiseSpp == rubric.correctnessSpp;
+    if (reference.noiseSeeds != rubric.seeds) return false;
+    for (Lab lab : AllLabs)
+        if (reference.noiseSpp[lab] != rubric.forLab(lab).correctnessSpp) return false;
+    return true;
 }
 
 /// The scene's reference from the cache while it fits the scene and rubric, else measured now

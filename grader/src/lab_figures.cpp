@@ -45,10 +45,12 @@ nlohmann::json machineJson(const Machine& m) {
 
 std::vector<NotebookEstimator> notebookEstimators(const std::vector<Lab>& labs, const Rubric& rubric) {
     std::vector<NotebookEstimator> rows;
-    const char* labels[] = {"branching (lab 1)", "uniform pick (lab 2)", "importance pick (lab 3)"};
+    // Roulette's rows, one per continueProb, are labelled below.
+    const ByLab<const char*> labels = {"branching (lab 1)", "uniform pick (lab 2)",
+                                       "importance pick (lab 3)", nullptr};
     for (Lab lab : labs) {
         if (lab != Lab::Roulette) {
-            rows.push_back({std::string(labName(lab)), labels[static_cast<int>(lab)], lab, 0.1f});
+            rows.push_back({std::string(labName(lab)), labels[lab], lab, 0.1f});
             continue;
         }
         rows.push_back({"roulette", "roulette, continueProb 0.1 (lab 4's default)", lab, 0.1f});
@@ -126,8 +128,8 @@ void saveLabFigures(const std::string& path, const LabFigures& figures, const Ru
                          {"rays_per_sample", f.raysPerSample}};
     nlohmann::json timed = nlohmann::json::object(), timedSpp = nlohmann::json::object();
     for (Lab lab : AllLabs) {
-        timed[std::string(labName(lab))] = figures.timedSamplesPerSecond[static_cast<int>(lab)];
-        timedSpp[std::string(labName(lab))] = rubric.speedSpp[static_cast<int>(lab)];
+        timed[std::string(labName(lab))] = figures.timedSamplesPerSecond[lab];
+        timedSpp[std::string(labName(lab))] = rubric.forLab(lab).speedSpp;
     }
     const nlohmann::json j = {
         {"made_by", "grader make-references"},
@@ -163,8 +165,8 @@ LabFigures loadLabFigures(const std::string& path, const Rubric& rubric) {
                               t.at("height") == rubric.speedHeight;
         for (Lab lab : AllLabs) {
             const std::string name(labName(lab));
-            if (sameRuns && t.at("spp").at(name) == rubric.speedSpp[static_cast<int>(lab)])
-                figures.timedSamplesPerSecond[static_cast<int>(lab)] = t.at("samples_per_second").at(name);
+            if (sameRuns && t.at("spp").at(name) == rubric.forLab(lab).speedSpp)
+                figures.timedSamplesPerSecond[lab] = t.at("samples_per_second").at(name);
         }
         if (t.at("scene") == rubric.speedScene) figures.startUpSeconds = t.value("start_up_seconds", 0.0);
     } catch (const nlohmann::json::exception& e) {

@@ -6,10 +6,10 @@
 /// solutions' in grader/references/lab_figures.json, with the machine they were measured on,
 /// so that a student without the solutions compares ratios with the reference's.
 
+#include "by_lab.h"
 #include "render_run.h"
 #include "rubric.h"
 
-#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -54,7 +54,7 @@ struct LabFigures {
     /// The grader's timed runs (the speed check's renders, rubric "speed"): median samples/s by
     /// lab, 0 where not measured. For the reference solutions these stand in for timing them
     /// next to the student's labs where the solutions are not part of the build.
-    std::array<double, 4> timedSamplesPerSecond{};
+    ByLab<double> timedSamplesPerSecond;
     /// The start-up of a render on the speed scene (speedSceneStartUpSeconds), 0 where not
     /// measured: the yardstick of how much slower a machine runs when grading (time_limit.h).
     double startUpSeconds = 0;

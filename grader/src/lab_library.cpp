@@ -1,5 +1,7 @@
 #include "lab_library.h"
 
+#include "read_file.h"
+
 #include "pathlab/input_error.h"
 
 #include <nlohmann/json.hpp>
@@ -112,7 +114,7 @@ LabKit existingLabKitPaths(const std::string& folder) {
     kit.folder = folder;
     kit.tableObject = folder + "/table.o";
     for (Lab lab : AllLabs)
-        kit.stubObjects[static_cast<int>(lab)] = folder + "/stub_" + std::string(labName(lab)) + ".o";
+        kit.stubObjects[lab] = folder + "/stub_" + std::string(labName(lab)) + ".o";
     kit.solutionsLibrary = folder + "/solutions.so";
     return kit;
 }
@@ -152,12 +154,7 @@ std::string kitFingerprint(const LabBuild& build) {
         for (const auto& entry : fs::recursive_directory_iterator(folder))
             if (entry.is_regular_file()) files.push_back(entry.path().string());
     std::sort(files.begin(), files.end());
-    for (const std::string& file : files) {
-        std::ifstream in(file, std::ios::binary);
-        std::ostringstream bytes;
-        bytes << in.rdbuf();
-        text += "\n" + file + "\n" + bytes.str();
-    }
+    for (const std::string& file : files) text += "\n" + file + "\n" + readFile(file);
     return std::to_string(std::hash<std::string>{}(text));
 }
 
@@ -186,8 +183,7 @@ LabKit buildLabKit(const LabBuild& build, const std::string& folder, const Sandb
     compile(build.labTable, "student", kit.tableObject);
     std::vector<std::string> solutionObjects;
     for (Lab lab : AllLabs) {
-        const int i = static_cast<int>(lab);
-        compile(build.stubs + "/" + labFile(lab), "student", kit.stubObjects[i]);
+        compile(build.stubs + "/" + labFile(lab), "student", kit.stubObjects[lab]);
         solutionObjects.push_back(folder + "/solution_" + std::string(labName(lab)) + ".o");
         compile(build.solutions + "/" + labFile(lab), "student", solutionObjects.back());
     }
@@ -205,22 +201,21 @@ SubmissionLibrary buildSubmissionLibrary(const LabBuild& build, const LabKit& ki
     auto objectOf = [&](Lab lab) { return folder + "/" + std::string(labName(lab)) + ".o"; };
     for (Lab lab : AllLabs) {
         const std::string source = sources + "/" + labFile(lab);
-        LabCompilation& compiled = result.labs[static_cast<int>(lab)];
+        LabCompilation& compiled = result.labs[lab];
         if (!fs::exists(source)) continue; // NotSubmitted
         compiled.messages = compileObject(build, source, "student", objectOf(lab), policy);
         compiled.status = compiled.messages.empty() ? LabCompilation::Status::Compiled
                                                     : LabCompilation::Status::Failed;
     }
     for (Lab lab : AllLabs) {
-        const int i = static_cast<int>(lab);
-        if (result.labs[i].status != LabCompilation::Status::Compiled) continue;
+        if (result.labs[lab].status != LabCompilation::Status::Compiled) continue;
         // This lab's object; the stubs, which load and run nothing, for the others.
         std::vector<std::string> parts = {objectOf(lab), kit.tableObject};
         for (Lab other : AllLabs)
-            if (other != lab) parts.push_back(kit.stubObjects[static_cast<int>(other)]);
+            if (other != lab) parts.push_back(kit.stubObjects[other]);
         const std::string library = folder + "/labs-" + std::string(labName(lab)) + ".so";
-        result.problem[i] = linkLibrary(build, parts, library, policy);
-        if (result.problem[i].empty()) result.library[i] = library;
+        result.problem[lab] = linkLibrary(build, parts, library, policy);
+        if (result.problem[lab].empty()) result.library[lab] = library;
     }
     return result;
 }

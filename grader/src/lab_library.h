@@ -4,11 +4,11 @@
 /// while loading, costs that lab only), with the lab table. The reference solutions are built
 /// the same way, into one library, so both are timed alike.
 
+#include "by_lab.h"
 #include "sandbox.h"
 
 #include "pathlab/lab_registry.h"
 
-#include <array>
 #include <string>
 #include <vector>
 
@@ -34,7 +34,7 @@ LabBuild loadLabBuild(const std::string& path);
 struct LabKit {
     std::string folder;
     std::string tableObject;
-    std::array<std::string, 4> stubObjects; ///< by Lab
+    ByLab<std::string> stubObjects;
     std::string solutionsLibrary;
 };
 
@@ -54,11 +54,11 @@ struct LabCompilation {
 /// for the other three, so that loading one lab never runs another lab's code (a static
 /// initializer that hangs costs its own lab only).
 struct SubmissionLibrary {
-    std::array<LabCompilation, 4> labs; ///< by Lab
-    std::array<std::string, 4> library; ///< by Lab: "" unless the lab compiled and linked
-    std::array<std::string, 4> problem; ///< by Lab: why a compiled lab did not link
+    ByLab<LabCompilation> labs;
+    ByLab<std::string> library; ///< "" unless the lab compiled and linked
+    ByLab<std::string> problem; ///< why a compiled lab did not link
 
-    bool linked(Lab lab) const { return !library[static_cast<int>(lab)].empty(); }
+    bool linked(Lab lab) const { return !library[lab].empty(); }
 };
 
 /// Compiles the lab files in `sources` (a clean folder holding only allow-listed files) and

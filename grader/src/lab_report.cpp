@@ -124,9 +124,9 @@ std::string labReport(const GradeReport& report, const Rubric& rubric, const Lab
         md << " |";
         for (const CheckResult& c : lab.checks) {
             md << " " << verdict(c);
-            if (c.name == "noise" && lab.solutionVariance > 0)
+            if (c.kind == CheckKind::Noise && lab.solutionVariance > 0)
                 md << ": " << number(lab.studentVariance / lab.solutionVariance, "%.2f");
-            if (c.name == "speed" && lab.studentSamplesPerSecond > 0)
+            if (c.kind == CheckKind::Speed && lab.studentSamplesPerSecond > 0)
                 md << (c.gradedHere ? ": " : "; yours here ")
                    << number(lab.studentSamplesPerSecond) << " samples/s";
             md << " |";

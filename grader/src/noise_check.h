@@ -6,9 +6,18 @@
 
 namespace pathlab::grader {
 
-/// `noise`: the variance checkCorrectness measured (-1: none); `correct`: its verdict. Sets the
-/// variances in `grade` for the speed check's efficiency.
-CheckResult checkNoise(const GraderSetup& setup, Lab lab, bool correct, double noise,
-                       LabGrade& grade);
+/// Per-sample variances on the noise scene, the lab's and the reference solution's (0: not
+/// compared).
+struct SampleVariances {
+    double student = 0, solution = 0;
+};
+
+struct NoiseOutcome {
+    CheckResult check;
+    SampleVariances variances; ///< for the speed check's efficiency
+};
+
+/// `noise`: the variance checkCorrectness measured (-1: none); `correct`: its verdict.
+NoiseOutcome checkNoise(const GraderSetup& setup, Lab lab, bool correct, double noise);
 
 } // namespace pathlab::grader

@@ -1,6 +1,7 @@
 #include "reports.h"
 
 #include "page_style.h"
+#include "read_file.h"
 
 #include "pathlab/false_colour.h"
 #include "pathlab/image_io.h"
@@ -10,7 +11,7 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <iomanip>
 #include <sstream>
 
 namespace pathlab::grader {
@@ -94,13 +95,6 @@ std::string base64(const std::string& bytes) {
     return out;
 }
 
-std::string readBytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 } // namespace
 
 std::vector<LabRatio> labRatios(const GradeReport& report) {
@@ -125,8 +119,10 @@ std::string terminalReport(const GradeReport& report, bool colour, bool withHidd
     const char* reset = colour ? "\033[0m" : "";
     std::ostringstream out;
     char line[512];
-    std::snprintf(line, sizeof line, "%-11s %-12s %-12s %-12s %s\n", "lab", "correctness", "noise", "speed", "score");
-    out << line;
+    // A column per check, 13 wide as its cells; the lab's 12.
+    out << std::left << std::setw(12) << "lab";
+    for (CheckKind check : AllChecks) out << std::setw(13) << checkName(check);
+    out << "score\n" << std::right;
     for (const LabGrade& lab : report.labs) {
         out << std::string(labName(lab.lab)) << std::string(12 - labName(lab.lab).size(), ' ');
         for (const CheckResult& c : lab.checks) {
@@ -145,7 +141,7 @@ std::string terminalReport(const GradeReport& report, bool colour, bool withHidd
     out << line;
     for (const LabGrade& lab : report.labs)
         for (const CheckResult& c : lab.checks)
-            out << "\n" << labName(lab.lab) << " " << c.name << ": "
+            out << "\n" << labName(lab.lab) << " " << c.name() << ": "
                 << (c.passed || !c.gradedHere ? "" : red) << checkText(c, withHidden) << reset;
     out << "\n";
     const auto ratios = labRatios(report);
@@ -174,7 +170,7 @@ std::string jsonReport(const GradeReport& report) {
     for (const LabGrade& lab : report.labs) {
         nlohmann::json checks = nlohmann::json::array();
         for (const CheckResult& c : lab.checks)
-            checks.push_back({{"name", c.name}, {"score", c.score}, {"max_score", c.maxScore},
+            checks.push_back({{"name", c.name()}, {"score", c.score}, {"max_score", c.maxScore},
                               {"passed", c.passed}, {"graded_here", c.gradedHere},
                               {"summary", c.summary}, {"details", c.details},
                               {"hidden_scenes", c.hiddenSceneDetails}});
@@ -212,7 +208,7 @@ std::string junitReport(const GradeReport& report) {
         << "  <testsuite name=\"pathlab-grader\" tests=\"" << tests << "\" failures=\"" << failures << "\">\n";
     for (const LabGrade& lab : report.labs) {
         for (const CheckResult& c : lab.checks) {
-            out << "    <testcase classname=\"" << labName(lab.lab) << "\" name=\"" << escapeXml(c.name) << "\">\n";
+            out << "    <testcase classname=\"" << labName(lab.lab) << "\" name=\"" << escapeXml(c.name()) << "\">\n";
             if (!c.gradedHere)
                 out << "      <skipped message=\"" << escapeXml(c.summary) << "\"/>\n";
             else if (!c.passed)
@@ -231,7 +227,7 @@ std::string gradescopeReport(const GradeReport& report, const std::string& hidde
     for (const LabGrade& lab : report.labs) {
         for (const CheckResult& c : lab.checks)
             if (c.gradedHere)
-                tests.push_back({{"name", std::string(labName(lab.lab)) + ": " + c.name},
+                tests.push_back({{"name", std::string(labName(lab.lab)) + ": " + c.name()},
                                  {"score", c.score},
                                  {"max_score", c.maxScore},
                                  {"status", c.passed ? "passed" : "failed"},
@@ -268,7 +264,7 @@ void writeHtmlReport(const GradeReport& report, const std::string& folder) {
     auto png = [&](int w, int h, const std::vector<float>& rgb) {
         const std::string path = folder + "/.picture.png";
         writeImage(path, w, h, rgb);
-        const std::string data = base64(readBytes(path));
+        const std::string data = base64(readFile(path));
         fs::remove(path);
         return renderImage(data, w, h);
     };
@@ -278,7 +274,7 @@ void writeHtmlReport(const GradeReport& report, const std::string& folder) {
         for (size_t i = 0; i < rgba.size(); i += 4) rgb.insert(rgb.end(), {rgba[i], rgba[i + 1], rgba[i + 2]});
         const std::string path = folder + "/.heat.png";
         writeDisplayImage(path, w, h, rgb);
-        const std::string data = base64(readBytes(path));
+        const std::string data = base64(readFile(path));
         fs::remove(path);
         return renderImage(data, w, h);
     };
@@ -289,14 +285,14 @@ void writeHtmlReport(const GradeReport& report, const std::string& folder) {
          << "<table><tr><th>lab</th><th>check</th><th>score</th><th>result</th></tr>\n";
     for (const LabGrade& lab : report.labs)
         for (const CheckResult& c : lab.checks)
-            html << "<tr><td>" << labName(lab.lab) << "</td><td>" << c.name << "</td><td>" << c.score << " / "
+            html << "<tr><td>" << labName(lab.lab) << "</td><td>" << c.name() << "</td><td>" << c.score << " / "
                  << c.maxScore << "</td><td class=\""
                  << (!c.gradedHere ? "\">graded by the instructor" : c.passed ? "pass\">pass" : "fail\">FAIL")
                  << "</td></tr>\n";
     html << "</table>\n";
     for (const LabGrade& lab : report.labs) {
         html << "<h2>" << labName(lab.lab) << "</h2>\n";
-        for (const CheckResult& c : lab.checks) html << "<h3>" << c.name << "</h3><pre>" << escapeXml(checkText(c)) << "</pre>\n";
+        for (const CheckResult& c : lab.checks) html << "<h3>" << c.name() << "</h3><pre>" << escapeXml(checkText(c)) << "</pre>\n";
         for (const auto& p : lab.pictures) {
             if (p.student.empty() || p.reference.size() != p.student.size()) continue;
             html << "<p>" << p.scene << ": yours, the reference, |yours − reference| / reference "

@@ -19,10 +19,12 @@ Rubric loadRubric(const std::string& path) {
         j.erase("about");
         r.hash = ContentHash().add(j.dump()).hex();
         for (Lab lab : AllLabs) {
-            const auto& p = j.at("points").at(std::string(labName(lab)));
-            r.points[static_cast<int>(lab)] = {p.at("correctness"), p.at("noise"), p.at("speed")};
-            r.correctnessSpp[static_cast<int>(lab)] = j.at("correctness").at("spp").at(std::string(labName(lab)));
-            r.speedSpp[static_cast<int>(lab)] = j.at("speed").at("spp").at(std::string(labName(lab)));
+            const std::string name(labName(lab));
+            const auto& p = j.at("points").at(name);
+            LabRubric& l = r.labs[lab];
+            l.points = {p.at("correctness"), p.at("noise"), p.at("speed")};
+            l.correctnessSpp = j.at("correctness").at("spp").at(name);
+            l.speedSpp = j.at("speed").at("spp").at(name);
         }
         r.maxDepth = j.at("parameters").at("max_depth");
         r.continueProb = j.at("parameters").at("continue_prob");
@@ -47,7 +49,7 @@ Rubric loadRubric(const std::string& path) {
             if (measure != "samples_per_second" && measure != "efficiency")
                 throw InputError(path + ": speed.judged_by." + std::string(labName(lab)) + " is '" +
                                  measure + "'; it must be samples_per_second or efficiency");
-            r.speedJudgedBy[static_cast<int>(lab)] = measure == "efficiency" ? SpeedMeasure::Efficiency
+            r.labs[lab].speedJudgedBy = measure == "efficiency" ? SpeedMeasure::Efficiency
                                                                              : SpeedMeasure::SamplesPerSecond;
         }
         // Optional, as judged_by: a rubric written before they existed grades as it did, plus

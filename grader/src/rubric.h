@@ -1,9 +1,11 @@
 #pragma once
 /// The instructor-editable rubric (grader/rubric.json): points, thresholds, render sizes.
 
+#include "by_lab.h"
+#include "check_kind.h"
+
 #include "pathlab/lab_registry.h"
 
-#include <array>
 #include <string>
 #include <vector>
 
@@ -11,6 +13,11 @@ namespace pathlab::grader {
 
 struct LabPoints {
     double correctness = 0, noise = 0, speed = 0;
+
+    /// The points of one check.
+    double of(CheckKind check) const {
+        return check == CheckKind::Correctness ? correctness : check == CheckKind::Noise ? noise : speed;
+    }
 };
 
 /// What "as fast as the reference" means for a lab (rubric: speed.judged_by).
@@ -27,14 +34,21 @@ struct ParameterCheck {
     float continueProb = 0.5f;
 };
 
+/// What the rubric sets for each lab apart.
+struct LabRubric {
+    LabPoints points;
+    int correctnessSpp = 0; ///< samples per pixel of each correctness render
+    int speedSpp = 0;       ///< samples per pixel of each timed render
+    SpeedMeasure speedJudgedBy = SpeedMeasure::SamplesPerSecond; ///< where the rubric is silent
+};
+
 struct Rubric {
-    std::array<LabPoints, 4> points;       ///< by Lab
+    ByLab<LabRubric> labs;
     int maxDepth = 3;
     float continueProb = 0.8f;             ///< lab 4 is graded here: finite variance on VI2
     double alpha = 1e-3;                   ///< family-wise false-fail rate of one correctness check
     int seeds = 10;
     int width = 64, height = 64, tiles = 4;
-    std::array<int, 4> correctnessSpp{};
     std::vector<std::string> scenes;       ///< public scenes, by name in models/
     double maxNoiseRatio = 1.5;
     std::string noiseScene;
@@ -42,8 +56,6 @@ struct Rubric {
     int speedRuns = 5;
     std::string speedScene;
     int speedWidth = 256, speedHeight = 256;
-    std::array<int, 4> speedSpp{};
-    std::array<SpeedMeasure, 4> speedJudgedBy{}; ///< by Lab; samples/s where the rubric is silent
     ParameterCheck parameterCheck;
     double secondsPerRun = 30;
     long long memoryBytes = 4LL << 30;
@@ -53,6 +65,8 @@ struct Rubric {
     /// A fingerprint of every setting (the file's JSON, reformatted, without "about"): each
     /// result records it, so that results graded under another rubric are never mixed.
     std::string hash;
+
+    const LabRubric& forLab(Lab lab) const { return labs[lab]; }
 };
 
 /// Reads a rubric; throws InputError naming the file and the missing or wrong entry.

@@ -6,12 +6,12 @@ namespace pathlab::grader {
 
 namespace {
 
-/// "branching 8, uniform 32, importance 16, roulette 32"
-std::string perLab(const std::array<int, 4>& values) {
+/// "branching 8, uniform 32, importance 16, roulette 32": one of LabRubric's counts by lab.
+std::string perLab(const Rubric& r, int LabRubric::*count) {
     std::string text;
     for (Lab lab : AllLabs)
         text += (text.empty() ? "" : ", ") + std::string(labName(lab)) + " " +
-                std::to_string(values[static_cast<int>(lab)]);
+                std::to_string(r.forLab(lab).*count);
     return text;
 }
 
@@ -22,7 +22,7 @@ std::string rubricText(const Rubric& r, const std::string& rubricPath, int hidde
     out << "PathLab rubric: " << rubricPath << " (hash " << r.hash << ")\n\npoints\n";
     double total = 0;
     for (Lab lab : AllLabs) {
-        const LabPoints& p = r.points[static_cast<int>(lab)];
+        const LabPoints& p = r.forLab(lab).points;
         const double labTotal = p.correctness + p.noise + p.speed;
         total += labTotal;
         out << "  " << labName(lab) << std::string(12 - labName(lab).size(), ' ') << "correctness "
@@ -35,7 +35,7 @@ std::string rubricText(const Rubric& r, const std::string& rubricPath, int hidde
         << "x" << r.tiles << " tiles, agrees with the reference's (t-tests: a correct lab\n  fails "
            "with probability at most " << r.alpha << ", and a failure counts only if fresh seeds fail "
            "again)\n"
-        << "  samples per pixel: " << perLab(r.correctnessSpp) << "\n"
+        << "  samples per pixel: " << perLab(r, &LabRubric::correctnessSpp) << "\n"
         << "  labs 1-3 at maxDepth " << r.maxDepth << "; lab 4 at continueProb " << r.continueProb << "\n"
         << "  public scenes (models/):";
     for (const std::string& scene : r.scenes) out << " " << scene;
@@ -54,10 +54,10 @@ std::string rubricText(const Rubric& r, const std::string& rubricPath, int hidde
 
     out << "\nspeed: at least " << r.minSpeedRatio << " times the reference solution's, the median of "
         << r.speedRuns << " interleaved timed renders of " << r.speedWidth << "x" << r.speedHeight
-        << " on " << r.speedScene << "\n  samples per pixel: " << perLab(r.speedSpp) << "\n  judged by:";
+        << " on " << r.speedScene << "\n  samples per pixel: " << perLab(r, &LabRubric::speedSpp) << "\n  judged by:";
     for (Lab lab : AllLabs)
         out << " " << labName(lab) << " "
-            << (r.speedJudgedBy[static_cast<int>(lab)] == SpeedMeasure::Efficiency ? "efficiency" : "samples/s")
+            << (r.forLab(lab).speedJudgedBy == SpeedMeasure::Efficiency ? "efficiency" : "samples/s")
             << (lab == Lab::Roulette ? "" : ",");
     out << "\n\nlimits: " << r.secondsPerRun << " s per render (scaled to the machine's speed), "
         << (r.memoryBytes >> 20) << " MB of memory\n";

@@ -4,11 +4,21 @@
 /// explained with both labs' rays per sample.
 
 #include "grading.h"
+#include "noise_check.h"
 
 namespace pathlab::grader {
 
-/// `correct`: the correctness verdict (speed counts only for a correct lab). Reads the noise
-/// check's variances from `grade` for the efficiency; sets the figures in `grade`.
-CheckResult checkSpeed(const GraderSetup& setup, Lab lab, bool correct, LabGrade& grade);
+/// The verdict and the figures measured on the way (LabGrade's fields of the same names).
+struct SpeedOutcome {
+    CheckResult check;
+    double studentSamplesPerSecond = 0, solutionSamplesPerSecond = 0; ///< the timed runs' medians
+    RaysPerSample studentRays, solutionRays;
+    double efficiencyRatio = 0; ///< 0: unknown
+};
+
+/// `correct`: the correctness verdict (speed counts only for a correct lab); `variances`: the
+/// noise check's, for the efficiency; `startUps`: the grading's start-up measurements.
+SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, bool correct,
+                        const SampleVariances& variances, StartUpTimes& startUps);
 
 } // namespace pathlab::grader

@@ -52,7 +52,7 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
     } else {
         const SubmissionLibrary library = buildSubmissionLibrary(grader.build, grader.kit, sources, build, policy);
         GraderSetup setup;
-        setup.student = {grader.build.viewer, Implementation::Student, library.library, policy, {}};
+        setup.student = {grader.build.viewer, Implementation::Student, library.library.values, policy, {}};
         const std::string& solutions = grader.kit.solutionsLibrary;
         setup.solution = {grader.build.viewer, Implementation::Student,
                           {solutions, solutions, solutions, solutions}, policy, {}};
@@ -64,10 +64,10 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
         setup.threads = grader.threads;
         setup.measureSpeed = grader.measureSpeed;
         setup.runSeconds = grader.runSeconds;
+        StartUpTimes startUps; // this submission's: its labs' libraries are its own
         std::string broken, unlinked; // names of the labs that do not compile, do not link
         for (Lab lab : AllLabs) {
-            const int i = static_cast<int>(lab);
-            const LabCompilation& compiled = library.labs[i];
+            const LabCompilation& compiled = library.labs[lab];
             if (compiled.status == LabCompilation::Status::NotSubmitted) {
                 report.labs.push_back(ungradedLab(grader.rubric, lab, grader.measureSpeed, "not submitted", {}));
             } else if (compiled.status == LabCompilation::Status::Failed) {
@@ -77,15 +77,15 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
             } else if (!library.linked(lab)) {
                 unlinked += (unlinked.empty() ? "" : " ") + std::string(labName(lab));
                 report.labs.push_back(ungradedLab(grader.rubric, lab, grader.measureSpeed,
-                                                  "does not link", {library.problem[i]}));
+                                                  "does not link", {library.problem[lab]}));
             } else {
-                report.labs.push_back(gradeLab(setup, lab));
+                report.labs.push_back(gradeLab(setup, lab, startUps));
             }
         }
         outcome.status = "graded";
         std::string missing;
         for (Lab lab : AllLabs)
-            if (library.labs[static_cast<int>(lab)].status == LabCompilation::Status::NotSubmitted)
+            if (library.labs[lab].status == LabCompilation::Status::NotSubmitted)
                 missing += (missing.empty() ? "" : " ") + std::string(labName(lab));
         if (!missing.empty()) outcome.status += "; not submitted: " + missing;
         if (!broken.empty()) outcome.status += "; does not compile: " + broken;
@@ -107,15 +107,15 @@ std::string resultJson(const SubmissionOutcome& outcome, const std::string& subm
     for (const LabGrade& lab : outcome.report.labs) {
         nlohmann::json checks = nlohmann::json::object();
         for (const CheckResult& c : lab.checks)
-            checks[c.name] = {{"score", c.score}, {"max_score", c.maxScore}, {"passed", c.passed},
-                              {"graded_here", c.gradedHere}};
+            checks[c.name()] = {{"score", c.score}, {"max_score", c.maxScore}, {"passed", c.passed},
+                                {"graded_here", c.gradedHere}};
         labs[std::string(labName(lab.lab))] = {{"score", lab.score()}, {"max_score", lab.maxScore()},
                                                {"checks", checks}};
         if (!outcome.intake.taken.count(std::string(labName(lab.lab)) + ".cpp"))
             missing.push_back(std::string(labName(lab.lab)));
         for (const CheckResult& c : lab.checks)
             if (!c.passed && !c.diagnosis.empty())
-                diagnoses.push_back({{"lab", labName(lab.lab)}, {"check", c.name}, {"diagnosis", c.diagnosis}});
+                diagnoses.push_back({{"lab", labName(lab.lab)}, {"check", c.name()}, {"diagnosis", c.diagnosis}});
     }
     nlohmann::json taken = nlohmann::json::object();
     for (const auto& [name, where] : outcome.intake.taken) taken[name] = where;

@@ -10,46 +10,27 @@ The hostile lab files live in tests/grader/hostile/; @OUTSIDE@, @SOURCE@ and @PO
 filled in here. The rubric is the public one with fewer seeds and smaller timed renders, so that
 the test is quick, and a lenient speed threshold; the checks and the sandbox are the same.
 """
-import argparse
 import csv
-import io
 import json
 import os
 import shutil
 import signal
 import socket
 import subprocess
-import sys
 import tarfile
 import tempfile
 import threading
 import time
 import zipfile
 
-parser = argparse.ArgumentParser()
-parser.add_argument("--build", required=True)
-parser.add_argument("--source", required=True)
-args = parser.parse_args()
-args.source = os.path.abspath(args.source)
-GRADER = os.path.join(args.build, "grader")
+from support import LABS, arguments, check, finish, grader, write
+
+args = arguments()
+GRADER = grader(args)
 SOLUTIONS = os.path.join(args.source, "solutions")
 STUBS = os.path.join(args.source, "labs")
 HOSTILE = os.path.join(args.source, "tests", "grader", "hostile")
 MUTANTS = os.path.join(args.source, "tests", "grader", "mutants")
-LABS = ("branching", "uniform", "importance", "roulette")
-failures = []
-
-
-def check(condition, what):
-    print(("PASS " if condition else "FAIL ") + what, flush=True)
-    if not condition:
-        failures.append(what)
-
-
-def write(path, text):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(text)
 
 
 def copy_labs(source, folder, labs=LABS):
@@ -304,9 +285,7 @@ def main():
               == open(os.path.join(part_out, "gradebook.csv")).read(),
               "two shards of 3 submissions merge into the gradebook of the unsharded batch")
         listener.running = False
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        sys.exit(1)
+    finish()
 
 
 main()

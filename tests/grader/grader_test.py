@@ -8,27 +8,16 @@ gradings of the solutions' correctness and noise with distinct seeds, which shou
 (each correctness check has a family-wise false-fail rate <= 1e-3 before its retry on fresh
 seeds, so about 1e-6 after it).
 """
-import argparse
 import json
 import os
 import subprocess
-import sys
 import tempfile
 import xml.etree.ElementTree as ET
 
-parser = argparse.ArgumentParser()
-parser.add_argument("--build", required=True)
-parser.add_argument("--source", required=True)
-parser.add_argument("--slow", action="store_true")
-args = parser.parse_args()
-GRADER = os.path.join(args.build, "grader")
-failures = []
+from support import arguments, check, finish, grader
 
-
-def check(condition, what):
-    print(("PASS " if condition else "FAIL ") + what, flush=True)
-    if not condition:
-        failures.append(what)
+args = arguments((["--slow"], {"action": "store_true"}))
+GRADER = grader(args)
 
 
 def grade(viewer, extra, tmp, name):
@@ -187,6 +176,4 @@ with tempfile.TemporaryDirectory() as tmp:
         solutions_pass(tmp)
         stubs_fail(tmp)
         mutants(tmp, slow=False)
-if failures:
-    print(f"{len(failures)} check(s) failed")
-    sys.exit(1)
+finish()

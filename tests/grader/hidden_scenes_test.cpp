@@ -24,7 +24,7 @@ GradeReport reportWithHiddenScene() {
     LabGrade lab;
     lab.lab = Lab::Uniform;
     CheckResult correctness;
-    correctness.name = "correctness";
+    correctness.kind = CheckKind::Correctness;
     correctness.maxScore = 6;
     correctness.summary = "mean radiance differs from the depth-limited image";
     correctness.details = {"furnace: observed/expected red 0.826"};

@@ -16,7 +16,6 @@ The rubric is the kit's, lighter (32x32 pixels, 6 seeds (with 4, a t-test of 3 d
 freedom can miss even a reference wrong by half after the Holm correction), the furnace as the only public scene,
 no speed check), so that the whole term takes a few minutes; the checks are the same.
 """
-import argparse
 import csv
 import json
 import os
@@ -28,36 +27,19 @@ import tempfile
 import time
 import zipfile
 
-parser = argparse.ArgumentParser()
-parser.add_argument("--build", required=True)
-parser.add_argument("--source", required=True)
-parser.add_argument("--keep", help="work in this (new) folder and keep it, to look at afterwards")
-args = parser.parse_args()
-args.source = os.path.abspath(args.source)
-GRADER = os.path.join(os.path.abspath(args.build), "grader")
+from support import LABS, arguments, check, finish, grader, write
+
+args = arguments((["--keep"], {"help": "work in this (new) folder and keep it, to look at afterwards"}))
+GRADER = grader(args)
 SOLUTIONS = os.path.join(args.source, "solutions")
 MODELS = os.path.join(args.source, "models")
-LABS = ("branching", "uniform", "importance", "roulette")
 SECRET = "secret_lantern"  # the hidden scene's name: no student may read it
-failures = []
 timings = {}
-
-
-def check(condition, what):
-    print(("PASS " if condition else "FAIL ") + what, flush=True)
-    if not condition:
-        failures.append(what)
 
 
 def read(path):
     with open(path, errors="replace") as f:
         return f.read()
-
-
-def write(path, text):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(text)
 
 
 def add_hidden_scene(folder):
@@ -254,9 +236,7 @@ def main():
               "make gradescope packs an untracked hidden scene and lists it")
 
     print("timings: " + ", ".join(f"{step} {seconds:.0f} s" for step, seconds in timings.items()))
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        sys.exit(1)
+    finish()
 
 
 main()

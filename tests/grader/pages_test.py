@@ -17,7 +17,6 @@ Usage: pages_test.py --build BUILD [--screenshots DIR] (DIR keeps summary.png an
 Skipped (exit 77) without Chromium (Debian's package `chromium`, which scripts/install-deps.sh
 installs on Debian).
 """
-import argparse
 import html
 import json
 import os
@@ -31,6 +30,8 @@ import tempfile
 import time
 import zlib
 
+from support import arguments, check, exit_code, grader
+
 SKIPPED = 77  # the test's SKIP_RETURN_CODE (tests/CMakeLists.txt)
 WINDOW = (1200, 2000)  # CSS pixels: the furnace's row of the feedback page lies inside
 NARROW_COLUMN = 200  # CSS pixels: the page's body narrower than a render (Chromium's
@@ -41,19 +42,8 @@ FRAME_SEARCH = 3  # CSS pixels outside a render where its frame must be; a space
 DARKER = 60  # levels of 255 that the frame is darker than the page by, at least
 NEAR_WHITE = 225  # the furnace's render, on average, is at least this light
 
-parser = argparse.ArgumentParser()
-parser.add_argument("--build", required=True)
-parser.add_argument("--screenshots", help="a folder to keep the pages' screenshots in")
-args = parser.parse_args()
-args.build = os.path.abspath(args.build)
-GRADER = os.path.join(args.build, "grader")
-failures = []
-
-
-def check(condition, what):
-    print(("PASS " if condition else "FAIL ") + what, flush=True)
-    if not condition:
-        failures.append(what)
+args = arguments((["--screenshots"], {"help": "a folder to keep the pages' screenshots in"}), source=False)
+GRADER = grader(args)
 
 
 # Run at the page's load event, when the embedded images are decoded and laid out. The results go
@@ -363,10 +353,7 @@ def main():
         check_feedback(browser, tmp, feedback, os.path.join(shots, "feedback.png"))
         check_summary(browser, tmp, summary, os.path.join(shots, "summary.png"))
     print(f"the pages made and checked in {time.monotonic() - start:.0f} s")
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        return 1
-    return 0
+    return exit_code()
 
 
 if __name__ == "__main__":

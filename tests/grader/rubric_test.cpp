@@ -52,7 +52,7 @@ std::string errorOf(const nlohmann::json& rubric) {
 
 TEST_CASE("the kit's rubric: speed by samples/s, parameter check at maxDepth 5 and q 0.5", "[grader]") {
     const Rubric r = load(kitRubric());
-    for (Lab lab : AllLabs) CHECK(r.speedJudgedBy[static_cast<int>(lab)] == SpeedMeasure::SamplesPerSecond);
+    for (Lab lab : AllLabs) CHECK(r.forLab(lab).speedJudgedBy == SpeedMeasure::SamplesPerSecond);
     CHECK(r.parameterCheck.scene == "furnace");
     CHECK(r.parameterCheck.maxDepth == 5);
     CHECK(r.parameterCheck.continueProb == 0.5f);
@@ -62,8 +62,8 @@ TEST_CASE("a rubric may judge one lab's speed by efficiency", "[grader]") {
     nlohmann::json j = kitRubric();
     j["speed"]["judged_by"]["uniform"] = "efficiency";
     const Rubric r = load(j);
-    CHECK(r.speedJudgedBy[static_cast<int>(Lab::Uniform)] == SpeedMeasure::Efficiency);
-    CHECK(r.speedJudgedBy[static_cast<int>(Lab::Importance)] == SpeedMeasure::SamplesPerSecond);
+    CHECK(r.forLab(Lab::Uniform).speedJudgedBy == SpeedMeasure::Efficiency);
+    CHECK(r.forLab(Lab::Importance).speedJudgedBy == SpeedMeasure::SamplesPerSecond);
 }
 
 TEST_CASE("a rubric written before judged_by and parameter_check gets the defaults", "[grader]") {
@@ -71,7 +71,7 @@ TEST_CASE("a rubric written before judged_by and parameter_check gets the defaul
     j["speed"].erase("judged_by");
     j.erase("parameter_check");
     const Rubric r = load(j);
-    CHECK(r.speedJudgedBy[static_cast<int>(Lab::Roulette)] == SpeedMeasure::SamplesPerSecond);
+    CHECK(r.forLab(Lab::Roulette).speedJudgedBy == SpeedMeasure::SamplesPerSecond);
     CHECK(r.parameterCheck.maxDepth == 5);
 }
 
