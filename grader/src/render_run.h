@@ -2,6 +2,7 @@
 /// One render of one lab through a viewer process: the grader never runs lab code in its own
 /// process, so a crash, a hang or a runaway allocation costs one run, not the grading.
 
+#include "by_lab.h"
 #include "process_runner.h"
 #include "sandbox.h"
 
@@ -9,7 +10,6 @@
 #include "pathlab/ray_counters.h"
 
 #include <algorithm>
-#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -25,7 +25,7 @@ struct LabRunner {
     /// the shared library labLibraries[L] (grader batch, grader submission). A render loads the
     /// library of the lab it renders and no other, so a lab file that hangs, crashes or exits
     /// while it loads costs only its own lab.
-    std::array<std::string, 4> labLibraries;
+    ByLab<std::string> labLibraries;
     SandboxPolicy sandbox;    ///< for sandboxed runs
     std::vector<int> cpus;    ///< for direct runs: the cores to use (empty: any)
 
@@ -35,7 +35,7 @@ struct LabRunner {
         return std::any_of(labLibraries.begin(), labLibraries.end(),
                            [](const std::string& library) { return !library.empty(); });
     }
-    const std::string& libraryFor(Lab lab) const { return labLibraries[static_cast<int>(lab)]; }
+    const std::string& libraryFor(Lab lab) const { return labLibraries[lab]; }
 };
 
 struct RenderRequest {

@@ -52,10 +52,11 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
     } else {
         const SubmissionLibrary library = buildSubmissionLibrary(grader.build, grader.kit, sources, build, policy);
         GraderSetup setup;
-        setup.student = {grader.build.viewer, Implementation::Student, library.library.values, policy, {}};
-        const std::string& solutions = grader.kit.solutionsLibrary;
-        setup.solution = {grader.build.viewer, Implementation::Student,
-                          {solutions, solutions, solutions, solutions}, policy, {}};
+        setup.student = {grader.build.viewer, Implementation::Student, library.library, policy, {}};
+        // The solutions' one library holds every lab.
+        ByLab<std::string> solutions;
+        for (Lab lab : AllLabs) solutions[lab] = grader.kit.solutionsLibrary;
+        setup.solution = {grader.build.viewer, Implementation::Student, solutions, policy, {}};
         setup.timing = grader.timing;
         setup.rubric = grader.rubric;
         setup.scenes = grader.scenes;

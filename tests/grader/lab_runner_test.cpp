@@ -12,7 +12,7 @@ TEST_CASE("a runner with a library for any lab is sandboxed, and renders each la
     LabRunner linkedIn;
     CHECK_FALSE(linkedIn.sandboxed());
     LabRunner uniformOnly;
-    uniformOnly.labLibraries[static_cast<int>(Lab::Uniform)] = "labs-uniform.so";
+    uniformOnly.labLibraries[Lab::Uniform] = "labs-uniform.so";
     CHECK(uniformOnly.sandboxed());
     CHECK(uniformOnly.libraryFor(Lab::Uniform) == "labs-uniform.so");
     CHECK(uniformOnly.libraryFor(Lab::Branching).empty());
