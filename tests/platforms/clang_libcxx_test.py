@@ -35,10 +35,10 @@ import time
 SKIP = 77
 
 
-def run(command, cwd, what, timings):
+def run(command, cwd, what, timings, env=None):
     print("$ " + " ".join(command), flush=True)
     start = time.monotonic()
-    result = subprocess.run(command, cwd=cwd)
+    result = subprocess.run(command, cwd=cwd, env=env)
     timings.append((what, time.monotonic() - start))
     if result.returncode != 0:
         print(f"clang + libc++: {what} failed (exit {result.returncode})", flush=True)
@@ -90,8 +90,13 @@ def main():
         return 1
 
     run(["ctest", "--output-on-failure", "-j", str(args.jobs),
-         "-R", r"^(sampling|scene|estimators(\.lab[1-4])?|grader|viewer\.window)$"],
+         "-R", r"^(sampling|scene|estimators(\.lab[1-4])?|grader)$"],
         args.build, "tests", timings)
+    # The window without LeakSanitizer: Mesa's software OpenGL, unloaded before the check at
+    # exit, leaves two blocks of its own that LSan can only call "<unknown module>", which no
+    # suppression can name. Every other program here, the viewer headless included, is checked.
+    run(["ctest", "--output-on-failure", "-R", r"^viewer\.window$"], args.build, "window test",
+        timings, dict(os.environ, ASAN_OPTIONS="detect_leaks=0"))
     # The render tests but the one that renders 4 labs to 1024 spp to see the noise figure halve:
     # its code is the other render tests', and sanitized it is most of this test's time. The
     # kit's own build runs it (ctest `render`).
