@@ -74,7 +74,9 @@ void setLimit(int resource, rlim_t value) {
                              const ProcessOptions& options, int outputFd, int collectFd) {
     // Its own process group, so that a timeout kills everything it started.
     ::setpgid(0, 0);
+#ifndef PATHLAB_SANITIZED
     if (limits.memoryBytes > 0) setLimit(RLIMIT_AS, static_cast<rlim_t>(limits.memoryBytes));
+#endif
     if (limits.cpuSeconds > 0) setLimit(RLIMIT_CPU, static_cast<rlim_t>(limits.cpuSeconds + 1));
     if (limits.fileBytes > 0) setLimit(RLIMIT_FSIZE, static_cast<rlim_t>(limits.fileBytes));
     if (limits.processes > 0) setLimit(RLIMIT_NPROC, static_cast<rlim_t>(limits.processes));
