@@ -5,6 +5,9 @@ JOBS ?= $(shell nproc 2>/dev/null || sysctl -n hw.ncpu 2>/dev/null || echo 2)
 # Built for this machine's instruction set: a build here runs here (NATIVE=OFF for a build that
 # runs elsewhere). Images are the same either way (framework/CMakeLists.txt).
 NATIVE ?= ON
+# Warnings in PathLab's own code are errors with WARNINGS_AS_ERRORS=ON, as CI builds (.ci/run);
+# off by default, so that a newer compiler's new warning does not stop a student's build.
+WARNINGS_AS_ERRORS ?= OFF
 
 .PHONY: run build test test-labs test-slow grade report bench deps clean handouts handouts-html \
         student-release gradescope
@@ -17,7 +20,8 @@ deps:
 	@scripts/install-deps.sh
 
 build: deps
-	@cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DPATHLAB_NATIVE=$(NATIVE) > /dev/null
+	@cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DPATHLAB_NATIVE=$(NATIVE) \
+	      -DPATHLAB_WARNINGS_AS_ERRORS=$(WARNINGS_AS_ERRORS) > /dev/null
 	@cmake --build $(BUILD) -j $(JOBS)
 
 # The Cornell box, in a window where there is a display, otherwise headless into an image file:

@@ -36,7 +36,10 @@ else()
 endif()
 
 # pathlab_strict_warnings(TARGET...): warnings are errors in these targets when
-# PATHLAB_WARNINGS_AS_ERRORS is on (the framework, the labs, the viewer; CI's clang build).
+# PATHLAB_WARNINGS_AS_ERRORS is on: every target compiled from PathLab's own code (the
+# framework and its image plug-in, the labs, the viewer, the grader, the benchmark, the tests),
+# none compiled from a third party's (Dear ImGui, tinyobjloader). CI's builds turn it on;
+# students' builds leave it off, so a newer compiler's new warning never stops them.
 function(pathlab_strict_warnings)
     if(PATHLAB_WARNINGS_AS_ERRORS)
         foreach(target IN LISTS ARGN)
@@ -44,3 +47,29 @@ function(pathlab_strict_warnings)
         endforeach()
     endif()
 endfunction()
+
+# PATHLAB_SANITIZE: the sanitizers every target is compiled and linked with, as -fsanitize takes
+# them ("address,undefined", "thread"; empty, the default, for none). Shared libraries included:
+# the image plug-in too, whose C interface is the same whichever C++ library it is built against.
+# Not the lab library `grader batch` compiles from a submission at run time
+# (apps/viewer/CMakeLists.txt): a student's code is graded as students build it.
+set(PATHLAB_SANITIZE "" CACHE STRING
+    "Sanitizers for every target, as -fsanitize takes them: address,undefined or thread")
+if(PATHLAB_SANITIZE)
+    if(MSVC)
+        message(FATAL_ERROR "PATHLAB_SANITIZE: the kit passes -fsanitize, which MSVC does not take")
+    endif()
+    # Whole stacks in the reports, even through -O3 code, with file and line (-g1: line tables
+    # only, which cost little to compile).
+    set(pathlab_sanitize_flags -fsanitize=${PATHLAB_SANITIZE} -fno-omit-frame-pointer -g1)
+    string(REPLACE "," ";" pathlab_sanitizers "${PATHLAB_SANITIZE}")
+    if("undefined" IN_LIST pathlab_sanitizers)
+        # Undefined behaviour stops the program, so a report fails its test instead of scrolling by.
+        list(APPEND pathlab_sanitize_flags -fno-sanitize-recover=undefined)
+    endif()
+    add_compile_options(${pathlab_sanitize_flags})
+    add_link_options(${pathlab_sanitize_flags})
+    # A sanitized program reserves terabytes of address space for its shadow memory, so the
+    # grader's runs get no address-space limit (RLIMIT_AS) there; their other limits stand.
+    add_compile_definitions(PATHLAB_SANITIZED)
+endif()

@@ -9,7 +9,8 @@ namespace pathlab::grader {
 
 struct ProcessLimits {
     double wallSeconds = 60;           ///< killed (with its whole process group) after this
-    long long memoryBytes = 4LL << 30; ///< address-space limit per process (RLIMIT_AS); 0 = none
+    /// address-space limit per process (RLIMIT_AS); 0 = none, and none in a sanitized build
+    long long memoryBytes = 4LL << 30;
     double cpuSeconds = 0;             ///< CPU time per process (RLIMIT_CPU); 0 = none
     long long fileBytes = 0;           ///< largest file it may write (RLIMIT_FSIZE); 0 = none
     int processes = 0;                 ///< processes of its user (RLIMIT_NPROC); 0 = none
