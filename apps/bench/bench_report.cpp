@@ -11,9 +11,7 @@ namespace {
 
 using nlohmann::json;
 
-double rate(size_t count, double seconds) {
-    return seconds > 0 ? count / seconds : 0;
-}
+double rate(size_t count, double seconds) { return seconds > 0 ? count / seconds : 0; }
 
 /// "12.3M": millions with three significant digits.
 std::string millions(double perSecond) {
@@ -117,9 +115,7 @@ void printMemory(const MemoryFigures& m, std::FILE* out) {
                  m.width, m.height, m.frames, m.peakMiB);
 }
 
-json rgb(const Color& c) {
-    return json::array({c.r, c.g, c.b});
-}
+json rgb(const Color& c) { return json::array({c.r, c.g, c.b}); }
 
 json rawJson(const TraversalTimes& t) {
     return {
@@ -200,16 +196,14 @@ json memoryJson(const MemoryFigures& m) {
 } // namespace
 
 void printReport(const BenchReport& report, std::FILE* out) {
-    for (const SceneFigures& s : report.scenes)
-        printScene(s, out);
+    for (const SceneFigures& s : report.scenes) printScene(s, out);
     printPeer(report.peer, out);
     printMemory(report.memory, out);
 }
 
 std::string reportJson(const BenchReport& report) {
     json scenes = json::array();
-    for (const SceneFigures& s : report.scenes)
-        scenes.push_back(sceneJson(s));
+    for (const SceneFigures& s : report.scenes) scenes.push_back(sceneJson(s));
     const json document = {{"pathlab_version", PATHLAB_VERSION},
                            {"cores", std::thread::hardware_concurrency()},
                            {"scenes", scenes},

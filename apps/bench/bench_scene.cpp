@@ -45,10 +45,8 @@ BenchScene peerSceneFromFile(const std::string& ecsFile, float lightScale) {
         } else if (t == "-pointlight" || t == "--pointlight") {
             if (i + 6 >= tokens.size())
                 throw inputErrorAt(tokens[i].file, tokens[i].line, t + " needs x y z r g b");
-            for (int k = 0; k < 3; ++k)
-                scene.arguments.push_back(tokens[++i].text);
-            for (int k = 0; k < 3; ++k)
-                scene.arguments.push_back(scaled(tokens[++i], lightScale));
+            for (int k = 0; k < 3; ++k) scene.arguments.push_back(tokens[++i].text);
+            for (int k = 0; k < 3; ++k) scene.arguments.push_back(scaled(tokens[++i], lightScale));
         }
     }
     return scene;
@@ -56,8 +54,7 @@ BenchScene peerSceneFromFile(const std::string& ecsFile, float lightScale) {
 
 RenderOptions renderOptionsFor(const BenchScene& scene, int width, int height) {
     std::vector<const char*> argv = {"bench"};
-    for (const std::string& a : scene.arguments)
-        argv.push_back(a.c_str());
+    for (const std::string& a : scene.arguments) argv.push_back(a.c_str());
     RenderOptions options = parseRenderOptions(static_cast<int>(argv.size()), argv.data());
     options.width = width;
     options.height = height;

@@ -41,11 +41,9 @@ std::vector<float> readPpm(const std::string& path, int width, int height) {
     size_t at = 0;
     std::vector<std::string> fields;
     while (fields.size() < 4 && at < bytes.size()) {
-        while (at < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[at])))
-            ++at;
+        while (at < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[at]))) ++at;
         const size_t start = at;
-        while (at < bytes.size() && !std::isspace(static_cast<unsigned char>(bytes[at])))
-            ++at;
+        while (at < bytes.size() && !std::isspace(static_cast<unsigned char>(bytes[at]))) ++at;
         fields.push_back(bytes.substr(start, at - start));
     }
     ++at; // exactly one white-space byte ends the header; pixel bytes may look like white space

@@ -24,8 +24,7 @@ using namespace pathlab::bench;
 /// The VI2 box beside this program (the build folder links models/), or as run from the source.
 std::string defaultScene() {
     const std::string name = "models/cornell_box_VI2_Specular.ecs";
-    const std::filesystem::path beside =
-        thisProgram().parent_path() / name;
+    const std::filesystem::path beside = thisProgram().parent_path() / name;
     return std::filesystem::exists(beside) ? beside.string() : name;
 }
 
@@ -33,8 +32,7 @@ std::string defaultScene() {
 /// the comparison with Embree's pathtracer renders it) when it is installed.
 std::vector<BenchScene> scenesToMeasure(const BenchOptions& options) {
     std::vector<BenchScene> scenes;
-    for (const std::string& file : options.scenes)
-        scenes.push_back(sceneFromFile(file));
+    for (const std::string& file : options.scenes) scenes.push_back(sceneFromFile(file));
     if (scenes.empty()) {
         scenes.push_back(sceneFromFile(defaultScene()));
         if (std::filesystem::is_regular_file(options.peerScene))
@@ -65,8 +63,7 @@ int runBench(BenchOptions options) {
     report.memory.note = "not measured (--peer-only)";
     if (!options.peerOnly) {
         std::fprintf(stderr, "bench: peak memory ...\n");
-        report.memory = measurePeakMemory(thisProgram(),
-                                          scenes.front(), options);
+        report.memory = measurePeakMemory(thisProgram(), scenes.front(), options);
     }
     printReport(report, stdout);
     if (!options.jsonFile.empty()) writeFileAtomically(options.jsonFile, reportJson(report));

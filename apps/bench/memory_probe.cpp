@@ -78,8 +78,7 @@ int runMemoryProbe(const BenchScene& benchScene, const BenchOptions& options) {
     settings.width = options.memoryWidth;
     settings.height = options.memoryHeight;
 
-    ProgressiveRenderer renderer(scene, options.threads, settings, {},
-                                         options.memoryFrames);
+    ProgressiveRenderer renderer(scene, options.threads, settings, {}, options.memoryFrames);
     // The window's side: take each new frame and turn it into display pixels.
     Frame frame;
     uint64_t generation = 0;

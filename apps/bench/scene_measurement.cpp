@@ -14,15 +14,13 @@ constexpr int ReplayRepeats = 3;
 
 TraversalTimes SceneFigures::raw() const {
     TraversalTimes total;
-    for (const SolutionFigures& s : solutions)
-        total += s.raw;
+    for (const SolutionFigures& s : solutions) total += s.raw;
     return total;
 }
 
 TraversalTimes SceneFigures::rawOneThread() const {
     TraversalTimes total;
-    for (const SolutionFigures& s : solutions)
-        total += s.rawOneThread;
+    for (const SolutionFigures& s : solutions) total += s.rawOneThread;
     return total;
 }
 

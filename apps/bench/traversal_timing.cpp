@@ -27,8 +27,7 @@ double fastest(tbb::task_arena& arena, size_t count, int repeats, Prepare prepar
         arena.execute([&] {
             tbb::parallel_for(tbb::blocked_range<size_t>(0, count, Grain),
                               [&](const tbb::blocked_range<size_t>& range) {
-                                  for (size_t i = range.begin(); i != range.end(); ++i)
-                                      trace(i);
+                                  for (size_t i = range.begin(); i != range.end(); ++i) trace(i);
                               });
         });
         const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;

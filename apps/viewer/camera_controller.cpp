@@ -39,9 +39,9 @@ CameraSettings move(const CameraSettings& camera, float forward, float right) {
 
 std::string cameraAsOptions(const CameraSettings& c) {
     char text[256];
-    std::snprintf(text, sizeof text, "-vp %g %g %g -vi %g %g %g -vu %g %g %g -fov %g",
-                  c.position.x, c.position.y, c.position.z, c.lookAt.x, c.lookAt.y, c.lookAt.z,
-                  c.up.x, c.up.y, c.up.z, c.fovDegrees);
+    std::snprintf(text, sizeof text, "-vp %g %g %g -vi %g %g %g -vu %g %g %g -fov %g", c.position.x,
+                  c.position.y, c.position.z, c.lookAt.x, c.lookAt.y, c.lookAt.z, c.up.x, c.up.y,
+                  c.up.z, c.fovDegrees);
     return text;
 }
 

@@ -35,7 +35,9 @@ void checkOutputs(const RenderOptions& options, const WindowOptions& window) {
 /// "render.exr" for seed 7 of several: "render-7.exr".
 std::string withSeed(const std::string& path, uint64_t seed) {
     const std::filesystem::path p(path);
-    return (p.parent_path() / (p.stem().string() + "-" + std::to_string(seed) + p.extension().string())).string();
+    return (p.parent_path() /
+            (p.stem().string() + "-" + std::to_string(seed) + p.extension().string()))
+        .string();
 }
 
 int renderToFile(const RenderOptions& options) {

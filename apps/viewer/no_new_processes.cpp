@@ -45,14 +45,19 @@ void forbidNewProcesses() {
 #if defined(__x86_64__)
         BPF_JUMP(BPF_JMP | BPF_JGE | BPF_K, 0x40000000u, 0, 1), // the x32 ABI
         ret(errnoReturn(EPERM)),
-        ifEqual(__NR_fork), ret(errnoReturn(EPERM)),
-        ifEqual(__NR_vfork), ret(errnoReturn(EPERM)),
+        ifEqual(__NR_fork),
+        ret(errnoReturn(EPERM)),
+        ifEqual(__NR_vfork),
+        ret(errnoReturn(EPERM)),
 #endif
-        ifEqual(__NR_execve), ret(errnoReturn(EPERM)),
-        ifEqual(__NR_execveat), ret(errnoReturn(EPERM)),
+        ifEqual(__NR_execve),
+        ret(errnoReturn(EPERM)),
+        ifEqual(__NR_execveat),
+        ret(errnoReturn(EPERM)),
         // clone3 passes its flags in memory, which a filter cannot read: "not implemented" makes
         // the C library fall back to clone, whose flags it can.
-        ifEqual(__NR_clone3), ret(errnoReturn(ENOSYS)),
+        ifEqual(__NR_clone3),
+        ret(errnoReturn(ENOSYS)),
         BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, __NR_clone, 0, 3),
         load(offsetof(seccomp_data, args[0])), // the flags' low 32 bits (little-endian)
         BPF_JUMP(BPF_JMP | BPF_JSET | BPF_K, CLONE_THREAD, 1, 0),

@@ -56,15 +56,16 @@ std::string firstNonfiniteText(const RenderStats& stats) {
 
 void printFrameLine(const Frame& frame) {
     const ViewSettings& s = frame.settings;
-    std::printf("frame %d: median %.2f fps (%.1f ms) over the last %zu frames, this frame %.2f fps; "
-                "%d spp, %.3g rays/s, noise %.4f, efficiency %s; lab %s, impl %s, max-depth %d, "
-                "continue-prob %.2f, size %dx%d, %s\n",
-                frame.number, perSecond(frame.medianFrameSeconds), 1000.0 * frame.medianFrameSeconds,
-                std::min<size_t>(frame.number, FrameRate::Window), perSecond(frame.frameSeconds),
-                frame.stats.spp, frame.raysPerSecond, frame.stats.noise, frame.stats.efficiencyText().c_str(),
-                std::string(labName(s.lab)).c_str(),
-                std::string(implementationName(s.implementation)).c_str(), s.parameters.maxDepth,
-                s.parameters.continueProb, s.width, s.height, s.split ? "split" : "single");
+    std::printf(
+        "frame %d: median %.2f fps (%.1f ms) over the last %zu frames, this frame %.2f fps; "
+        "%d spp, %.3g rays/s, noise %.4f, efficiency %s; lab %s, impl %s, max-depth %d, "
+        "continue-prob %.2f, size %dx%d, %s\n",
+        frame.number, perSecond(frame.medianFrameSeconds), 1000.0 * frame.medianFrameSeconds,
+        std::min<size_t>(frame.number, FrameRate::Window), perSecond(frame.frameSeconds),
+        frame.stats.spp, frame.raysPerSecond, frame.stats.noise,
+        frame.stats.efficiencyText().c_str(), std::string(labName(s.lab)).c_str(),
+        std::string(implementationName(s.implementation)).c_str(), s.parameters.maxDepth,
+        s.parameters.continueProb, s.width, s.height, s.split ? "split" : "single");
     std::fflush(stdout);
 }
 
@@ -88,7 +89,9 @@ std::string helpText() {
            "f        fullscreen on/off\n"
            "drag     orbit the camera\n"
            "WASD     move (arrow keys too)\n"
-           "1-" + std::to_string(AllLabs.size()) + "      lab: " + labs + "\n"
+           "1-" +
+           std::to_string(AllLabs.size()) + "      lab: " + labs +
+           "\n"
            "Tab      your code <-> reference solution\n"
            "+ / -    continueProb up / down (lab 4)\n"
            "[ / ]    maxDepth down / up (labs 1-3)\n"
@@ -115,8 +118,8 @@ public:
             reference_ = readImage(windowOptions.referenceImage);
         std::function<void(const Frame&)> print;
         if (windowOptions.printFrameRate) print = printFrameLine;
-        renderer_ = std::make_unique<ProgressiveRenderer>(scene, options.threads, settings_,
-                                                          print, windowOptions.frames);
+        renderer_ = std::make_unique<ProgressiveRenderer>(scene, options.threads, settings_, print,
+                                                          windowOptions.frames);
         glGenTextures(1, &texture_);
     }
 
@@ -148,10 +151,14 @@ public:
         const bool repeat = action == GLFW_REPEAT;
         const float step = 0.02f * length(settings_.camera.lookAt - settings_.camera.position);
         switch (key) {
-        case GLFW_KEY_W: case GLFW_KEY_UP: settings_.camera = move(settings_.camera, step, 0); return;
-        case GLFW_KEY_S: case GLFW_KEY_DOWN: settings_.camera = move(settings_.camera, -step, 0); return;
-        case GLFW_KEY_A: case GLFW_KEY_LEFT: settings_.camera = move(settings_.camera, 0, -step); return;
-        case GLFW_KEY_D: case GLFW_KEY_RIGHT: settings_.camera = move(settings_.camera, 0, step); return;
+        case GLFW_KEY_W:
+        case GLFW_KEY_UP: settings_.camera = move(settings_.camera, step, 0); return;
+        case GLFW_KEY_S:
+        case GLFW_KEY_DOWN: settings_.camera = move(settings_.camera, -step, 0); return;
+        case GLFW_KEY_A:
+        case GLFW_KEY_LEFT: settings_.camera = move(settings_.camera, 0, -step); return;
+        case GLFW_KEY_D:
+        case GLFW_KEY_RIGHT: settings_.camera = move(settings_.camera, 0, step); return;
         default: break;
         }
         if (repeat) return;
@@ -161,7 +168,8 @@ public:
             return;
         }
         switch (key) {
-        case GLFW_KEY_ESCAPE: case GLFW_KEY_Q: glfwSetWindowShouldClose(window_, GLFW_TRUE); break;
+        case GLFW_KEY_ESCAPE:
+        case GLFW_KEY_Q: glfwSetWindowShouldClose(window_, GLFW_TRUE); break;
         case GLFW_KEY_H: showHelp_ = !showHelp_; break;
         case GLFW_KEY_F: toggleFullscreen(); break;
         case GLFW_KEY_TAB:
@@ -174,14 +182,22 @@ public:
                                            ? Implementation::Solution
                                            : Implementation::Student;
             break;
-        case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD:
-            settings_.parameters.continueProb = std::min(0.95f, settings_.parameters.continueProb + 0.05f);
+        case GLFW_KEY_EQUAL:
+        case GLFW_KEY_KP_ADD:
+            settings_.parameters.continueProb =
+                std::min(0.95f, settings_.parameters.continueProb + 0.05f);
             break;
-        case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT:
-            settings_.parameters.continueProb = std::max(0.05f, settings_.parameters.continueProb - 0.05f);
+        case GLFW_KEY_MINUS:
+        case GLFW_KEY_KP_SUBTRACT:
+            settings_.parameters.continueProb =
+                std::max(0.05f, settings_.parameters.continueProb - 0.05f);
             break;
-        case GLFW_KEY_LEFT_BRACKET: settings_.parameters.maxDepth = std::max(0, settings_.parameters.maxDepth - 1); break;
-        case GLFW_KEY_RIGHT_BRACKET: settings_.parameters.maxDepth = std::min(64, settings_.parameters.maxDepth + 1); break;
+        case GLFW_KEY_LEFT_BRACKET:
+            settings_.parameters.maxDepth = std::max(0, settings_.parameters.maxDepth - 1);
+            break;
+        case GLFW_KEY_RIGHT_BRACKET:
+            settings_.parameters.maxDepth = std::min(64, settings_.parameters.maxDepth + 1);
+            break;
         case GLFW_KEY_R: renderer_->restart(); break;
         case GLFW_KEY_V: cycleViewMode(); break;
         case GLFW_KEY_SPACE: screenshot(""); break;
@@ -221,7 +237,7 @@ private:
     void cycleViewMode() {
         // The split view needs the reference solutions, which the student release lacks.
         if (mode_ == ViewMode::Image)
-            mode_ = reference_.width > 0 ? ViewMode::Difference
+            mode_ = reference_.width > 0    ? ViewMode::Difference
                     : solution::available() ? ViewMode::Split
                                             : ViewMode::Image;
         else if (mode_ == ViewMode::Difference && solution::available())
@@ -243,7 +259,8 @@ private:
         const GLFWvidmode* video = glfwGetVideoMode(monitor);
         glfwGetWindowPos(window_, &windowedX_, &windowedY_);
         glfwGetWindowSize(window_, &windowedWidth_, &windowedHeight_);
-        glfwSetWindowMonitor(window_, monitor, 0, 0, video->width, video->height, video->refreshRate);
+        glfwSetWindowMonitor(window_, monitor, 0, 0, video->width, video->height,
+                             video->refreshRate);
     }
 
     void onNewFrame() {
@@ -307,7 +324,8 @@ private:
     }
 
     void captureWindow(int width, int height) {
-        std::vector<unsigned char> bottomUp(3 * static_cast<size_t>(width) * height), rgb(bottomUp.size());
+        std::vector<unsigned char> bottomUp(3 * static_cast<size_t>(width) * height),
+            rgb(bottomUp.size());
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glReadBuffer(GL_BACK);
         glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bottomUp.data());
@@ -345,7 +363,8 @@ private:
             ImGui::Text("student %d spp | solution %d spp", frame_.stats.spp, frame_.otherSpp);
         if (mode_ == ViewMode::Difference)
             ImGui::Text("|image - ref| / ref: black 0, blue .125, green .25, yellow .375, red .5+;"
-                        " median %.3f", medianDifference_);
+                        " median %.3f",
+                        medianDifference_);
         if (frame_.stats.nonfinitePixels > 0)
             ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "%d pixels got NaN/inf samples%s",
                                frame_.stats.nonfinitePixels,
@@ -419,7 +438,9 @@ private:
     int status_ = 0;
 };
 
-ViewerWindow* windowOf(GLFWwindow* w) { return static_cast<ViewerWindow*>(glfwGetWindowUserPointer(w)); }
+ViewerWindow* windowOf(GLFWwindow* w) {
+    return static_cast<ViewerWindow*>(glfwGetWindowUserPointer(w));
+}
 
 /// glfwInit/glfwTerminate and ImGui's context, released whatever happens.
 struct GlfwSession {
@@ -437,8 +458,10 @@ struct GlfwSession {
 };
 
 int noDisplay(const std::string& why) {
-    std::fprintf(stderr, "viewer: no display (%s): the window cannot open; render headless "
-                         "instead with -o FILE.png --spp N (see viewer --help)\n", why.c_str());
+    std::fprintf(stderr,
+                 "viewer: no display (%s): the window cannot open; render headless "
+                 "instead with -o FILE.png --spp N (see viewer --help)\n",
+                 why.c_str());
     return 2;
 }
 
@@ -484,9 +507,8 @@ int runViewerWindow(const pathlab::RenderOptions& options,
     glfwSetMouseButtonCallback(session.window, [](GLFWwindow* w, int button, int action, int) {
         windowOf(w)->onMouseButton(button, action);
     });
-    glfwSetCursorPosCallback(session.window, [](GLFWwindow* w, double x, double y) {
-        windowOf(w)->onCursor(x, y);
-    });
+    glfwSetCursorPosCallback(
+        session.window, [](GLFWwindow* w, double x, double y) { windowOf(w)->onCursor(x, y); });
     glfwSetWindowRefreshCallback(session.window, [](GLFWwindow* w) { windowOf(w)->onRefresh(); });
     // ImGui chains to the callbacks above (install_callbacks = true).
     IMGUI_CHECKVERSION();

@@ -9,8 +9,8 @@ ExtraOptions windowOptionReaders(WindowOptions& w) {
              w.sppPerFrame = in.positive(t, "samples per pixel", 4096);
          }},
         {"print-frame-rate", [&w](OptionReader&, const Token&) { w.printFrameRate = true; }},
-        {"frames",
-         [&w](OptionReader& in, const Token& t) { w.frames = in.positive(t, "a frame count", 1 << 24); }},
+        {"frames", [&w](OptionReader& in,
+                        const Token& t) { w.frames = in.positive(t, "a frame count", 1 << 24); }},
         {"screenshot",
          [&w](OptionReader& in, const Token& t) {
              w.screenshot = in.value(t, "an image file name").text;

@@ -26,7 +26,8 @@ Color AccumulationBuffer::variance(int pixel) const {
     const int n = samplesPerPixel_;
     if (n < 2) return Color();
     const Color m = mean(pixel);
-    const Color v = (sumSquares_[pixel] - m * m * static_cast<float>(n)) / static_cast<float>(n - 1);
+    const Color v =
+        (sumSquares_[pixel] - m * m * static_cast<float>(n)) / static_cast<float>(n - 1);
     // Rounding can make a tiny variance slightly negative.
     return {std::fmax(v.r, 0.0f), std::fmax(v.g, 0.0f), std::fmax(v.b, 0.0f)};
 }

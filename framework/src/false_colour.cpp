@@ -20,8 +20,8 @@ void heat(float t, unsigned char* out) {
 }
 } // namespace
 
-float relativeDifferenceImage(const std::vector<float>& a, const std::vector<float>& b,
-                              float scale, std::vector<unsigned char>& rgba) {
+float relativeDifferenceImage(const std::vector<float>& a, const std::vector<float>& b, float scale,
+                              std::vector<unsigned char>& rgba) {
     const size_t pixels = std::min(a.size(), b.size()) / 3;
     rgba.assign(4 * pixels, 0);
     std::vector<float> differences(pixels);
@@ -42,7 +42,8 @@ void toDisplay(const std::vector<float>& rgb, std::vector<unsigned char>& rgba) 
     rgba.resize(4 * pixels);
     for (size_t i = 0; i < pixels; ++i) {
         for (int c = 0; c < 3; ++c)
-            rgba[4 * i + c] = static_cast<unsigned char>(std::lround(255.0f * linearToSrgb(rgb[3 * i + c])));
+            rgba[4 * i + c] =
+                static_cast<unsigned char>(std::lround(255.0f * linearToSrgb(rgb[3 * i + c])));
         rgba[4 * i + 3] = 255;
     }
 }

@@ -1,4 +1,5 @@
-// The image-file plug-in (libpathlab_image_files.so on Linux): image files through OpenImageIO, loaded by image_io.cpp on first use.
+// The image-file plug-in (libpathlab_image_files.so on Linux): image files through OpenImageIO,
+// loaded by image_io.cpp on first use.
 #include "image_files.h"
 
 #include "pathlab/this_process.h"
@@ -63,7 +64,6 @@ const ImageFiles files = {write, read};
 
 } // namespace pathlab::plugin
 
-extern "C" PATHLAB_EXPORT const pathlab::plugin::ImageFiles*
-pathlab_image_files() {
+extern "C" PATHLAB_EXPORT const pathlab::plugin::ImageFiles* pathlab_image_files() {
     return &pathlab::plugin::files;
 }

@@ -13,9 +13,9 @@ namespace pathlab::plugin {
 /// Pixels as a file holds them, before any colour conversion.
 struct FilePixels {
     int width = 0, height = 0, channels = 0;
-    bool integer = false;           ///< 8- or 16-bit values: sRGB-encoded by convention
-    const float* values = nullptr;  ///< channels per pixel, top row first; the plug-in's memory,
-                                    ///< valid until this thread's next call
+    bool integer = false;          ///< 8- or 16-bit values: sRGB-encoded by convention
+    const float* values = nullptr; ///< channels per pixel, top row first; the plug-in's memory,
+                                   ///< valid until this thread's next call
 };
 
 /// Each function returns nullptr when it succeeded, else why not (the plug-in's text, valid until
@@ -23,7 +23,8 @@ struct FilePixels {
 struct ImageFiles {
     /// Writes 3-channel pixels, 8-bit (`eightBit`, sRGB) or float (linear) as `path`'s extension
     /// says; "unsupported" when no writer knows the format.
-    const char* (*write)(const char* path, int width, int height, const void* pixels, bool eightBit);
+    const char* (*write)(const char* path, int width, int height, const void* pixels,
+                         bool eightBit);
     /// Reads a file into `pixels`.
     const char* (*read)(const char* path, FilePixels* pixels);
 };

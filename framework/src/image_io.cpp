@@ -29,13 +29,15 @@ const plugin::ImageFiles& imageFiles() {
             if (!fs::exists(library)) continue;
             std::string why;
             using Entry = const plugin::ImageFiles* (*)();
-            if (auto entry = reinterpret_cast<Entry>(findLibrarySymbol(library, "pathlab_image_files", why)))
+            if (auto entry =
+                    reinterpret_cast<Entry>(findLibrarySymbol(library, "pathlab_image_files", why)))
                 return entry();
             errors += " " + why;
         }
         // An InputError, so that the viewer reports it (even from a key press) and exits with 2.
-        throw InputError("cannot load the image-file plug-in " + std::string(imagePluginFileName()) +
-                         " from " + program.string() + " or the folder above:" +
+        throw InputError("cannot load the image-file plug-in " +
+                         std::string(imagePluginFileName()) + " from " + program.string() +
+                         " or the folder above:" +
                          (errors.empty() ? " not there (rebuild: make build)" : errors));
     }();
     return *files;
@@ -50,7 +52,8 @@ std::string writeThroughPlugin(const std::string& path, int width, int height, c
 
 std::string lowerExtension(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     return ext;
 }
 
@@ -68,8 +71,8 @@ bool canWriteIn(const fs::path& folder) {
 /// OpenImageIO picks the same format), unique per process.
 std::string temporaryNameFor(const std::string& path) {
     const fs::path p(path);
-    const std::string name = "." + p.stem().string() + ".tmp" + std::to_string(processId()) +
-                             p.extension().string();
+    const std::string name =
+        "." + p.stem().string() + ".tmp" + std::to_string(processId()) + p.extension().string();
     return (p.parent_path() / name).string();
 }
 
@@ -145,7 +148,8 @@ Image readPfm(const std::string& path) {
         for (long long x = 0; x < width; ++x)
             for (int c = 0; c < 3; ++c)
                 image.rgb[3 * (static_cast<size_t>(y) * width + x) + c] =
-                    file[channels * (static_cast<size_t>(height - 1 - y) * width + x) + (channels == 3 ? c : 0)];
+                    file[channels * (static_cast<size_t>(height - 1 - y) * width + x) +
+                         (channels == 3 ? c : 0)];
     return image;
 }
 
@@ -223,7 +227,8 @@ Image readImage(const std::string& path) {
     for (size_t i = 0; i < image.rgb.size() / 3; ++i) {
         for (int c = 0; c < 3; ++c) {
             float v = pixels.values[i * channels + std::min(c, channels - 1)];
-            if (pixels.integer) v = v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+            if (pixels.integer)
+                v = v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
             image.rgb[3 * i + c] = v;
         }
     }

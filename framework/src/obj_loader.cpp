@@ -40,7 +40,8 @@ void loadObj(const std::string& objPath, Scene& scene) {
     config.mtl_search_path = std::filesystem::path(objPath).parent_path().string();
     tinyobj::ObjReader reader;
     if (!reader.ParseFromFile(objPath, config))
-        throw InputError(objPath + ": " + (reader.Error().empty() ? "cannot be read" : reader.Error()));
+        throw InputError(objPath + ": " +
+                         (reader.Error().empty() ? "cannot be read" : reader.Error()));
 
     const tinyobj::attrib_t& attrib = reader.GetAttrib();
     const auto& materials = reader.GetMaterials();

@@ -50,10 +50,12 @@ std::vector<float> numbers(const std::string& file, const Line& line, size_t lea
     const size_t count = line.words.size() - 1;
     const std::string& key = line.words[0];
     if (count < least || count > most) {
-        const std::string expected = least == most ? std::to_string(least)
-                                                   : std::to_string(least) + " to " + std::to_string(most);
-        throw inputErrorAt(file, line.number, "'" + key + "' expects " + expected +
-                                                  " numbers, found " + std::to_string(count));
+        const std::string expected = least == most
+                                         ? std::to_string(least)
+                                         : std::to_string(least) + " to " + std::to_string(most);
+        throw inputErrorAt(file, line.number,
+                           "'" + key + "' expects " + expected + " numbers, found " +
+                               std::to_string(count));
     }
     std::vector<float> values(count);
     for (size_t i = 0; i < count; ++i)
@@ -69,23 +71,27 @@ void checkIndex(const std::string& file, const Line& line, const std::string& co
     char* end = nullptr;
     const long index = std::strtol(text.c_str(), &end, 10);
     if (text.empty() || *end != '\0' || index == 0)
-        throw inputErrorAt(file, line.number, "face corner '" + corner + "' is not of the form "
-                                              "v, v/vt, v//vn or v/vt/vn with non-zero integers");
+        throw inputErrorAt(file, line.number,
+                           "face corner '" + corner +
+                               "' is not of the form "
+                               "v, v/vt, v//vn or v/vt/vn with non-zero integers");
     const long resolved = index > 0 ? index : count + index + 1; // negative: counted backwards
     if (resolved < 1 || resolved > count)
-        throw inputErrorAt(file, line.number, "face corner '" + corner + "' refers to " + what +
-                                                  " " + std::to_string(index) + ", but the file has " +
-                                                  std::to_string(count));
+        throw inputErrorAt(file, line.number,
+                           "face corner '" + corner + "' refers to " + what + " " +
+                               std::to_string(index) + ", but the file has " +
+                               std::to_string(count));
 }
 
 const std::set<std::string> ignoredObjKeys = {
-    "o", "g", "s", "l", "p", "vp", "mg", "cstype", "deg", "bmat", "step", "curv", "curv2",
-    "surf", "parm", "trim", "hole", "scrv", "sp", "end", "con", "lod", "bevel", "c_interp",
+    "o",        "g",     "s",     "l",          "p",        "vp",   "mg",    "cstype",
+    "deg",      "bmat",  "step",  "curv",       "curv2",    "surf", "parm",  "trim",
+    "hole",     "scrv",  "sp",    "end",        "con",      "lod",  "bevel", "c_interp",
     "d_interp", "ctech", "stech", "shadow_obj", "trace_obj"};
 
 const std::set<std::string> ignoredMtlKeys = {
-    "Ns", "illum", "Ka", "d", "Tr", "sharpness", "Pr", "Pm", "Ps", "Pc", "Pcr", "aniso",
-    "anisor", "bump", "disp", "decal", "refl", "norm"};
+    "Ns", "illum", "Ka",    "d",      "Tr",   "sharpness", "Pr",    "Pm",   "Ps",
+    "Pc", "Pcr",   "aniso", "anisor", "bump", "disp",      "decal", "refl", "norm"};
 
 } // namespace
 
@@ -204,8 +210,8 @@ void validateObj(const std::string& objPath) {
             if (line.words.size() != 2)
                 throw inputErrorAt(objPath, line.number, "'usemtl' expects one material name");
             if (!materials.count(line.words[1]))
-                throw inputErrorAt(objPath, line.number, "material '" + line.words[1] +
-                                                             "' is not defined by any mtllib");
+                throw inputErrorAt(objPath, line.number,
+                                   "material '" + line.words[1] + "' is not defined by any mtllib");
         } else if (key != "v" && key != "vn" && key != "vt" && key != "mtllib" &&
                    !ignoredObjKeys.count(key)) {
             throw inputErrorAt(objPath, line.number, "unknown OBJ keyword '" + key + "'");

@@ -20,11 +20,9 @@ void OptionReader::includeScript(const std::string& path, int depth) {
 
 const Token& OptionReader::value(const Token& option, const char* what) {
     // In a scene script an option's values sit on its line, so a short one is caught there.
-    const bool missing = done() || (!option.file.empty() &&
-                                    (tokens_[next_].line != option.line ||
-                                     tokens_[next_].file != option.file));
-    if (missing)
-        fail(option, "option " + option.text + " needs " + what);
+    const bool missing = done() || (!option.file.empty() && (tokens_[next_].line != option.line ||
+                                                             tokens_[next_].file != option.file));
+    if (missing) fail(option, "option " + option.text + " needs " + what);
     return take();
 }
 

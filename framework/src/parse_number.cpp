@@ -14,7 +14,8 @@ namespace pathlab {
 
 std::optional<float> parseFloat(std::string_view text) {
     // from_chars takes no sign '+', which OBJ writers and people do write.
-    if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') text.remove_prefix(1);
+    if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+')
+        text.remove_prefix(1);
     if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return std::nullopt;
     float value = 0;
 #if defined(__cpp_lib_to_chars)

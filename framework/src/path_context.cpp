@@ -15,8 +15,8 @@
 namespace pathlab {
 
 PathContext::PathContext(const RenderScene& scene, const LabParameters& parameters)
-    : sampler(PathDriver::samplerFor(0, 0, 0)), maxDepth(parameters.maxDepth), continueProb(parameters.continueProb),
-      scene_(scene) {}
+    : sampler(PathDriver::samplerFor(0, 0, 0)), maxDepth(parameters.maxDepth),
+      continueProb(parameters.continueProb), scene_(scene) {}
 
 Sampler PathDriver::samplerFor(uint64_t seed, uint64_t pixelIndex, uint64_t sampleIndex) {
     const uint64_t key = mix64(mix64(mix64(seed) ^ pixelIndex) ^ sampleIndex);
@@ -55,10 +55,10 @@ Color PathContext::directLight(const Hit& hit) {
 
     // Radiance arriving from the light along the shadow ray, divided by the pdf of the chosen
     // point in solid angle at the receiver, i.e. L·cosθ'/(r²·p_area) for an area light.
-    const Vec3 lightPosition = light.type == LightSource::Type::Point
-                                   ? light.position
-                                   : sampleTriangleUniform(light.a, light.b, light.c,
-                                                           sampler.get2D());
+    const Vec3 lightPosition =
+        light.type == LightSource::Type::Point
+            ? light.position
+            : sampleTriangleUniform(light.a, light.b, light.c, sampler.get2D());
     const Vec3 toLight = lightPosition - hit.position;
     const float distance2 = dot(toLight, toLight);
     // Both sides' cosines before any square root: light from behind the receiver, or from the

@@ -61,7 +61,8 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
          [&](const Token& t) {
              const float fov = in.number(t, "an angle in degrees");
              if (!(fov > 0 && fov < 180))
-                 OptionReader::fail(t, "option " + t.text + " expects an angle in (0, 180) degrees");
+                 OptionReader::fail(t,
+                                    "option " + t.text + " expects an angle in (0, 180) degrees");
              o.camera.fovDegrees = fov, o.cameraSet = true;
          }},
         {"pointlight",
@@ -70,7 +71,8 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
              light.position = in.vec3(t);
              const Vec3 i = in.vec3(t);
              if (i.x < 0 || i.y < 0 || i.z < 0)
-                 OptionReader::fail(t, "option " + t.text + ": a light intensity cannot be negative");
+                 OptionReader::fail(t,
+                                    "option " + t.text + ": a light intensity cannot be negative");
              light.intensity = {i.x, i.y, i.z};
              o.pointLights.push_back(light);
          }},
@@ -84,8 +86,8 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
              const Token& name = in.value(t, "a lab name");
              const std::optional<Lab> lab = labFromName(name.text);
              if (!lab)
-                 OptionReader::fail(t, "option --lab expects one of " + labNames(", ") +
-                                           ", got '" + name.text + "'");
+                 OptionReader::fail(t, "option --lab expects one of " + labNames(", ") + ", got '" +
+                                           name.text + "'");
              o.lab = *lab;
          }},
         {"solution", [&](const Token&) { o.implementation = Implementation::Solution; }},
@@ -94,7 +96,8 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
          [&](const Token& t) {
              const long long d = in.integer(t, "a depth (0 or more)");
              if (d < 0 || d > 1000)
-                 OptionReader::fail(t, "option " + t.text + " expects a depth from 0 to 1000, got " +
+                 OptionReader::fail(t, "option " + t.text +
+                                           " expects a depth from 0 to 1000, got " +
                                            std::to_string(d));
              o.parameters.maxDepth = static_cast<int>(d);
          }},
@@ -104,7 +107,8 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
              if (!(p > 0 && p < 1))
                  OptionReader::fail(t, "option " + t.text +
                                            " expects a probability strictly between 0 and 1 "
-                                           "(0 never continues, 1 never ends), got " + std::to_string(p));
+                                           "(0 never continues, 1 never ends), got " +
+                                           std::to_string(p));
              o.parameters.continueProb = p;
          }},
         {"seed",
@@ -117,7 +121,8 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
         {"o", [&](const Token& t) { o.outputImage = in.value(t, "an image file name").text; }},
         {"spp", [&](const Token& t) { o.spp = in.positive(t, "samples per pixel", 1 << 24); }},
         {"stats", [&](const Token& t) { o.statsFile = in.value(t, "a .json file name").text; }},
-        {"seeds", [&](const Token& t) { o.seedCount = in.positive(t, "a number of seeds", 100000); }},
+        {"seeds",
+         [&](const Token& t) { o.seedCount = in.positive(t, "a number of seeds", 100000); }},
         {"help", [&](const Token&) { o.help = true; }},
         {"h", [&](const Token&) { o.help = true; }},
     };
@@ -133,8 +138,8 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
             continue;
         }
         if (handler == handlers.end()) {
-            const std::string what = optionName(token.text).empty() ? "unexpected argument '"
-                                                                    : "unknown option '";
+            const std::string what =
+                optionName(token.text).empty() ? "unexpected argument '" : "unknown option '";
             OptionReader::fail(token, what + token.text + "' (viewer --help lists the options)");
         }
         const Token option = token; // `token` may move when a -c script is inserted
@@ -163,8 +168,8 @@ std::string renderOptionsHelp() {
                          a point light at (X,Y,Z) with intensity (R,G,B) in W/sr
   --size W H             image size in pixels (default 512 512)
 estimator
-)") + "  --lab NAME             " + labNames(" | ") + " (default " +
-           std::string(labName(AllLabs[0])) + ")\n" +
+)") + "  --lab NAME             " +
+           labNames(" | ") + " (default " + std::string(labName(AllLabs[0])) + ")\n" +
            R"(  --solution             run the reference solution instead of your labs/ code
   --max-depth N          labs 1-3: bounces after the primary hit (default 3)
   --continue-prob P      lab 4: Russian-roulette continuation probability, 0<P<1 (default 0.1)

@@ -44,9 +44,9 @@ RenderScene::RenderScene(Scene scene)
     RTCGeometry mesh = rtcNewGeometry(embree_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
     // Embree reads vertex buffers with 16-byte loads, so the buffer it allocates is padded; ours
     // (Vec3 arrays) are copied in rather than shared.
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-        mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-        scene_.positions.size()));
+    auto* vertices = static_cast<float*>(
+        rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                3 * sizeof(float), scene_.positions.size()));
     for (size_t i = 0; i < scene_.positions.size(); ++i) {
         vertices[3 * i + 0] = scene_.positions[i].x;
         vertices[3 * i + 1] = scene_.positions[i].y;
@@ -112,8 +112,7 @@ Hit RenderScene::hit(const CameraPacket& packet, int lane) const {
                  packet.v[lane]);
 }
 
-Hit RenderScene::shade(const Ray& ray, uint32_t triangle, float distance, float u,
-                       float v) const {
+Hit RenderScene::shade(const Ray& ray, uint32_t triangle, float distance, float u, float v) const {
     const TriangleRecord& t = triangles_[triangle];
     const float w = 1.0f - u - v;
     Hit hit;
@@ -146,9 +145,7 @@ bool RenderScene::occluded(const Vec3& from, const Vec3& to) const {
     return embree::occluded1(embree_->scene, ray);
 }
 
-RTCSceneTy* RenderScene::embreeScene() const {
-    return embree_->scene;
-}
+RTCSceneTy* RenderScene::embreeScene() const { return embree_->scene; }
 
 Vec3 offsetRayOrigin(const Hit& hit, const Vec3& direction) {
     // Float positions carry a relative error near 1e-7; a step of a few hundred ulps along the

@@ -83,8 +83,8 @@ void setHeadlessFrameRate(RenderStats& stats) {
 void writeFileAtomically(const std::string& path, const std::string& text) {
     namespace fs = std::filesystem;
     const fs::path target(path);
-    const fs::path temporary =
-        target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(processId()));
+    const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".tmp" +
+                                                       std::to_string(processId()));
     {
         std::ofstream out(temporary, std::ios::binary);
         out << text;
@@ -140,7 +140,8 @@ void writeRenderStats(const std::string& path, const RenderStats& s) {
             {"pixel", {f.x, f.y}},
             {"sample", f.sampleIndex},
             {"rays_traced", f.raysTraced},
-            {"radiance", {component(f.radiance.r), component(f.radiance.g), component(f.radiance.b)}},
+            {"radiance",
+             {component(f.radiance.r), component(f.radiance.g), component(f.radiance.b)}},
         };
     }
     writeFileAtomically(path, json.dump(2) + "\n");
@@ -180,11 +181,10 @@ RenderStats readRenderStats(const std::string& path) {
             const auto component = [&](int i) {
                 return std::strtof(f.at("radiance").at(i).get<std::string>().c_str(), nullptr);
             };
-            s.firstNonfinite = NonfiniteSample{f.at("pixel").at(0).get<int>(),
-                                               f.at("pixel").at(1).get<int>(),
-                                               f.at("sample").get<uint64_t>(),
-                                               f.at("rays_traced").get<uint64_t>(),
-                                               Color(component(0), component(1), component(2))};
+            s.firstNonfinite =
+                NonfiniteSample{f.at("pixel").at(0).get<int>(), f.at("pixel").at(1).get<int>(),
+                                f.at("sample").get<uint64_t>(), f.at("rays_traced").get<uint64_t>(),
+                                Color(component(0), component(1), component(2))};
         }
         return s;
     } catch (const nlohmann::json::exception& e) {

@@ -67,7 +67,8 @@ struct PendingSample {
 
 Renderer::Renderer(const RenderScene& scene, int threads)
     : scene_(scene),
-      threads_(threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))),
+      threads_(threads > 0 ? threads
+                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))),
       arena_(std::make_unique<Arena>(threads_)) {
     ensureDeepStacks();
 }
@@ -88,59 +89,62 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
 
     releaseTo(&passStarts);
     arena_->arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY, 1),
-                          [&](const tbb::blocked_range<int>& tiles) {
-            acquireFrom(&passStarts);
-            for (int tile = tiles.begin(); tile != tiles.end(); ++tile) {
-                if (cancel && cancel->load(std::memory_order_relaxed)) break;
-                PathDriver driver(scene_, parameters);
-                if (log) driver.recordRaysInto(&tileLogs[static_cast<size_t>(tile)]);
-                const int x0 = (tile % tilesX) * TileSize, y0 = (tile / tilesX) * TileSize;
-                const int x1 = std::min(x0 + TileSize, width), y1 = std::min(y0 + TileSize, height);
-                // Camera rays go to Embree a packet at a time; each sample's pathTrace then
-                // finds its camera ray's hit waiting in the context. Samples keep their order
-                // within a pixel, so every pixel's sums add up exactly as one by one.
-                CameraPacket packet;
-                std::vector<PendingSample> pending;
-                pending.reserve(CameraPacket::Size);
-                const auto tracePending = [&] {
-                    scene_.intersect(packet);
-                    for (int i = 0; i < packet.count; ++i) {
-                        const PendingSample& sample = pending[static_cast<size_t>(i)];
-                        driver.restoreSampler(sample.sampler);
-                        driver.primeCameraHit(&packet, i);
-                        const uint64_t raysBefore = driver.rayCounters().intersect;
-                        const Color radiance = pathTrace(packet.rays[i], 0, driver.context());
-                        if (!isFinite(radiance))
-                            nonfinite.note({sample.pixel % width, sample.pixel / width,
-                                            sample.sampleIndex,
-                                            driver.rayCounters().intersect - raysBefore, radiance});
-                        buffer.addSample(sample.pixel, radiance);
-                    }
-                    packet.count = 0;
-                    pending.clear();
-                };
-                for (int y = y0; y < y1; ++y) {
-                    for (int x = x0; x < x1; ++x) {
-                        const int pixel = y * width + x;
-                        for (int s = 0; s < spp; ++s) {
-                            const uint64_t sampleIndex = firstSample + static_cast<uint64_t>(s);
-                            driver.startSample(seed, static_cast<uint64_t>(pixel), sampleIndex);
-                            const Vec2 jitter = driver.context().sampler.get2D();
-                            packet.rays[packet.count] = camera.generateRay(
-                                static_cast<float>(x) + jitter.x, static_cast<float>(y) + jitter.y);
-                            pending.push_back({pixel, sampleIndex, driver.savedSampler()});
-                            if (++packet.count == CameraPacket::Size) tracePending();
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, tilesX * tilesY, 1),
+            [&](const tbb::blocked_range<int>& tiles) {
+                acquireFrom(&passStarts);
+                for (int tile = tiles.begin(); tile != tiles.end(); ++tile) {
+                    if (cancel && cancel->load(std::memory_order_relaxed)) break;
+                    PathDriver driver(scene_, parameters);
+                    if (log) driver.recordRaysInto(&tileLogs[static_cast<size_t>(tile)]);
+                    const int x0 = (tile % tilesX) * TileSize, y0 = (tile / tilesX) * TileSize;
+                    const int x1 = std::min(x0 + TileSize, width),
+                              y1 = std::min(y0 + TileSize, height);
+                    // Camera rays go to Embree a packet at a time; each sample's pathTrace then
+                    // finds its camera ray's hit waiting in the context. Samples keep their order
+                    // within a pixel, so every pixel's sums add up exactly as one by one.
+                    CameraPacket packet;
+                    std::vector<PendingSample> pending;
+                    pending.reserve(CameraPacket::Size);
+                    const auto tracePending = [&] {
+                        scene_.intersect(packet);
+                        for (int i = 0; i < packet.count; ++i) {
+                            const PendingSample& sample = pending[static_cast<size_t>(i)];
+                            driver.restoreSampler(sample.sampler);
+                            driver.primeCameraHit(&packet, i);
+                            const uint64_t raysBefore = driver.rayCounters().intersect;
+                            const Color radiance = pathTrace(packet.rays[i], 0, driver.context());
+                            if (!isFinite(radiance))
+                                nonfinite.note(
+                                    {sample.pixel % width, sample.pixel / width, sample.sampleIndex,
+                                     driver.rayCounters().intersect - raysBefore, radiance});
+                            buffer.addSample(sample.pixel, radiance);
+                        }
+                        packet.count = 0;
+                        pending.clear();
+                    };
+                    for (int y = y0; y < y1; ++y) {
+                        for (int x = x0; x < x1; ++x) {
+                            const int pixel = y * width + x;
+                            for (int s = 0; s < spp; ++s) {
+                                const uint64_t sampleIndex = firstSample + static_cast<uint64_t>(s);
+                                driver.startSample(seed, static_cast<uint64_t>(pixel), sampleIndex);
+                                const Vec2 jitter = driver.context().sampler.get2D();
+                                packet.rays[packet.count] =
+                                    camera.generateRay(static_cast<float>(x) + jitter.x,
+                                                       static_cast<float>(y) + jitter.y);
+                                pending.push_back({pixel, sampleIndex, driver.savedSampler()});
+                                if (++packet.count == CameraPacket::Size) tracePending();
+                            }
                         }
                     }
+                    if (packet.count > 0) tracePending();
+                    // Counted per tile in the context, summed here once: nothing shared per ray.
+                    intersect.fetch_add(driver.rayCounters().intersect, std::memory_order_relaxed);
+                    occluded.fetch_add(driver.rayCounters().occluded, std::memory_order_relaxed);
                 }
-                if (packet.count > 0) tracePending();
-                // Counted per tile in the context, summed here once: nothing shared per ray.
-                intersect.fetch_add(driver.rayCounters().intersect, std::memory_order_relaxed);
-                occluded.fetch_add(driver.rayCounters().occluded, std::memory_order_relaxed);
-            }
-            releaseTo(&tilesFinished);
-        });
+                releaseTo(&tilesFinished);
+            });
     });
     acquireFrom(&tilesFinished);
     counters_ += RayCounters{intersect.load(), occluded.load()};

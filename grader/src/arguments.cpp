@@ -9,7 +9,8 @@
 
 namespace pathlab::grader {
 
-const char* const usage = R"(usage: grader [options]                       grade the labs of this build
+const char* const usage =
+    R"(usage: grader [options]                       grade the labs of this build
        grader rubric                          print the rubric in words: points, thresholds, scenes
 the instructor's (they need the reference solutions, or a batch's output):
        grader make-references [options]       measure grader/references/ from the solutions
@@ -72,7 +73,8 @@ std::vector<int> cpuList(const std::string& option, const std::string& text) {
         try {
             cpus.push_back(std::stoi(text.substr(at, comma - at)));
         } catch (const std::exception&) {
-            throw InputError("option " + option + " expects core numbers like 0 or 1,2, got '" + text + "'");
+            throw InputError("option " + option + " expects core numbers like 0 or 1,2, got '" +
+                             text + "'");
         }
         at = comma + 1;
     }
@@ -112,7 +114,8 @@ Arguments parseArguments(int argc, char** argv) {
             if (command == known) a.command = command, first = 2;
         // The instructor's commands compile or run the reference solutions.
         if (!PATHLAB_HAS_SOLUTIONS && first == 2 && a.command != "merge" && a.command != "rubric")
-            throw InputError("grader " + a.command + " is the instructor's: it needs the reference "
+            throw InputError("grader " + a.command +
+                             " is the instructor's: it needs the reference "
                              "solutions (solutions/), which the student release does not have; "
                              "`make grade` grades your labs");
     }
@@ -126,13 +129,21 @@ Arguments parseArguments(int argc, char** argv) {
         if (arg == "--lab") {
             const std::string name = value(i);
             const auto lab = labFromName(name);
-            if (!lab) throw InputError("option --lab expects branching, uniform, importance or roulette, got '" + name + "'");
+            if (!lab)
+                throw InputError(
+                    "option --lab expects branching, uniform, importance or roulette, got '" +
+                    name + "'");
             a.labs = {*lab};
-        } else if (arg == "--viewer") a.viewer = value(i);
-        else if (arg == "--solution-viewer") a.solutionViewer = value(i);
-        else if (arg == "--scenes") a.scenesDir = value(i), scenesGiven = true;
-        else if (arg == "--reveal-hidden") a.revealHidden = true;
-        else if (arg == "--only-hidden") a.onlyHidden = true;
+        } else if (arg == "--viewer")
+            a.viewer = value(i);
+        else if (arg == "--solution-viewer")
+            a.solutionViewer = value(i);
+        else if (arg == "--scenes")
+            a.scenesDir = value(i), scenesGiven = true;
+        else if (arg == "--reveal-hidden")
+            a.revealHidden = true;
+        else if (arg == "--only-hidden")
+            a.onlyHidden = true;
         else if (arg == "--only") {
             const std::string ids = value(i);
             if (ids.find_first_not_of(", ") == std::string::npos)
@@ -142,56 +153,94 @@ Arguments parseArguments(int argc, char** argv) {
                 if (comma > at) a.only.push_back(ids.substr(at, comma - at));
                 at = comma + 1;
             }
-        } else if (arg == "--keep-stale") a.keepStale = true;
-        else if (arg == "--deadline") a.deadline = value(i);
-        else if (arg == "--times") a.times = value(i);
-        else if (arg == "--rubric") a.rubric = value(i);
-        else if (arg == "--references") a.references = value(i);
-        else if (arg == "--seed") a.seed = static_cast<uint64_t>(number(arg, value(i), 0));
-        else if (arg == "--threads") a.threads = static_cast<int>(number(arg, value(i), 0));
-        else if (arg == "--no-speed") a.speed = false;
-        else if (arg == "--only-figures") a.onlyFigures = true;
-        else if (arg == "--only-scene") a.onlyScene = value(i);
-        else if (arg == "--json") a.json = value(i);
-        else if (arg == "--junit") a.junit = value(i);
-        else if (arg == "--gradescope") a.gradescope = value(i);
-        else if (arg == "--html") a.html = value(i);
-        else if (arg == "--report") a.report = value(i);
-        else if (arg == "--out") a.out = value(i);
-        else if (arg == "--jobs") a.jobs = static_cast<int>(number(arg, value(i), 1));
-        else if (arg == "--force") a.force = true;
+        } else if (arg == "--keep-stale")
+            a.keepStale = true;
+        else if (arg == "--deadline")
+            a.deadline = value(i);
+        else if (arg == "--times")
+            a.times = value(i);
+        else if (arg == "--rubric")
+            a.rubric = value(i);
+        else if (arg == "--references")
+            a.references = value(i);
+        else if (arg == "--seed")
+            a.seed = static_cast<uint64_t>(number(arg, value(i), 0));
+        else if (arg == "--threads")
+            a.threads = static_cast<int>(number(arg, value(i), 0));
+        else if (arg == "--no-speed")
+            a.speed = false;
+        else if (arg == "--only-figures")
+            a.onlyFigures = true;
+        else if (arg == "--only-scene")
+            a.onlyScene = value(i);
+        else if (arg == "--json")
+            a.json = value(i);
+        else if (arg == "--junit")
+            a.junit = value(i);
+        else if (arg == "--gradescope")
+            a.gradescope = value(i);
+        else if (arg == "--html")
+            a.html = value(i);
+        else if (arg == "--report")
+            a.report = value(i);
+        else if (arg == "--out")
+            a.out = value(i);
+        else if (arg == "--jobs")
+            a.jobs = static_cast<int>(number(arg, value(i), 1));
+        else if (arg == "--force")
+            a.force = true;
         else if (arg == "--shard") {
             const std::string text = value(i);
             const size_t slash = text.find('/');
-            if (slash == std::string::npos) throw InputError("option --shard expects K/N, got '" + text + "'");
+            if (slash == std::string::npos)
+                throw InputError("option --shard expects K/N, got '" + text + "'");
             a.shard = static_cast<int>(number(arg, text.substr(0, slash), 0));
             a.shards = static_cast<int>(number(arg, text.substr(slash + 1), 1));
-            if (a.shard >= a.shards) throw InputError("option --shard: K must be below N in K/N, got '" + text + "'");
-        } else if (arg == "--kit") a.kit = value(i);
-        else if (arg == "--reference-cache") a.referenceCache = value(i);
-        else if (arg == "--timing-lock") a.timingLock = value(i);
-        else if (arg == "--timing-cpus") a.timingCpus = cpuList(arg, value(i));
-        else if (arg == "--work-cpus") a.workCpus = cpuList(arg, value(i));
-        else if (arg == "--help" || arg == "-h") a.command = "help";
-        else if (!arg.empty() && arg[0] == '-') throw InputError("unknown option '" + arg + "' (grader --help lists the options)");
-        else if (a.command == "submission" || a.command == "batch" || a.command == "merge") a.inputs.push_back(arg);
-        else throw InputError("unexpected argument '" + arg + "' (grader --help lists the commands)");
+            if (a.shard >= a.shards)
+                throw InputError("option --shard: K must be below N in K/N, got '" + text + "'");
+        } else if (arg == "--kit")
+            a.kit = value(i);
+        else if (arg == "--reference-cache")
+            a.referenceCache = value(i);
+        else if (arg == "--timing-lock")
+            a.timingLock = value(i);
+        else if (arg == "--timing-cpus")
+            a.timingCpus = cpuList(arg, value(i));
+        else if (arg == "--work-cpus")
+            a.workCpus = cpuList(arg, value(i));
+        else if (arg == "--help" || arg == "-h")
+            a.command = "help";
+        else if (!arg.empty() && arg[0] == '-')
+            throw InputError("unknown option '" + arg + "' (grader --help lists the options)");
+        else if (a.command == "submission" || a.command == "batch" || a.command == "merge")
+            a.inputs.push_back(arg);
+        else
+            throw InputError("unexpected argument '" + arg +
+                             "' (grader --help lists the commands)");
     }
     if (a.command == "help") return a;
-    if (!scenesGiven) a.scenesDir = defaultHiddenScenesFolder();
-    else if (a.scenesDir == "none") a.scenesDir.clear();
+    if (!scenesGiven)
+        a.scenesDir = defaultHiddenScenesFolder();
+    else if (a.scenesDir == "none")
+        a.scenesDir.clear();
     else if (!PATHLAB_HAS_SOLUTIONS)
-        throw InputError("option --scenes: a hidden scene's reference is measured from the reference "
-                         "solutions, which the student release does not have");
-    else hiddenScenePaths(a.scenesDir); // says now if the folder is wrong
+        throw InputError(
+            "option --scenes: a hidden scene's reference is measured from the reference "
+            "solutions, which the student release does not have");
+    else
+        hiddenScenePaths(a.scenesDir); // says now if the folder is wrong
     if (a.command == "rubric") return a;
-    if (a.referenceCache.empty()) a.referenceCache = (thisProgram().parent_path() / "reference-cache").string();
-    if (!a.only.empty() && a.command != "batch") throw InputError("option --only is for grader batch");
+    if (a.referenceCache.empty())
+        a.referenceCache = (thisProgram().parent_path() / "reference-cache").string();
+    if (!a.only.empty() && a.command != "batch")
+        throw InputError("option --only is for grader batch");
     if (a.command == "submission" && a.inputs.size() != 1)
-        throw InputError("grader submission expects one submission (a folder, .zip, .tar.gz or git repository)");
+        throw InputError(
+            "grader submission expects one submission (a folder, .zip, .tar.gz or git repository)");
     if ((a.command == "batch" || a.command == "merge") && a.inputs.empty())
         throw InputError("grader " + a.command + " expects at least one folder");
-    if ((a.command == "submission" || a.command == "batch" || a.command == "merge") && a.out.empty())
+    if ((a.command == "submission" || a.command == "batch" || a.command == "merge") &&
+        a.out.empty())
         throw InputError("grader " + a.command + " needs --out DIR");
     if (a.viewer.empty()) a.viewer = (thisProgram().parent_path() / "viewer").string();
     if (a.solutionViewer.empty()) a.solutionViewer = a.viewer;

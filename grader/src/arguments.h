@@ -17,16 +17,16 @@ struct Arguments {
     std::string viewer, solutionViewer;
     /// The hidden scenes: grader/hidden_scenes/ when it holds any, or --scenes DIR; "" for none.
     std::string scenesDir;
-    bool revealHidden = false;  ///< feedback may name hidden scenes and show their images
+    bool revealHidden = false; ///< feedback may name hidden scenes and show their images
     std::string rubric, references;
     std::string json, junit, gradescope, html, report;
-    std::string out;         ///< submission, batch, merge: the output folder
+    std::string out; ///< submission, batch, merge: the output folder
     uint64_t seed = 1;
     int threads = 0;
     bool speed = true;
-    bool onlyFigures = false;   ///< make-references: only lab_figures.json
-    std::string onlyScene;      ///< make-references: only this rubric scene's reference
-    bool onlyHidden = false;    ///< make-references: only the hidden scenes' (into the cache)
+    bool onlyFigures = false; ///< make-references: only lab_figures.json
+    std::string onlyScene;    ///< make-references: only this rubric scene's reference
+    bool onlyHidden = false;  ///< make-references: only the hidden scenes' (into the cache)
     // batch
     int jobs = 1;
     bool force = false;
@@ -36,7 +36,7 @@ struct Arguments {
     std::string times;             ///< a CSV of id,submitted_at that overrides the times found
     int shard = 0, shards = 1;
     // submission, as batch starts it (and run_autograder)
-    std::string kit;            ///< compiled lab kit (default: built in the output folder)
+    std::string kit; ///< compiled lab kit (default: built in the output folder)
     /// References of the hidden scenes, measured once and kept while their files are unchanged
     /// (default: reference-cache/ beside the grader; a batch keeps its own in OUT/.references).
     std::string referenceCache;

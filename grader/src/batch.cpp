@@ -99,10 +99,12 @@ std::vector<Submission> listSubmissions(const Arguments& a) {
         for (const auto& entry : fs::directory_iterator(input)) {
             const std::string name = entry.path().filename().string();
             if (name.empty() || name[0] == '.') continue;
-            all.push_back({fs::absolute(entry.path()).string(), submissionId(entry.path().string())});
+            all.push_back(
+                {fs::absolute(entry.path()).string(), submissionId(entry.path().string())});
         }
     }
-    std::sort(all.begin(), all.end(), [](const Submission& x, const Submission& y) { return x.id < y.id; });
+    std::sort(all.begin(), all.end(),
+              [](const Submission& x, const Submission& y) { return x.id < y.id; });
     for (size_t i = 1; i < all.size(); ++i)
         if (all[i].id == all[i - 1].id)
             throw InputError("two submissions have the id '" + all[i].id + "': " + all[i - 1].path +
@@ -115,9 +117,10 @@ std::vector<Submission> listSubmissions(const Arguments& a) {
 
 /// The options a child `grader submission` shares with the batch.
 std::vector<std::string> sharedOptions(const Arguments& a) {
-    std::vector<std::string> options = {"--rubric", a.rubric, "--references", a.references,
-                                        "--seed", std::to_string(a.seed),
-                                        "--scenes", a.scenesDir.empty() ? "none" : a.scenesDir};
+    std::vector<std::string> options = {"--rubric",     a.rubric,
+                                        "--references", a.references,
+                                        "--seed",       std::to_string(a.seed),
+                                        "--scenes",     a.scenesDir.empty() ? "none" : a.scenesDir};
     if (a.revealHidden) options.push_back("--reveal-hidden");
     if (!a.speed) options.push_back("--no-speed");
     return options;
@@ -152,7 +155,8 @@ GradingNow gradingNow(const Arguments& a, const Rubric& rubric, const std::strin
         now.deadline = parseTime(deadline);
         if (!now.deadline)
             throw InputError("option --deadline expects a time like 2026-12-01T23:59 (local), "
-                             "2026-12-01T23:59Z or 2026-12-01T23:59+01:00, got '" + deadline + "'");
+                             "2026-12-01T23:59Z or 2026-12-01T23:59+01:00, got '" +
+                             deadline + "'");
     }
     if (!times.empty()) now.times = loadSubmissionTimes(times);
     return now;
@@ -203,22 +207,27 @@ void runCanary(const std::vector<std::string>& childBase, const std::string& sol
     job.child.wait();
     std::ifstream in(folder + "/result.json");
     const nlohmann::json result = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!result.is_object())
         throw InputError("canary: the reference solutions could not be graded (see " + folder +
                          "/grader.log); nothing was graded");
     const double score = result.value("score", 0.0), max = result.value("max_score", 0.0);
     log << timestamp() << " canary: reference solutions " << score << " / " << max << ", "
-        << std::lround(seconds) << " s\n" << std::flush;
+        << std::lround(seconds) << " s\n"
+        << std::flush;
     if (score != max || max == 0) {
         std::string why;
         for (const auto& d : result.value("diagnoses", nlohmann::json::array()))
-            why += "\n  " + d.value("lab", "") + " " + d.value("check", "") + ": " + d.value("diagnosis", "");
+            why += "\n  " + d.value("lab", "") + " " + d.value("check", "") + ": " +
+                   d.value("diagnosis", "");
         char points[64];
         std::snprintf(points, sizeof points, "%g / %g", score, max);
-        throw InputError("canary: the reference solutions score " + std::string(points) +
-                         " on this grading, so its references, scenes or rubric are wrong; nothing was "
-                         "graded. What failed:" + why + "\n  (details: " + folder + "/index.html)");
+        throw InputError(
+            "canary: the reference solutions score " + std::string(points) +
+            " on this grading, so its references, scenes or rubric are wrong; nothing was "
+            "graded. What failed:" +
+            why + "\n  (details: " + folder + "/index.html)");
     }
     writeFileAtomically(folder + "/passed", fingerprint + "\n");
 }
@@ -232,8 +241,9 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
     g.build = labBuildOfThisGrader();
     g.rubric = rubric;
     g.workCpus = a.workCpus;
-    g.kit = a.kit.empty() ? buildLabKit(g.build, a.out + "/kit", {a.workCpus, sandboxUserForThisProcess()})
-                          : existingLabKit(a.kit);
+    g.kit = a.kit.empty()
+                ? buildLabKit(g.build, a.out + "/kit", {a.workCpus, sandboxUserForThisProcess()})
+                : existingLabKit(a.kit);
     // References of hidden scenes come from the solutions, linked into this build's viewer.
     const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
     std::vector<std::string> notes;
@@ -251,8 +261,9 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
     probe.scratch = scratch;
     probe.threads = a.threads;
     StartUpTimes startUps;
-    g.runSeconds = scaledTimeLimit(rubric.secondsPerRun, speedSceneStartUpSeconds(probe, solution, startUps),
-                                   storedStartUpSeconds(a, rubric));
+    g.runSeconds =
+        scaledTimeLimit(rubric.secondsPerRun, speedSceneStartUpSeconds(probe, solution, startUps),
+                        storedStartUpSeconds(a, rubric));
     if (g.runSeconds > rubric.secondsPerRun)
         notes.push_back(timeLimitNote(rubric.secondsPerRun, g.runSeconds));
     SubmissionOutcome outcome = gradeSubmission(g, a.inputs[0], a.out);
@@ -268,24 +279,32 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
     const auto start = std::chrono::steady_clock::now();
     const std::vector<Submission> submissions = listSubmissions(a);
     for (const std::string& id : a.only)
-        if (std::none_of(submissions.begin(), submissions.end(), [&](const Submission& s) { return s.id == id; }))
-            throw InputError("option --only: no submission has the id '" + id + "' (gradebook.csv lists the ids)");
+        if (std::none_of(submissions.begin(), submissions.end(),
+                         [&](const Submission& s) { return s.id == id; }))
+            throw InputError("option --only: no submission has the id '" + id +
+                             "' (gradebook.csv lists the ids)");
     fs::create_directories(a.out + "/submissions");
     const std::string out = fs::absolute(a.out).string();
     // A batch run again keeps the deadline and times it was given before, unless told others.
     const std::string deadline = a.deadline.empty() ? earlierSetting(out, "deadline") : a.deadline;
-    const std::string times = a.times.empty() ? earlierSetting(out, "times") : fs::absolute(a.times).string();
+    const std::string times =
+        a.times.empty() ? earlierSetting(out, "times") : fs::absolute(a.times).string();
     if (a.deadline.empty() && !deadline.empty())
         std::fprintf(stderr, "deadline %s, as the batch before into %s (--deadline sets another)\n",
                      deadline.c_str(), out.c_str());
     const GradingNow grading = gradingNow(a, rubric, deadline, times);
     for (const auto& [id, when] : grading.times)
-        if (std::none_of(submissions.begin(), submissions.end(), [&](const Submission& s) { return s.id == id; }) &&
+        if (std::none_of(submissions.begin(), submissions.end(),
+                         [&](const Submission& s) { return s.id == id; }) &&
             a.shards == 1)
-            std::fprintf(stderr, "note: the submission times name '%s', which is not a submission here\n", id.c_str());
+            std::fprintf(stderr,
+                         "note: the submission times name '%s', which is not a submission here\n",
+                         id.c_str());
     std::ofstream log(out + "/batch.log", std::ios::app);
-    log << timestamp() << " batch of " << submissions.size() << " submission(s), " << a.jobs << " job(s)"
-        << (a.shards > 1 ? ", shard " + std::to_string(a.shard) + "/" + std::to_string(a.shards) : "")
+    log << timestamp() << " batch of " << submissions.size() << " submission(s), " << a.jobs
+        << " job(s)"
+        << (a.shards > 1 ? ", shard " + std::to_string(a.shard) + "/" + std::to_string(a.shards)
+                         : "")
         << ", rubric " << grading.rubricHash << ", scenes " << grading.scenesHash << "\n";
 
     // What to grade: everything not graded yet, and what was graded under another rubric, other
@@ -296,30 +315,45 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
         const GradebookEntry stored = readGradebookEntry(out, s.id, s.path);
         const bool isStale = !stored.result.is_null() && !staleness(stored.result, grading).empty();
         const bool named = std::find(a.only.begin(), a.only.end(), s.id) != a.only.end();
-        const bool wanted = a.only.empty() ? a.force || stored.result.is_null() || (isStale && !a.keepStale)
-                                           : named;
+        const bool wanted = a.only.empty()
+                                ? a.force || stored.result.is_null() || (isStale && !a.keepStale)
+                                : named;
         if (wanted) todo.push_back(s);
-        if (wanted && isStale) ++staleRegraded;
-        else if (!wanted && !a.only.empty()) ++notNamed;
-        else if (!wanted && isStale) ++staleKept;
-        else if (!wanted) ++current;
+        if (wanted && isStale)
+            ++staleRegraded;
+        else if (!wanted && !a.only.empty())
+            ++notNamed;
+        else if (!wanted && isStale)
+            ++staleKept;
+        else if (!wanted)
+            ++current;
     }
     auto sayWhatIsKept = [&] {
-        if (current > 0) std::fprintf(stderr, "%zu submission(s) already graded (--force grades them again)\n", current);
-        if (notNamed > 0) std::fprintf(stderr, "%zu submission(s) not named by --only: kept as they are\n", notNamed);
+        if (current > 0)
+            std::fprintf(stderr, "%zu submission(s) already graded (--force grades them again)\n",
+                         current);
+        if (notNamed > 0)
+            std::fprintf(stderr, "%zu submission(s) not named by --only: kept as they are\n",
+                         notNamed);
         if (staleKept > 0)
-            std::fprintf(stderr, "%zu submission(s) graded under another rubric, other scenes or another "
-                                 "maximum (--no-speed): kept, marked stale in the gradebook\n", staleKept);
+            std::fprintf(stderr,
+                         "%zu submission(s) graded under another rubric, other scenes or another "
+                         "maximum (--no-speed): kept, marked stale in the gradebook\n",
+                         staleKept);
         if (staleRegraded > 0)
-            std::fprintf(stderr, "%zu submission(s) graded under another rubric, other scenes or another "
-                                 "maximum (--no-speed): graded again\n", staleRegraded);
+            std::fprintf(stderr,
+                         "%zu submission(s) graded under another rubric, other scenes or another "
+                         "maximum (--no-speed): graded again\n",
+                         staleRegraded);
     };
     const size_t skipped = submissions.size() - todo.size();
 
     // Cores: the first for timed runs, the rest for everything else.
     const std::vector<int> cpus = allowedCpus();
-    const std::vector<int> timingCpus = cpus.empty() ? std::vector<int>{} : std::vector<int>{cpus[0]};
-    const std::vector<int> workCpus = cpus.size() > 1 ? std::vector<int>(cpus.begin() + 1, cpus.end()) : cpus;
+    const std::vector<int> timingCpus =
+        cpus.empty() ? std::vector<int>{} : std::vector<int>{cpus[0]};
+    const std::vector<int> workCpus =
+        cpus.size() > 1 ? std::vector<int>(cpus.begin() + 1, cpus.end()) : cpus;
 
     // Shared by every grading: the compiled kit, and the references of hidden scenes (kept with
     // this batch's output, measured again when a scene's files change).
@@ -330,10 +364,10 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
         std::vector<std::string> argv = {thisProgram().string(), "submission"};
         const std::vector<std::string> shared = sharedOptions(a);
         argv.insert(argv.end(), shared.begin(), shared.end());
-        argv.insert(argv.end(), {"--kit", kit, "--timing-lock", timingLockFor(timingCpus),
-                                 "--timing-cpus", joinCpus(timingCpus), "--work-cpus", joinCpus(workCpus),
-                                 "--viewer", a.viewer, "--solution-viewer", a.solutionViewer,
-                                 "--reference-cache", referenceCache});
+        argv.insert(argv.end(),
+                    {"--kit", kit, "--timing-lock", timingLockFor(timingCpus), "--timing-cpus",
+                     joinCpus(timingCpus), "--work-cpus", joinCpus(workCpus), "--viewer", a.viewer,
+                     "--solution-viewer", a.solutionViewer, "--reference-cache", referenceCache});
         return argv;
     }();
     if (!todo.empty()) {
@@ -341,17 +375,20 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
         buildLabKit(build, kit, {workCpus, sandboxUserForThisProcess()});
         std::vector<std::string> notes;
         const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
-        gradingScenes(rubric, {a.references, a.scenesDir, referenceCache, a.revealHidden}, solution, scratch, notes);
+        gradingScenes(rubric, {a.references, a.scenesDir, referenceCache, a.revealHidden}, solution,
+                      scratch, notes);
         runCanary(childBase, build.solutions, out, grading, log);
     }
     sayWhatIsKept(); // once the scenes' references and the canary let the batch go on
     // What this batch's gradebook is written against, for `grader merge`: only once the canary
     // passed, so that a batch it stopped changes nothing.
-    writeFileAtomically(out + "/batch.json",
-                        nlohmann::json{{"rubric_hash", grading.rubricHash}, {"scenes_hash", grading.scenesHash},
-                                       {"max_score", grading.maxScore}, {"deadline", deadline},
-                                       {"times", times}}
-                                .dump(1) + "\n");
+    writeFileAtomically(out + "/batch.json", nlohmann::json{{"rubric_hash", grading.rubricHash},
+                                                            {"scenes_hash", grading.scenesHash},
+                                                            {"max_score", grading.maxScore},
+                                                            {"deadline", deadline},
+                                                            {"times", times}}
+                                                     .dump(1) +
+                                                 "\n");
 
     std::vector<std::string> queued; // ids waiting or being graded: "pending" in the gradebook
     for (const Submission& s : todo) queued.push_back(s.id);
@@ -382,7 +419,8 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
             log << timestamp() << " start " << s.id << " (" << s.path << ")\n" << std::flush;
         }
         // The first job found to have ended, reaped; the others on later turns.
-        const auto job = std::find_if(running.begin(), running.end(), [](Job& j) { return j.child.poll(); });
+        const auto job =
+            std::find_if(running.begin(), running.end(), [](Job& j) { return j.child.poll(); });
         const auto now = std::chrono::steady_clock::now();
         for (Job& j : running)
             if (std::chrono::duration<double>(now - j.start).count() > jobSeconds)
@@ -392,7 +430,8 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
             continue;
         }
         queued.erase(std::find(queued.begin(), queued.end(), job->submission.id));
-        const GradebookEntry entry = readGradebookEntry(out, job->submission.id, job->submission.path);
+        const GradebookEntry entry =
+            readGradebookEntry(out, job->submission.id, job->submission.path);
         const double seconds = std::chrono::duration<double>(now - job->start).count();
         ++done;
         if (entry.result.is_null()) ++failed;
@@ -412,11 +451,14 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
     for (const Submission& s : submissions) ids.push_back(s.id);
     const std::vector<SimilarLabs> similar = similarSubmissions(out, ids);
     writeGradebook(out, entries(), grading, similar);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     log << timestamp() << " batch finished in " << seconds << " s\n";
-    std::printf("graded %zu submission(s) in %.0f s (%zu skipped, %zu not graded, %zu similar pair(s)): "
-                "%s/gradebook.csv, %s/lms.csv, %s/summary.html\n",
-                done - failed, seconds, skipped, failed, similar.size(), out.c_str(), out.c_str(), out.c_str());
+    std::printf(
+        "graded %zu submission(s) in %.0f s (%zu skipped, %zu not graded, %zu similar pair(s)): "
+        "%s/gradebook.csv, %s/lms.csv, %s/summary.html\n",
+        done - failed, seconds, skipped, failed, similar.size(), out.c_str(), out.c_str(),
+        out.c_str());
     return 0;
 }
 

@@ -48,23 +48,27 @@ int mergeBatches(const Arguments& a) {
             throw InputError(shard + ": not a batch's output (no submissions/ in it)");
         std::string shardDeadline, shardTimes;
         const GradingNow graded = shardGrading(shard, shardDeadline, shardTimes);
-        if (shard == a.inputs.front()) now = graded;
+        if (shard == a.inputs.front())
+            now = graded;
         else if (graded.rubricHash != now.rubricHash || graded.scenesHash != now.scenesHash ||
                  graded.maxScore != now.maxScore)
-            throw InputError(shard + " was graded under another rubric, other scenes or another maximum than " +
-                             a.inputs.front() + ": grade them alike before merging");
+            throw InputError(
+                shard + " was graded under another rubric, other scenes or another maximum than " +
+                a.inputs.front() + ": grade them alike before merging");
         if (deadline.empty()) deadline = shardDeadline;
         if (times.empty()) times = shardTimes;
         for (const auto& entry : fs::directory_iterator(fs::path(shard) / "submissions")) {
             const std::string id = entry.path().filename().string();
-            if (std::any_of(all.begin(), all.end(), [&](const GradebookEntry& x) { return x.id == id; }))
+            if (std::any_of(all.begin(), all.end(),
+                            [&](const GradebookEntry& x) { return x.id == id; }))
                 throw InputError("submission '" + id + "' is in more than one shard");
             all.push_back(readGradebookEntry(shard, id, ""));
         }
     }
     if (!deadline.empty()) {
         now.deadline = parseTime(deadline);
-        if (!now.deadline) throw InputError("option --deadline: cannot read the time '" + deadline + "'");
+        if (!now.deadline)
+            throw InputError("option --deadline: cannot read the time '" + deadline + "'");
     }
     if (!times.empty()) now.times = loadSubmissionTimes(times);
     fs::create_directories(a.out + "/submissions");
@@ -73,7 +77,8 @@ int mergeBatches(const Arguments& a) {
             for (const auto& entry : fs::directory_iterator(fs::path(shard) / "submissions"))
                 fs::copy(entry.path(), fs::path(a.out) / "submissions" / entry.path().filename(),
                          fs::copy_options::recursive | fs::copy_options::overwrite_existing);
-    std::sort(all.begin(), all.end(), [](const GradebookEntry& x, const GradebookEntry& y) { return x.id < y.id; });
+    std::sort(all.begin(), all.end(),
+              [](const GradebookEntry& x, const GradebookEntry& y) { return x.id < y.id; });
     std::vector<std::string> ids;
     for (const GradebookEntry& e : all) ids.push_back(e.id);
     writeGradebook(a.out, all, now, similarSubmissions(a.out, ids));

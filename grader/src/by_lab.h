@@ -10,8 +10,7 @@ namespace pathlab::grader {
 
 /// A plain aggregate over an array in the order of AllLabs: `ByLab<int> spp = {8, 32, 16, 32}`
 /// initialises it as the array would.
-template <class T>
-struct ByLab {
+template <class T> struct ByLab {
     std::array<T, AllLabs.size()> values{};
 
     T& operator[](Lab lab) { return values[index(lab)]; }

@@ -12,7 +12,8 @@ namespace pathlab::grader {
 
 namespace fs = std::filesystem;
 
-std::vector<SimilarLabs> similarSubmissions(const std::string& out, const std::vector<std::string>& ids) {
+std::vector<SimilarLabs> similarSubmissions(const std::string& out,
+                                            const std::vector<std::string>& ids) {
     const fs::path kit = fs::path(PATHLAB_GRADER_DIR).parent_path();
     std::vector<SubmittedFile> files;
     std::map<std::string, std::string> stubs;
@@ -20,10 +21,12 @@ std::vector<SimilarLabs> similarSubmissions(const std::string& out, const std::v
         const std::string name = std::string(labName(lab)), file = name + ".cpp";
         stubs[name] = readFile((kit / "labs" / file).string());
         if (fs::is_regular_file(kit / "solutions" / file))
-            files.push_back({"reference solutions", name, readFile((kit / "solutions" / file).string())});
+            files.push_back(
+                {"reference solutions", name, readFile((kit / "solutions" / file).string())});
         for (const std::string& id : ids) {
             const fs::path submitted = fs::path(out) / "submissions" / id / "submitted" / file;
-            if (fs::is_regular_file(submitted)) files.push_back({id, name, readFile(submitted.string())});
+            if (fs::is_regular_file(submitted))
+                files.push_back({id, name, readFile(submitted.string())});
         }
     }
     std::vector<SimilarLabs> similar;

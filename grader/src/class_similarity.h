@@ -12,6 +12,7 @@ namespace pathlab::grader {
 /// Pairs among the lab files the submissions `ids` handed in (OUT/submissions/ID/submitted/) and
 /// the kit's solutions (as "reference solutions"), the kit's stubs left out of every comparison;
 /// most alike first.
-std::vector<SimilarLabs> similarSubmissions(const std::string& out, const std::vector<std::string>& ids);
+std::vector<SimilarLabs> similarSubmissions(const std::string& out,
+                                            const std::vector<std::string>& ids);
 
 } // namespace pathlab::grader

@@ -19,9 +19,7 @@ ContentHash& ContentHash::add(std::string_view bytes) {
     return *this;
 }
 
-ContentHash& ContentHash::addFile(const std::string& path) {
-    return add(readFile(path));
-}
+ContentHash& ContentHash::addFile(const std::string& path) { return add(readFile(path)); }
 
 std::string ContentHash::hex() const {
     char text[17];

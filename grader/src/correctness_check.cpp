@@ -27,20 +27,32 @@ struct SceneRuns {
     std::vector<float> meanImage() const {
         std::vector<float> mean(images.front().size(), 0.0f);
         for (const auto& image : images)
-            for (size_t i = 0; i < image.size(); ++i) mean[i] += image[i] / static_cast<float>(images.size());
+            for (size_t i = 0; i < image.size(); ++i)
+                mean[i] += image[i] / static_cast<float>(images.size());
         return mean;
     }
 };
 
-SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab lab, uint64_t seedBase) {
+SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab lab,
+                      uint64_t seedBase) {
     const Rubric& r = setup.rubric;
     SceneRuns runs;
     // All seeds in one viewer process: its start-up, longer than a small render, is paid once.
-    const LabParameters parameters = scene.parameters.value_or(LabParameters{r.maxDepth, r.continueProb});
+    const LabParameters parameters =
+        scene.parameters.value_or(LabParameters{r.maxDepth, r.continueProb});
     const int spp = r.forLab(lab).correctnessSpp;
-    const RenderRequest request{&setup.student, scene.path, lab, r.width, r.height, spp,
-                                parameters.maxDepth, parameters.continueProb, seedBase, r.seeds,
-                                setup.threads, setup.scratch};
+    const RenderRequest request{&setup.student,
+                                scene.path,
+                                lab,
+                                r.width,
+                                r.height,
+                                spp,
+                                parameters.maxDepth,
+                                parameters.continueProb,
+                                seedBase,
+                                r.seeds,
+                                setup.threads,
+                                setup.scratch};
     const RenderResult result = renderLab(request, limitsOf(setup));
     if (!result.ok) {
         runs.failure = result.failure;
@@ -50,7 +62,8 @@ SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab l
     RayCounters rays;
     for (const RenderedImage& rendered : result.images) {
         rays += rendered.rays;
-        const std::vector<double> means = regionMeans(rendered.rgb, result.width, result.height, r.tiles);
+        const std::vector<double> means =
+            regionMeans(rendered.rgb, result.width, result.height, r.tiles);
         if (runs.regionValues.empty()) runs.regionValues.resize(means.size());
         for (size_t i = 0; i < means.size(); ++i) runs.regionValues[i].push_back(means[i]);
         runs.images.push_back(rendered.rgb);
@@ -73,9 +86,9 @@ Comparison compare(const SceneRuns& runs, const Expectation& expected, int seeds
         // differ by float rounding, which grows with spp. That rounding, a few parts in 1e7
         // of a float accumulation, is bounded by a relative floor far below any bug's effect.
         const double rounding = floatRoundingFloor * std::fabs(expected.mean[i]);
-        const double se = std::sqrt(m.standardError * m.standardError +
-                                    expected.standardError[i] * expected.standardError[i] +
-                                    rounding * rounding);
+        const double se =
+            std::sqrt(m.standardError * m.standardError +
+                      expected.standardError[i] * expected.standardError[i] + rounding * rounding);
         const double t = se > 0 ? (m.mean - expected.mean[i]) / se
                                 : (m.mean == expected.mean[i] ? 0.0 : INFINITY);
         c.t.push_back(t);
@@ -116,7 +129,8 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
     for (const GradingScene& scene : setup.scenes) {
         const SceneRuns runs = renderSeeds(setup, scene, lab, seedBase);
         if (!runs.failure.empty()) {
-            attempt.failure = {"on " + scene.name + " the lab " + withoutSceneName(runs.failure, scene),
+            attempt.failure = {"on " + scene.name + " the lab " +
+                                   withoutSceneName(runs.failure, scene),
                                runs.failureKind};
             return attempt;
         }
@@ -127,7 +141,8 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
         comparisons.push_back(compare(runs, scene.reference.forLab(lab), r.seeds));
         allP.insert(allP.end(), comparisons.back().p.begin(), comparisons.back().p.end());
         if (scene.hidden) continue; // its images are the instructor's
-        LabGrade::Pictures pictures{scene.name, r.width, r.height, {}, scene.reference.forLab(lab).image};
+        LabGrade::Pictures pictures{
+            scene.name, r.width, r.height, {}, scene.reference.forLab(lab).image};
         pictures.student = runs.meanImage();
         attempt.pictures.push_back(std::move(pictures));
     }
@@ -141,7 +156,8 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
         return attempt;
     }
     if (std::none_of(rejected.begin(), rejected.end(), [](bool b) { return b; })) {
-        if (const std::string note = pathLengthNote(pathLengths); !note.empty()) details.push_back(note);
+        if (const std::string note = pathLengthNote(pathLengths); !note.empty())
+            details.push_back(note);
         for (const GradingScene& scene : setup.scenes)
             if (scene.hidden) hiddenDetails.push_back(scene.name + HiddenSceneMatches);
         attempt.passed = true;
@@ -162,9 +178,10 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
     bool furnaceRejected = false, refractionRejected = false;
     for (size_t s = 0; s < setup.scenes.size(); ++s) {
         furnaceRejected = furnaceRejected || (setup.scenes[s].furnace && sceneRejected[s]);
-        refractionRejected = refractionRejected ||
-                             (!setup.scenes[s].hidden && setup.scenes[s].reference.scene == "refraction_check" &&
-                              sceneRejected[s]);
+        refractionRejected =
+            refractionRejected ||
+            (!setup.scenes[s].hidden && setup.scenes[s].reference.scene == "refraction_check" &&
+             sceneRejected[s]);
     }
     // Every furnace's value, accepted or not, narrows down the known bugs that explain them.
     std::vector<FurnaceObservation> furnaces;
@@ -176,14 +193,18 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
         const Comparison& c = comparisons[s];
         const Expectation& e = scene.reference.forLab(lab);
         const double observed = (c.observed[0].mean + c.observed[1].mean + c.observed[2].mean) / 3;
-        if (scene.furnace) furnaces.push_back({*scene.furnace, observed, c.observed[0].standardError});
+        if (scene.furnace)
+            furnaces.push_back({*scene.furnace, observed, c.observed[0].standardError});
         if (scene.hidden) {
-            hiddenDetails.push_back(scene.name + (sceneRejected[s] ? HiddenSceneDiffers : HiddenSceneMatches));
+            hiddenDetails.push_back(scene.name +
+                                    (sceneRejected[s] ? HiddenSceneDiffers : HiddenSceneMatches));
         } else if (sceneRejected[s]) {
             std::string line = scene.name + ": observed/expected";
             for (int ch = 0; ch < 3; ++ch) {
                 const double ratio = c.observed[ch].mean / e.mean[ch];
-                const double half = critical * std::hypot(c.observed[ch].standardError, e.standardError[ch]) / e.mean[ch];
+                const double half = critical *
+                                    std::hypot(c.observed[ch].standardError, e.standardError[ch]) /
+                                    e.mean[ch];
                 line += std::string(" ") + channel[ch] + " " + fixed(ratio, 3) + " [" +
                         fixed(ratio - half, 3) + ", " + fixed(ratio + half, 3) + "]";
             }
@@ -196,12 +217,15 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
                 if (!any) continue;
                 const int tile = static_cast<int>(i / 3) - 1;
                 ++tileCount;
-                tiles += " (" + std::to_string(tile % r.tiles) + "," + std::to_string(tile / r.tiles) + ")";
+                tiles += " (" + std::to_string(tile % r.tiles) + "," +
+                         std::to_string(tile / r.tiles) + ")";
             }
             if (tileCount > 0)
                 details.push_back(scene.name + ": " + std::to_string(tileCount) + " of " +
-                                  std::to_string(r.tiles * r.tiles) + " tiles differ (column,row from the top left):" + tiles);
-            if (scene.reference.scene == "mixed_surfaces" && !furnaceRejected && !refractionRejected) {
+                                  std::to_string(r.tiles * r.tiles) +
+                                  " tiles differ (column,row from the top left):" + tiles);
+            if (scene.reference.scene == "mixed_surfaces" && !furnaceRejected &&
+                !refractionRejected) {
                 const std::string cause = likelyDirectionCause(lab);
                 details.push_back("likely cause: " + cause);
                 if (diagnosis.empty()) diagnosis = cause.substr(0, cause.find(':'));
@@ -212,7 +236,8 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
                 if (diagnosis.empty()) diagnosis = cause.substr(0, cause.find(':'));
             }
             if (scene.furnace)
-                details.push_back(scene.name + ": " + fixed(observed, 4) + ", where a correct lab gives " +
+                details.push_back(scene.name + ": " + fixed(observed, 4) +
+                                  ", where a correct lab gives " +
                                   fixed(correctFurnaceValue(lab, *scene.furnace), 4));
         }
         offset += c.p.size();
@@ -241,9 +266,10 @@ std::string parameterCheckText(const GraderSetup& setup, Lab lab) {
     for (const GradingScene& scene : setup.scenes) {
         if (!scene.parameters) continue;
         return isDepthLimited(lab)
-                   ? ", and the furnace's analytic value at maxDepth " + std::to_string(scene.parameters->maxDepth)
-                   : ", at continueProb " + significant(scene.parameters->continueProb, 2) + " as at " +
-                         significant(setup.rubric.continueProb, 2);
+                   ? ", and the furnace's analytic value at maxDepth " +
+                         std::to_string(scene.parameters->maxDepth)
+                   : ", at continueProb " + significant(scene.parameters->continueProb, 2) +
+                         " as at " + significant(setup.rubric.continueProb, 2);
     }
     return "";
 }
@@ -271,9 +297,10 @@ CorrectnessOutcome checkCorrectness(const GraderSetup& setup, Lab lab) {
     outcome.noise = attempt.noise;
     outcome.pictures = std::move(attempt.pictures);
     check.score = check.passed ? check.maxScore : 0;
-    const std::string expected = isDepthLimited(lab)
-                                     ? "the depth-limited image (maxDepth " + std::to_string(setup.rubric.maxDepth) + ")"
-                                     : "the unbiased image";
+    const std::string expected =
+        isDepthLimited(lab)
+            ? "the depth-limited image (maxDepth " + std::to_string(setup.rubric.maxDepth) + ")"
+            : "the unbiased image";
     std::vector<std::string>& details = attempt.details;
     const RunFailure& failure = attempt.failure;
     if (check.passed) {
@@ -300,7 +327,8 @@ GradingScene parameterCheckScene(const Rubric& rubric) {
     scene.parameters = LabParameters{check.maxDepth, check.continueProb};
     scene.furnace = furnaceModel(check.scene, check.maxDepth, check.continueProb);
     if (!scene.furnace)
-        throw InputError("rubric: parameter_check.scene '" + check.scene + "' is not a furnace "
+        throw InputError("rubric: parameter_check.scene '" + check.scene +
+                         "' is not a furnace "
                          "of models/ (furnace, furnace_a08, mirror_furnace)");
     SceneReference& ref = scene.reference;
     ref = referenceHeader(check.scene + " at maxDepth " + std::to_string(check.maxDepth) +
@@ -328,7 +356,8 @@ std::string withoutSceneName(std::string text, const GradingScene& scene) {
     if (!scene.hidden) return text;
     for (const std::string& secret : {scene.path, scene.reference.scene}) {
         if (secret.empty()) continue;
-        for (size_t at = text.find(secret); at != std::string::npos; at = text.find(secret, at + scene.name.size()))
+        for (size_t at = text.find(secret); at != std::string::npos;
+             at = text.find(secret, at + scene.name.size()))
             text.replace(at, secret.size(), scene.name);
     }
     return text;

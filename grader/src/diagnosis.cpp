@@ -126,8 +126,7 @@ std::vector<std::string> likelyFurnaceCauses(Lab lab,
     std::stable_sort(matches.begin(), matches.end(),
                      [](const auto& x, const auto& y) { return x.first < y.first; });
     std::vector<std::string> causes;
-    for (auto& match : matches)
-        causes.push_back(std::move(match.second));
+    for (auto& match : matches) causes.push_back(std::move(match.second));
     return causes;
 }
 

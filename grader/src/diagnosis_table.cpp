@@ -21,7 +21,8 @@ const std::array<ByLab<int>, 7> StepNumbers = {{
     {0, 0, 3, 3}, // NearBlackStop
 }};
 
-constexpr LabSet DepthLimited = labBit(Lab::Branching) | labBit(Lab::Uniform) | labBit(Lab::Importance);
+constexpr LabSet DepthLimited =
+    labBit(Lab::Branching) | labBit(Lab::Uniform) | labBit(Lab::Importance);
 constexpr LabSet WithNearBlackStop = labBit(Lab::Importance) | labBit(Lab::Roulette);
 
 std::string replaced(std::string text, const std::string& placeholder, const std::string& by) {
@@ -33,7 +34,8 @@ std::string replaced(std::string text, const std::string& placeholder, const std
 /// `text` with its step named: in place of "{step}", or at the end.
 std::string withStep(const std::string& text, const std::optional<LabStep>& step, Lab lab) {
     if (!step) return text;
-    if (text.find("{step}") != std::string::npos) return replaced(text, "{step}", todoName(*step, lab));
+    if (text.find("{step}") != std::string::npos)
+        return replaced(text, "{step}", todoName(*step, lab));
     return text + " (" + todoName(*step, lab) + ")";
 }
 
@@ -48,41 +50,50 @@ std::string todoName(LabStep step, Lab lab) {
 
 const std::vector<KnownBug>& knownBugs() {
     static const std::vector<KnownBug> bugs = {
-        {"no bounce rays yet", "the lab renders direct light only (its steps from {step} on are "
-         "still open)", LabStep::FirstBounce, EveryLab,
+        {"no bounce rays yet",
+         "the lab renders direct light only (its steps from {step} on are "
+         "still open)",
+         LabStep::FirstBounce, EveryLab,
          [](FurnaceBehaviour& b) { b.diffuseWeight = b.mirrorWeight = 0; }},
-        {"emission after a specular bounce missing", "a ray that left a mirror or a refraction "
+        {"emission after a specular bounce missing",
+         "a ray that left a mirror or a refraction "
          "(RayKind::Specular) must add hit.emitted, since next-event estimation never finds a "
-         "light in one exact direction", LabStep::Emission, EveryLab,
-         [](FurnaceBehaviour& b) { b.emissionAfterSpecular = false; }},
-        {"emission counted twice", "it is added after diffuse bounces too, although next-event "
-         "estimation already counted it", LabStep::Emission, EveryLab,
-         [](FurnaceBehaviour& b) { b.emissionAfterDiffuse = true; }},
+         "light in one exact direction",
+         LabStep::Emission, EveryLab, [](FurnaceBehaviour& b) { b.emissionAfterSpecular = false; }},
+        {"emission counted twice",
+         "it is added after diffuse bounces too, although next-event "
+         "estimation already counted it",
+         LabStep::Emission, EveryLab, [](FurnaceBehaviour& b) { b.emissionAfterDiffuse = true; }},
         {"no next-event estimation", "ctx.directLight(hit), given in the lab file, is missing",
          std::nullopt, EveryLab, [](FurnaceBehaviour& b) { b.directWeight = 0; }},
         // Lab 4 without next-event estimation but with emission after every bounce is still
         // unbiased: the same mean, in every furnace, as a correct one.
-        {"no next-event estimation, with emission added after every bounce instead", "emission "
+        {"no next-event estimation, with emission added after every bounce instead",
+         "emission "
          "belongs after camera and specular rays only, beside ctx.directLight(hit)",
          LabStep::Emission, DepthLimited,
          [](FurnaceBehaviour& b) { b.directWeight = 0, b.emissionAfterDiffuse = true; }},
-        {"a factor of pi", "the diffuse bounce is weighted by pi*Kd; with cosine sampling the "
-         "weight is Kd alone", LabStep::DiffuseWeight, EveryLab,
-         [](FurnaceBehaviour& b) { b.diffuseWeight = Pi; }},
-        {"a factor of 1/pi", "the diffuse bounce is weighted by Kd/pi; with cosine sampling the "
-         "weight is Kd alone", LabStep::DiffuseWeight, EveryLab,
-         [](FurnaceBehaviour& b) { b.diffuseWeight = 1 / Pi; }},
+        {"a factor of pi",
+         "the diffuse bounce is weighted by pi*Kd; with cosine sampling the "
+         "weight is Kd alone",
+         LabStep::DiffuseWeight, EveryLab, [](FurnaceBehaviour& b) { b.diffuseWeight = Pi; }},
+        {"a factor of 1/pi",
+         "the diffuse bounce is weighted by Kd/pi; with cosine sampling the "
+         "weight is Kd alone",
+         LabStep::DiffuseWeight, EveryLab, [](FurnaceBehaviour& b) { b.diffuseWeight = 1 / Pi; }},
         {"direct light weighted by an extra pi", "", std::nullopt, EveryLab,
          [](FurnaceBehaviour& b) { b.directWeight = Pi; }},
-        {"depth off by one", "one bounce too many: return before the bounce when depth >= "
-         "ctx.maxDepth (the primary hit is depth 0)", LabStep::DepthLimit, DepthLimited,
-         [](FurnaceBehaviour& b) { b.depthShift = 1; }},
+        {"depth off by one",
+         "one bounce too many: return before the bounce when depth >= "
+         "ctx.maxDepth (the primary hit is depth 0)",
+         LabStep::DepthLimit, DepthLimited, [](FurnaceBehaviour& b) { b.depthShift = 1; }},
         {"depth off by one", "one bounce too few: the primary hit is depth 0", LabStep::DepthLimit,
          DepthLimited, [](FurnaceBehaviour& b) { b.depthShift = -1; }},
         // Furnaces at two maxDepths tell a lab that ignores it: it renders one of them right.
-        {"ctx.maxDepth ignored", "the lab renders as if maxDepth were {depth}, whatever "
-         "ctx.maxDepth says (a constant in its place?)", LabStep::DepthLimit, DepthLimited,
-         [](FurnaceBehaviour&) {}, true},
+        {"ctx.maxDepth ignored",
+         "the lab renders as if maxDepth were {depth}, whatever "
+         "ctx.maxDepth says (a constant in its place?)",
+         LabStep::DepthLimit, DepthLimited, [](FurnaceBehaviour&) {}, true},
         // A wrong pick weight scales whichever component is picked.
         {"forgot to divide by the pick probability 1/3", "", LabStep::ProbabilityDivision,
          labBit(Lab::Uniform),
@@ -112,10 +123,12 @@ const std::vector<Hint>& hints() {
         {HintTopic::NonfiniteRadiance, WithNearBlackStop,
          "a division by zero: on a surface with no component at all (the light's material has "
          "only Ke) the strengths sum to 0 and total/strength is 0/0; the near-black stop must "
-         "return before the pick", LabStep::NearBlackStop},
+         "return before the pick",
+         LabStep::NearBlackStop},
         {HintTopic::NonfiniteRadiance, EveryLab,
          "a division by zero (0/0 is NaN, x/0 infinite) or a value used before it is set, in the "
-         "lab's own arithmetic", std::nullopt},
+         "lab's own arithmetic",
+         std::nullopt},
         {HintTopic::DiffuseDirection, EveryLab,
          "diffuse directions drawn from part of the hemisphere: on surfaces that are part "
          "diffuse, part mirror or glass, lit from one side, the image differs; is a random number "
@@ -126,23 +139,27 @@ const std::vector<Hint>& hints() {
         {HintTopic::Refraction, EveryLab,
          "the view through the glass sphere is wrong: the Kt component must trace "
          "refractionRay(ray, hit), which bends the ray by Ni and turns into a mirror ray under "
-         "total internal reflection", LabStep::Refraction},
+         "total internal reflection",
+         LabStep::Refraction},
         {HintTopic::TooNoisy, labBit(Lab::Importance),
          "an importance pick that picks uniformly, or that picks components whose reflectance is "
          "zero, is this noisy; the probabilities should follow reduceMax(Kd), reduceMax(Ks), "
-         "reduceMax(Kt)", std::nullopt},
+         "reduceMax(Kt)",
+         std::nullopt},
         {HintTopic::TooNoisy, labBit(Lab::Roulette),
          "Russian roulette should pick the component by importance, as in lab 3", std::nullopt},
         {HintTopic::TooNoisy, EveryLab,
          "more noise than the reference at the same mean: is a component sampled with the wrong "
-         "probability, or a random number reused?", std::nullopt},
+         "probability, or a random number reused?",
+         std::nullopt},
     };
     return all;
 }
 
 std::string hintFor(HintTopic topic, Lab lab) {
     for (const Hint& hint : hints())
-        if (hint.topic == topic && (hint.labs & labBit(lab))) return withStep(hint.text, hint.step, lab);
+        if (hint.topic == topic && (hint.labs & labBit(lab)))
+            return withStep(hint.text, hint.step, lab);
     return "";
 }
 

@@ -17,9 +17,9 @@ enum class LabStep {
     Emission,
     DepthLimit,
     FirstBounce,
-    DiffuseWeight,         ///< lab 1's diffuse bounce; the trace of the pick in labs 2-4
+    DiffuseWeight, ///< lab 1's diffuse bounce; the trace of the pick in labs 2-4
     Refraction,
-    ProbabilityDivision,   ///< labs 2-4 divide by the pick's probability (lab 4 by both)
+    ProbabilityDivision, ///< labs 2-4 divide by the pick's probability (lab 4 by both)
     NearBlackStop,
 };
 
@@ -41,8 +41,8 @@ struct FurnaceBehaviour {
     double directWeight = 1;  ///< next-event estimation's weight (none: 0)
     bool emissionAfterDiffuse = false;
     bool emissionAfterSpecular = true;
-    int depthShift = 0;        ///< labs 1-3: bounces beyond (or short of) maxDepth
-    int fixedDepth = -1;       ///< labs 1-3: a depth limit of its own, whatever maxDepth is (-1: none)
+    int depthShift = 0;  ///< labs 1-3: bounces beyond (or short of) maxDepth
+    int fixedDepth = -1; ///< labs 1-3: a depth limit of its own, whatever maxDepth is (-1: none)
     int rouletteDivisions = 1; ///< lab 4: how often a continued path is divided by continueProb
 };
 

@@ -28,15 +28,25 @@ Expectation measure(const LabRunner& solution, const std::string& scene, Lab lab
     std::vector<std::vector<double>> perRegion;
     std::vector<double> imageSum;
     for (int s = 0; s < seeds; ++s) {
-        RenderRequest r{&solution, scene, lab, rubric.width, rubric.height,
-                        spp, rubric.maxDepth, rubric.continueProb,
-                        static_cast<uint64_t>(1000000 + s), 1, 0, scratch};
+        RenderRequest r{&solution,
+                        scene,
+                        lab,
+                        rubric.width,
+                        rubric.height,
+                        spp,
+                        rubric.maxDepth,
+                        rubric.continueProb,
+                        static_cast<uint64_t>(1000000 + s),
+                        1,
+                        0,
+                        scratch};
         const RenderResult result = renderLab(r, {rubric.secondsPerRun * 20, rubric.memoryBytes});
         if (!result.ok)
             throw std::runtime_error("the reference solution of " + e.solution + " failed on " +
                                      scene + ": " + result.failure);
         const std::vector<float>& image = result.image();
-        const std::vector<double> means = regionMeans(image, result.width, result.height, rubric.tiles);
+        const std::vector<double> means =
+            regionMeans(image, result.width, result.height, rubric.tiles);
         if (perRegion.empty()) perRegion.resize(means.size()), imageSum.assign(image.size(), 0.0);
         for (size_t i = 0; i < means.size(); ++i) perRegion[i].push_back(means[i]);
         for (size_t i = 0; i < image.size(); ++i) imageSum[i] += image[i];
@@ -52,8 +62,12 @@ Expectation measure(const LabRunner& solution, const std::string& scene, Lab lab
 }
 
 nlohmann::json toJson(const Expectation& e, const std::string& imageFile) {
-    return {{"solution", e.solution}, {"seeds", e.seeds}, {"spp", e.spp}, {"mean", e.mean},
-            {"standard_error", e.standardError}, {"image", imageFile}};
+    return {{"solution", e.solution},
+            {"seeds", e.seeds},
+            {"spp", e.spp},
+            {"mean", e.mean},
+            {"standard_error", e.standardError},
+            {"image", imageFile}};
 }
 
 Expectation fromJson(const nlohmann::json& j, const std::string& folder, int width, int height) {
@@ -74,8 +88,8 @@ Expectation fromJson(const nlohmann::json& j, const std::string& folder, int wid
 
 std::string referenceParametersHash(const Rubric& r) {
     ContentHash hash;
-    for (const double value : {double(r.width), double(r.height), double(r.tiles), double(r.maxDepth),
-                               double(r.continueProb)})
+    for (const double value : {double(r.width), double(r.height), double(r.tiles),
+                               double(r.maxDepth), double(r.continueProb)})
         hash.add(std::to_string(value));
     return hash.hex();
 }
@@ -105,19 +119,32 @@ SceneReference measureReference(const LabRunner& solution, const std::string& sc
     const int noiseGroups = 6;
     const int total = 2 * seeds + 4 * noiseGroups;
     int done = 0;
-    auto step = [&] { if (progress) progress(++done, total); };
+    auto step = [&] {
+        if (progress) progress(++done, total);
+    };
     const int spp = rubric.forLab(Lab::Importance).correctnessSpp * sppFactor;
     // Importance and roulette: the fastest to converge of the depth-limited and unbiased labs.
-    ref.depthLimited = measure(solution, scenePath, Lab::Importance, rubric, seeds, spp, scratch, step);
+    ref.depthLimited =
+        measure(solution, scenePath, Lab::Importance, rubric, seeds, spp, scratch, step);
     ref.unbiased = measure(solution, scenePath, Lab::Roulette, rubric, seeds, spp, scratch, step);
     for (Lab lab : AllLabs) {
         const int labSpp = rubric.forLab(lab).correctnessSpp;
         double sum = 0;
         for (int g = 0; g < noiseGroups; ++g) {
-            const RenderRequest r{&solution, scenePath, lab, rubric.width, rubric.height, labSpp,
-                                  rubric.maxDepth, rubric.continueProb,
-                                  static_cast<uint64_t>(2000000 + 1000 * g), rubric.seeds, 0, scratch};
-            const RenderResult result = renderLab(r, {rubric.secondsPerRun * 20, rubric.memoryBytes});
+            const RenderRequest r{&solution,
+                                  scenePath,
+                                  lab,
+                                  rubric.width,
+                                  rubric.height,
+                                  labSpp,
+                                  rubric.maxDepth,
+                                  rubric.continueProb,
+                                  static_cast<uint64_t>(2000000 + 1000 * g),
+                                  rubric.seeds,
+                                  0,
+                                  scratch};
+            const RenderResult result =
+                renderLab(r, {rubric.secondsPerRun * 20, rubric.memoryBytes});
             if (!result.ok)
                 throw std::runtime_error("the reference solution failed: " + result.failure);
             std::vector<std::vector<float>> images;
@@ -183,11 +210,13 @@ SceneReference loadReference(const std::string& folder, const std::string& scene
         // Stale before anything else is read: its images may have another size.
         std::vector<std::string> changed;
         if (ref.sceneFilesHash != sceneFilesHash(scenePath))
-            changed.push_back("the scene's files (" + scenePath + " and the .obj/.mtl it names) changed");
+            changed.push_back("the scene's files (" + scenePath +
+                              " and the .obj/.mtl it names) changed");
         if (ref.parametersHash != referenceParametersHash(rubric))
             changed.push_back("the rubric's image size, tiles, max_depth or continue_prob changed");
         if (ref.kitVersion != PATHLAB_VERSION)
-            changed.push_back("it was made by PathLab " + ref.kitVersion + ", this is " + PATHLAB_VERSION);
+            changed.push_back("it was made by PathLab " + ref.kitVersion + ", this is " +
+                              PATHLAB_VERSION);
         if (!changed.empty()) {
             std::string why;
             for (const std::string& c : changed) why += (why.empty() ? "" : "; ") + c;
@@ -195,8 +224,7 @@ SceneReference loadReference(const std::string& folder, const std::string& scene
         }
         ref.depthLimited = fromJson(j.at("depth_limited"), folder, ref.width, ref.height);
         ref.unbiased = fromJson(j.at("unbiased"), folder, ref.width, ref.height);
-        for (Lab lab : AllLabs)
-            ref.noise[lab] = j.at("noise").at(std::string(labName(lab)));
+        for (Lab lab : AllLabs) ref.noise[lab] = j.at("noise").at(std::string(labName(lab)));
         ref.noiseSeeds = j.at("noise_seeds");
         ref.noiseSpp.values = j.at("noise_spp").get<decltype(ref.noiseSpp.values)>();
     } catch (const nlohmann::json::exception& e) {

@@ -16,29 +16,32 @@ namespace pathlab::grader {
 
 /// The expected region means (flat [region][channel], see regionMeans) and their standard errors.
 struct Expectation {
-    std::string solution;          ///< which reference solution measured it
+    std::string solution; ///< which reference solution measured it
     int seeds = 0, spp = 0;
     std::vector<double> mean, standardError;
-    std::vector<float> image;      ///< the mean image, for the reports' pictures
+    std::vector<float> image; ///< the mean image, for the reports' pictures
 };
 
 /// Everything the grader compares one scene with.
 struct SceneReference {
-    std::string scene;             ///< name, e.g. "furnace"
+    std::string scene; ///< name, e.g. "furnace"
     /// What it was measured from: a stored or cached reference whose hashes or kit version
     /// differ from the scene's and rubric's now is stale (loadReference).
     std::string kitVersion;
-    std::string sceneFilesHash;    ///< scene_files.h
-    std::string parametersHash;    ///< referenceParametersHash
+    std::string sceneFilesHash; ///< scene_files.h
+    std::string parametersHash; ///< referenceParametersHash
     int width = 0, height = 0, tiles = 0, maxDepth = 0;
     float continueProb = 0;
-    Expectation depthLimited;      ///< labs 1-3, at maxDepth
-    Expectation unbiased;          ///< lab 4
-    ByLab<double> noise;           ///< each lab's solution's trimmedSampleVariance at the rubric's seeds and spp
-    int noiseSeeds = 0;            ///< the seeds and spp (by lab) the noise was measured at
+    Expectation depthLimited; ///< labs 1-3, at maxDepth
+    Expectation unbiased;     ///< lab 4
+    ByLab<double>
+        noise; ///< each lab's solution's trimmedSampleVariance at the rubric's seeds and spp
+    int noiseSeeds = 0; ///< the seeds and spp (by lab) the noise was measured at
     ByLab<int> noiseSpp;
 
-    const Expectation& forLab(Lab lab) const { return isDepthLimited(lab) ? depthLimited : unbiased; }
+    const Expectation& forLab(Lab lab) const {
+        return isDepthLimited(lab) ? depthLimited : unbiased;
+    }
 };
 
 /// Called with (done, total) as reference renders finish, for a progress bar.

@@ -39,15 +39,18 @@ void makeLabFigures(const Arguments& a, const Rubric& rubric, const std::string&
         ProgressBar bar("lab figures: timed runs", "labs");
         int timed = 0;
         for (Lab lab : AllLabs) {
-            figures.timedSamplesPerSecond[lab] = timedSamplesPerSecond(setup, setup.solution, lab, startUps);
+            figures.timedSamplesPerSecond[lab] =
+                timedSamplesPerSecond(setup, setup.solution, lab, startUps);
             bar.update(++timed, static_cast<int>(AllLabs.size()));
         }
     }
     std::fprintf(stderr, "lab figures: the notebook's renders ...\n");
-    figures.notebook = measureNotebook(setup.solution, notebookEstimators({AllLabs.begin(), AllLabs.end()}, rubric),
+    figures.notebook = measureNotebook(setup.solution,
+                                       notebookEstimators({AllLabs.begin(), AllLabs.end()}, rubric),
                                        rubric, a.threads, scratch);
     for (const auto& [key, f] : figures.notebook)
-        if (!f.failure.empty()) throw std::runtime_error("the reference solution " + key + " failed: " + f.failure);
+        if (!f.failure.empty())
+            throw std::runtime_error("the reference solution " + key + " failed: " + f.failure);
     saveLabFigures(labFiguresPath(a), figures, rubric);
     std::printf("wrote %s (%s)\n", labFiguresPath(a).c_str(), figures.machine.describe().c_str());
 }
@@ -63,17 +66,19 @@ int makeReferences(const Arguments& a, const Rubric& rubric, const std::string& 
     const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
     if (a.onlyHidden) {
         if (a.scenesDir.empty())
-            throw InputError("option --only-hidden: no hidden scenes (grader/hidden_scenes/ holds no .ecs; "
-                             "or name a folder with --scenes DIR)");
+            throw InputError(
+                "option --only-hidden: no hidden scenes (grader/hidden_scenes/ holds no .ecs; "
+                "or name a folder with --scenes DIR)");
         std::vector<std::string> notes;
-        gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden}, solution,
-                      scratch, notes);
+        gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden},
+                      solution, scratch, notes);
         std::printf("the hidden scenes' references are in %s\n", a.referenceCache.c_str());
         return 0;
     }
     if (!a.onlyScene.empty() &&
         std::find(rubric.scenes.begin(), rubric.scenes.end(), a.onlyScene) == rubric.scenes.end())
-        throw InputError("option --only-scene: '" + a.onlyScene + "' is not a scene of the rubric's "
+        throw InputError("option --only-scene: '" + a.onlyScene +
+                         "' is not a scene of the rubric's "
                          "correctness.scenes");
     for (const std::string& scene : rubric.scenes) {
         if (!a.onlyScene.empty() && scene != a.onlyScene) continue;
@@ -91,7 +96,8 @@ int makeReferences(const Arguments& a, const Rubric& rubric, const std::string& 
 void writeReports(const Arguments& a, const Rubric& rubric, const GradeReport& report) {
     if (!a.json.empty()) writeFileAtomically(a.json, jsonReport(report));
     if (!a.junit.empty()) writeFileAtomically(a.junit, junitReport(report));
-    if (!a.gradescope.empty()) writeFileAtomically(a.gradescope, gradescopeReport(report, rubric.hiddenScenesVisibility));
+    if (!a.gradescope.empty())
+        writeFileAtomically(a.gradescope, gradescopeReport(report, rubric.hiddenScenesVisibility));
     if (!a.html.empty()) writeHtmlReport(report, a.html);
 }
 
@@ -121,15 +127,17 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
             report.ratiosReference = "the reference solutions on " + stored->machine.describe();
         }
     }
-    setup.scenes = gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden},
-                                 setup.solution, scratch, report.notes);
+    setup.scenes =
+        gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden},
+                      setup.solution, scratch, report.notes);
     // The time limits, scaled to this machine's speed now: the reference's start-up where this
     // build has the solutions, the student's own viewer's where it has not (the start-up is the
     // scene and Embree's BVH, the same for any lab).
     StartUpTimes startUps;
     setup.runSeconds = scaledTimeLimit(
         rubric.secondsPerRun,
-        speedSceneStartUpSeconds(setup, PATHLAB_HAS_SOLUTIONS ? setup.solution : setup.student, startUps),
+        speedSceneStartUpSeconds(setup, PATHLAB_HAS_SOLUTIONS ? setup.solution : setup.student,
+                                 startUps),
         stored ? stored->startUpSeconds : 0);
     if (setup.runSeconds > rubric.secondsPerRun)
         report.notes.push_back(timeLimitNote(rubric.secondsPerRun, setup.runSeconds));
@@ -137,7 +145,8 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
         std::fprintf(stderr, "grading %s ...\n", std::string(labName(lab)).c_str());
         report.labs.push_back(gradeLab(setup, lab, startUps));
     }
-    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fputs(terminalReport(report, ::isatty(STDOUT_FILENO)).c_str(), stdout);
     writeReports(a, rubric, report);
     if (!a.report.empty()) {
@@ -146,7 +155,8 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
         yours.machine = thisMachine(a.threads);
         yours.notebook = measureNotebook(setup.student, notebookEstimators(a.labs, rubric), rubric,
                                          a.threads, scratch);
-        writeFileAtomically(a.report, labReport(report, rubric, yours, stored, observationsIn(a.report)));
+        writeFileAtomically(a.report,
+                            labReport(report, rubric, yours, stored, observationsIn(a.report)));
         std::printf("lab report: %s\n", a.report.c_str());
     }
     return report.score() == report.maxScore() ? 0 : 1;

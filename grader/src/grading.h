@@ -26,9 +26,9 @@ struct CheckResult {
     CheckKind kind = CheckKind::Correctness;
     double score = 0, maxScore = 0;
     bool passed = false;
-    std::string summary;         ///< one line
+    std::string summary;              ///< one line
     std::vector<std::string> details; ///< what to look at, in words
-    std::string diagnosis;       ///< a failure's cause in a few words, for a class's summary
+    std::string diagnosis;            ///< a failure's cause in a few words, for a class's summary
     /// Pass or fail per hidden scene, without its name (in every report; in Gradescope's, a test
     /// of its own with the visibility the rubric gives hidden scenes).
     std::vector<std::string> hiddenSceneDetails;
@@ -45,8 +45,9 @@ struct LabGrade {
     std::vector<CheckResult> checks;
     double studentSamplesPerSecond = 0, solutionSamplesPerSecond = 0; ///< the timed runs' medians
     double studentVariance = 0, solutionVariance = 0; ///< per sample, on the noise scene
-    RaysPerSample studentRays, solutionRays; ///< in the timed runs (the labs' own counts)
-    double efficiencyRatio = 0; ///< 1/(variance x time per sample), yours ÷ the reference's; 0: unknown
+    RaysPerSample studentRays, solutionRays;          ///< in the timed runs (the labs' own counts)
+    double efficiencyRatio =
+        0; ///< 1/(variance x time per sample), yours ÷ the reference's; 0: unknown
     bool rendersFinished = true; ///< false when a correctness render crashed, hung or ran out
     /// For the HTML report: per scene, the student's mean image, the reference and a heat map.
     struct Pictures {
@@ -57,7 +58,7 @@ struct LabGrade {
     std::vector<Pictures> pictures;
 
     double score() const;
-    double maxScore() const;       ///< of the checks graded here
+    double maxScore() const; ///< of the checks graded here
     double pointsNotGradedHere() const;
 };
 
@@ -84,8 +85,8 @@ struct TimingPolicy {
 };
 
 struct GraderSetup {
-    LabRunner student;           ///< runs the labs being graded
-    LabRunner solution;          ///< runs the reference solutions
+    LabRunner student;  ///< runs the labs being graded
+    LabRunner solution; ///< runs the reference solutions
     TimingPolicy timing;
     Rubric rubric;
     std::vector<GradingScene> scenes;

@@ -43,8 +43,9 @@ SceneReference measured(const LabRunner& solution, const std::string& path, cons
         }
     }
     ProgressBar bar("reference for " + shownName, "renders");
-    const SceneReference reference = measureReference(
-        solution, path, rubric, 20, 4, scratch, [&](int done, int total) { bar.update(done, total); });
+    const SceneReference reference =
+        measureReference(solution, path, rubric, 20, 4, scratch,
+                         [&](int done, int total) { bar.update(done, total); });
     if (!cacheFolder.empty()) {
         fs::create_directories(cacheFolder);
         saveReference(cacheFolder, reference);
@@ -63,10 +64,12 @@ std::string defaultHiddenScenesFolder() {
 }
 
 std::vector<std::string> hiddenScenePaths(const std::string& folder) {
-    if (!fs::is_directory(folder)) throw InputError("hidden scenes: '" + folder + "' is not a folder");
+    if (!fs::is_directory(folder))
+        throw InputError("hidden scenes: '" + folder + "' is not a folder");
     std::vector<std::string> paths;
     for (const auto& entry : fs::directory_iterator(folder))
-        if (entry.path().extension() == ".ecs") paths.push_back(fs::absolute(entry.path()).string());
+        if (entry.path().extension() == ".ecs")
+            paths.push_back(fs::absolute(entry.path()).string());
     std::sort(paths.begin(), paths.end());
     if (paths.empty()) throw InputError("hidden scenes: no .ecs file in '" + folder + "'");
     return paths;
@@ -84,13 +87,17 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const SceneSources
         try {
             s.reference = loadReference(sources.references, s.path, rubric);
             if (!noiseMeasuredAsGraded(s.reference, rubric))
-                notes.push_back(name + ": the stored noise figures were measured at other seeds or samples "
-                                "per pixel than the rubric grades at; `grader make-references "
-                                "--only-scene " + name + "` measures them as graded");
+                notes.push_back(
+                    name +
+                    ": the stored noise figures were measured at other seeds or samples "
+                    "per pixel than the rubric grades at; `grader make-references "
+                    "--only-scene " +
+                    name + "` measures them as graded");
         } catch (const StaleReference& e) {
             // Grading against it would fail correct labs (or pass wrong ones): stop instead.
-            throw InputError(std::string(e.what()) + ". Remake it: grader make-references --only-scene " +
-                             name + " (or restore models/ and the rubric as they were)");
+            throw InputError(std::string(e.what()) +
+                             ". Remake it: grader make-references --only-scene " + name +
+                             " (or restore models/ and the rubric as they were)");
         } catch (const InputError& e) {
             notes.push_back(std::string(e.what()) + "; measured on the fly instead");
             s.reference = measured(solution, s.path, rubric, scratch, sources.cache, name);
@@ -104,7 +111,8 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const SceneSources
         GradingScene s;
         s.path = hidden[i];
         s.hidden = !sources.revealHidden;
-        s.name = s.hidden ? "hidden scene " + std::to_string(i + 1) : fs::path(s.path).stem().string();
+        s.name =
+            s.hidden ? "hidden scene " + std::to_string(i + 1) : fs::path(s.path).stem().string();
         s.reference = measured(solution, s.path, rubric, scratch, sources.cache, s.name);
         scenes.push_back(std::move(s));
     }
@@ -114,7 +122,8 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const SceneSources
 std::string scenesHash(const Rubric& rubric, const std::string& hiddenFolder) {
     ContentHash hash;
     hash.add(referenceParametersHash(rubric)).add(PATHLAB_VERSION);
-    for (const std::string& name : rubric.scenes) hash.add(name).add(sceneFilesHash(publicScenePath(name)));
+    for (const std::string& name : rubric.scenes)
+        hash.add(name).add(sceneFilesHash(publicScenePath(name)));
     if (!hiddenFolder.empty())
         for (const std::string& path : hiddenScenePaths(hiddenFolder))
             hash.add(fs::path(path).filename().string()).add(sceneFilesHash(path));

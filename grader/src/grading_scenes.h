@@ -17,9 +17,9 @@ std::string defaultHiddenScenesFolder();
 std::vector<std::string> hiddenScenePaths(const std::string& folder);
 
 struct SceneSources {
-    std::string references; ///< stored references of the rubric's public scenes
-    std::string hidden;     ///< a folder of hidden .ecs scenes ("": none)
-    std::string cache;      ///< where references measured here are kept ("": nowhere)
+    std::string references;    ///< stored references of the rubric's public scenes
+    std::string hidden;        ///< a folder of hidden .ecs scenes ("": none)
+    std::string cache;         ///< where references measured here are kept ("": nowhere)
     bool revealHidden = false; ///< feedback may name hidden scenes and show their images
 };
 

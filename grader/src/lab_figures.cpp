@@ -37,13 +37,19 @@ std::string today() {
 }
 
 nlohmann::json machineJson(const Machine& m) {
-    return {{"cpu", m.cpu}, {"system", m.system}, {"cores", m.cores}, {"threads", m.threads},
-            {"load_average", m.loadAverage}, {"date", m.date}, {"kit_version", m.kitVersion}};
+    return {{"cpu", m.cpu},
+            {"system", m.system},
+            {"cores", m.cores},
+            {"threads", m.threads},
+            {"load_average", m.loadAverage},
+            {"date", m.date},
+            {"kit_version", m.kitVersion}};
 }
 
 } // namespace
 
-std::vector<NotebookEstimator> notebookEstimators(const std::vector<Lab>& labs, const Rubric& rubric) {
+std::vector<NotebookEstimator> notebookEstimators(const std::vector<Lab>& labs,
+                                                  const Rubric& rubric) {
     std::vector<NotebookEstimator> rows;
     // Roulette's rows, one per continueProb, are labelled below.
     const ByLab<const char*> labels = {"branching (lab 1)", "uniform pick (lab 2)",
@@ -55,7 +61,8 @@ std::vector<NotebookEstimator> notebookEstimators(const std::vector<Lab>& labs, 
         }
         rows.push_back({"roulette", "roulette, continueProb 0.1 (lab 4's default)", lab, 0.1f});
         char label[96];
-        std::snprintf(label, sizeof label, "roulette, continueProb %g (as graded)", rubric.continueProb);
+        std::snprintf(label, sizeof label, "roulette, continueProb %g (as graded)",
+                      rubric.continueProb);
         rows.push_back({"roulette_graded", label, lab, rubric.continueProb});
     }
     return rows;
@@ -94,9 +101,18 @@ std::map<std::string, EstimatorFigures> measureNotebook(const LabRunner& runner,
     std::map<std::string, EstimatorFigures> figures;
     for (const NotebookEstimator& row : rows) {
         // Seed 0, the viewer's default: the command a student types gives these very numbers.
-        const RenderRequest request{&runner, scene, row.lab, NotebookSize, NotebookSize,
-                                    NotebookSpp, rubric.maxDepth, row.continueProb, 0, 1,
-                                    threads, scratch};
+        const RenderRequest request{&runner,
+                                    scene,
+                                    row.lab,
+                                    NotebookSize,
+                                    NotebookSize,
+                                    NotebookSpp,
+                                    rubric.maxDepth,
+                                    row.continueProb,
+                                    0,
+                                    1,
+                                    threads,
+                                    scratch};
         const RenderResult result = renderLab(request, limits);
         EstimatorFigures& f = figures[row.key];
         if (!result.ok) {
@@ -137,38 +153,51 @@ void saveLabFigures(const std::string& path, const LabFigures& figures, const Ru
                   "their median samples/s in the grader's timed runs, on the machine named; "
                   "compare ratios between labs with these, not absolute numbers"},
         {"machine", machineJson(figures.machine)},
-        {"notebook", {{"scene", rubric.noiseScene}, {"width", NotebookSize},
-                      {"height", NotebookSize}, {"spp", NotebookSpp},
-                      {"max_depth", rubric.maxDepth},
-                      {"graded_continue_prob", rubric.continueProb}, {"estimators", notebook}}},
-        {"timed_runs", {{"scene", rubric.speedScene}, {"width", rubric.speedWidth},
-                        {"height", rubric.speedHeight}, {"spp", timedSpp},
-                        {"runs", rubric.speedRuns}, {"samples_per_second", timed},
-                        {"start_up_seconds", figures.startUpSeconds}}}};
+        {"notebook",
+         {{"scene", rubric.noiseScene},
+          {"width", NotebookSize},
+          {"height", NotebookSize},
+          {"spp", NotebookSpp},
+          {"max_depth", rubric.maxDepth},
+          {"graded_continue_prob", rubric.continueProb},
+          {"estimators", notebook}}},
+        {"timed_runs",
+         {{"scene", rubric.speedScene},
+          {"width", rubric.speedWidth},
+          {"height", rubric.speedHeight},
+          {"spp", timedSpp},
+          {"runs", rubric.speedRuns},
+          {"samples_per_second", timed},
+          {"start_up_seconds", figures.startUpSeconds}}}};
     writeFileAtomically(path, j.dump(1) + "\n");
 }
 
 LabFigures loadLabFigures(const std::string& path, const Rubric& rubric) {
     std::ifstream in(path);
-    if (!in) throw InputError(path + ": no stored reference figures (grader make-references makes them)");
+    if (!in)
+        throw InputError(path +
+                         ": no stored reference figures (grader make-references makes them)");
     LabFigures figures;
     try {
         const nlohmann::json j = nlohmann::json::parse(in);
         const nlohmann::json& m = j.at("machine");
-        figures.machine = {m.at("cpu"), m.at("system"), m.at("date"), m.at("kit_version"),
+        figures.machine = {m.at("cpu"),   m.at("system"),  m.at("date"),        m.at("kit_version"),
                            m.at("cores"), m.at("threads"), m.at("load_average")};
         for (const auto& [key, f] : j.at("notebook").at("estimators").items())
-            figures.notebook[key] = {f.at("samples_per_second"), f.at("frames_per_second"),
-                                     f.at("noise"), f.at("efficiency"), f.at("rays_per_sample"), ""};
+            figures.notebook[key] = {
+                f.at("samples_per_second"), f.at("frames_per_second"), f.at("noise"),
+                f.at("efficiency"),         f.at("rays_per_sample"),   ""};
         const nlohmann::json& t = j.at("timed_runs");
-        const bool sameRuns = t.at("scene") == rubric.speedScene && t.at("width") == rubric.speedWidth &&
+        const bool sameRuns = t.at("scene") == rubric.speedScene &&
+                              t.at("width") == rubric.speedWidth &&
                               t.at("height") == rubric.speedHeight;
         for (Lab lab : AllLabs) {
             const std::string name(labName(lab));
             if (sameRuns && t.at("spp").at(name) == rubric.forLab(lab).speedSpp)
                 figures.timedSamplesPerSecond[lab] = t.at("samples_per_second").at(name);
         }
-        if (t.at("scene") == rubric.speedScene) figures.startUpSeconds = t.value("start_up_seconds", 0.0);
+        if (t.at("scene") == rubric.speedScene)
+            figures.startUpSeconds = t.value("start_up_seconds", 0.0);
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ": " + e.what());
     }

@@ -26,7 +26,8 @@ struct NotebookEstimator {
 
 /// The notebook's rows for `labs` in order: lab 4 twice, at its default continueProb 0.1 and at
 /// the rubric's (graded) one.
-std::vector<NotebookEstimator> notebookEstimators(const std::vector<Lab>& labs, const Rubric& rubric);
+std::vector<NotebookEstimator> notebookEstimators(const std::vector<Lab>& labs,
+                                                  const Rubric& rubric);
 
 /// The render a notebook figure comes from.
 constexpr int NotebookSize = 512, NotebookSpp = 64;
@@ -43,7 +44,8 @@ struct Machine {
     int cores = 0, threads = 0;
     double loadAverage = 0; ///< over the minute before the measurement started
 
-    /// "Intel Xeon ... (2 cores, 2 threads), Debian GNU/Linux 12, load 0.3, 2026-12-01, PathLab 0.1.0"
+    /// "Intel Xeon ... (2 cores, 2 threads), Debian GNU/Linux 12, load 0.3, 2026-12-01, PathLab
+    /// 0.1.0"
     std::string describe() const;
 };
 Machine thisMachine(int threads);

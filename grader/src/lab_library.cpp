@@ -63,7 +63,8 @@ std::string compileObject(const LabBuild& build, const std::string& source,
     SandboxRun run;
     run.command = {build.compiler};
     run.command.insert(run.command.end(), build.flags.begin(), build.flags.end());
-    run.command.insert(run.command.end(), {"-DPATHLAB_IMPL=" + implementation, "-I/pathlab/include"});
+    run.command.insert(run.command.end(),
+                       {"-DPATHLAB_IMPL=" + implementation, "-I/pathlab/include"});
     // The table alone sees the runner's headers; a lab file sees the student API (lab.h).
     if (source == build.labTable) run.command.push_back("-I/pathlab/runner");
     // Each lab's namespace named after the set, as CMakeLists.txt's pathlab_lab_library does.
@@ -126,8 +127,10 @@ LabBuild loadLabBuild(const std::string& path) {
     if (!in) throw InputError(path + ": missing (it is written when PathLab is configured)");
     try {
         const nlohmann::json j = nlohmann::json::parse(in);
-        return {j.at("compiler"), j.at("flags").get<std::vector<std::string>>(), j.at("include"),
-                j.at("runner_include"), j.at("lab_table"), j.at("stubs"), j.at("solutions"), j.at("viewer")};
+        return {j.at("compiler"),  j.at("flags").get<std::vector<std::string>>(),
+                j.at("include"),   j.at("runner_include"),
+                j.at("lab_table"), j.at("stubs"),
+                j.at("solutions"), j.at("viewer")};
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ": " + e.what());
     }
@@ -149,7 +152,8 @@ std::string kitFingerprint(const LabBuild& build) {
     for (const std::string& flag : build.flags) text += " " + flag;
     std::vector<std::string> files = {build.labTable};
     for (Lab lab : AllLabs)
-        files.insert(files.end(), {build.stubs + "/" + labFile(lab), build.solutions + "/" + labFile(lab)});
+        files.insert(files.end(),
+                     {build.stubs + "/" + labFile(lab), build.solutions + "/" + labFile(lab)});
     for (const std::string& folder : {build.include, build.runnerInclude})
         for (const auto& entry : fs::recursive_directory_iterator(folder))
             if (entry.is_regular_file()) files.push_back(entry.path().string());

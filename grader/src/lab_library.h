@@ -18,12 +18,12 @@ namespace pathlab::grader {
 struct LabBuild {
     std::string compiler;
     std::vector<std::string> flags;
-    std::string include;   ///< framework/include: the student API and what it includes
+    std::string include;       ///< framework/include: the student API and what it includes
     std::string runnerInclude; ///< runner/include: the lab tables lab_table.cpp defines
-    std::string labTable;  ///< runner/src/lab_table.cpp
-    std::string stubs;     ///< labs/: the stubs stand in for a lab that is missing or broken
-    std::string solutions; ///< solutions/
-    std::string viewer;    ///< the submission viewer
+    std::string labTable;      ///< runner/src/lab_table.cpp
+    std::string stubs;         ///< labs/: the stubs stand in for a lab that is missing or broken
+    std::string solutions;     ///< solutions/
+    std::string viewer;        ///< the submission viewer
 };
 
 /// Reads the build description beside the grader; throws InputError if it is missing.

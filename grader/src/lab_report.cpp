@@ -27,8 +27,8 @@ std::string cell(const std::map<std::string, EstimatorFigures>& figures, const s
 }
 
 /// A row's figure over branching's, or why there is none.
-std::string ratioCell(const std::map<std::string, EstimatorFigures>& figures, const std::string& key,
-                      double EstimatorFigures::*field) {
+std::string ratioCell(const std::map<std::string, EstimatorFigures>& figures,
+                      const std::string& key, double EstimatorFigures::*field) {
     const auto row = figures.find(key), branching = figures.find("branching");
     if (row == figures.end() || branching == figures.end() || !row->second.failure.empty() ||
         !branching->second.failure.empty() || !(branching->second.*field > 0))
@@ -63,21 +63,26 @@ std::string labReport(const GradeReport& report, const Rubric& rubric, const Lab
     md << "# PathLab lab report\n\n"
        << "Measured by `grader --report` on " << yours.machine.describe() << ".\n\n"
        << "The reference's figures are the reference solutions' "
-       << (reference ? "on " + reference->machine.describe() + ", stored in "
-                       "`grader/references/lab_figures.json`"
+       << (reference ? "on " + reference->machine.describe() +
+                           ", stored in "
+                           "`grader/references/lab_figures.json`"
                      : "(not stored in this kit: `grader make-references` measures them)")
        << ". Frame rates depend on the machine: compare the ratios between labs, yours with the "
           "reference's, not the absolute numbers.\n\n"
-       << "Each row is one headless render of `" << rubric.noiseScene << "`, " << size << "×" << size
-       << " pixels, " << spp << " samples per pixel, maxDepth " << rubric.maxDepth
-       << ", all cores, seed 0, as `./viewer -c models/" << rubric.noiseScene << ".ecs --lab LAB --spp " << spp
+       << "Each row is one headless render of `" << rubric.noiseScene << "`, " << size << "×"
+       << size << " pixels, " << spp << " samples per pixel, maxDepth " << rubric.maxDepth
+       << ", all cores, seed 0, as `./viewer -c models/" << rubric.noiseScene
+       << ".ecs --lab LAB --spp " << spp
        << " -o LAB.png --stats LAB.json` renders it (add `--continue-prob "
        << number(rubric.continueProb, "%g") << "` for the graded roulette):\n\n"
-       << "- *frame rate*: samples/s ÷ (" << size << " × " << size << "), the window's frame rate at "
-       << size << "×" << size << " with one sample per pixel per frame;\n"
+       << "- *frame rate*: samples/s ÷ (" << size << " × " << size
+       << "), the window's frame rate at " << size << "×" << size
+       << " with one sample per pixel per frame;\n"
        << "- *noise*: the relative standard error of the image after " << spp
-       << " samples per pixel, the panel's noise figure (handouts/00-setup.md, \"The noise figure\");\n"
-       << "- *efficiency*: 1/(noise² × seconds); a noise of 0.01 takes 10⁴/efficiency seconds at this size.\n\n"
+       << " samples per pixel, the panel's noise figure (handouts/00-setup.md, \"The noise "
+          "figure\");\n"
+       << "- *efficiency*: 1/(noise² × seconds); a noise of 0.01 takes 10⁴/efficiency seconds at "
+          "this size.\n\n"
        << "## Your figures and the reference's\n\n"
        << "| estimator | your lab correct | frame rate: yours | reference | noise at " << spp
        << " spp: yours | reference | efficiency: yours | reference |\n"
@@ -110,8 +115,9 @@ std::string labReport(const GradeReport& report, const Rubric& rubric, const Lab
     }
     md << "\n## The grader's checks\n\n"
        << "The noise check compares a different statistic from the noise figure above: the "
-          "per-sample variance, measured from how " << rubric.seeds << " independent "
-       << rubric.width << "×" << rubric.height << " renders differ pixel by pixel, the noisiest 1% "
+          "per-sample variance, measured from how "
+       << rubric.seeds << " independent " << rubric.width << "×" << rubric.height
+       << " renders differ pixel by pixel, the noisiest 1% "
           "of pixels left out, over the reference solution's (at most "
        << number(rubric.maxNoiseRatio, "%g") << ").\n\n"
        << "| lab | score | correctness | noise check: variance ÷ the reference's | speed check |\n"
@@ -120,15 +126,16 @@ std::string labReport(const GradeReport& report, const Rubric& rubric, const Lab
         md << "| " << labName(lab.lab) << " | " << number(lab.score(), "%g") << "/"
            << number(lab.maxScore(), "%g");
         if (lab.pointsNotGradedHere() > 0)
-            md << " (+" << number(lab.pointsNotGradedHere(), "%g") << " speed: graded by the instructor)";
+            md << " (+" << number(lab.pointsNotGradedHere(), "%g")
+               << " speed: graded by the instructor)";
         md << " |";
         for (const CheckResult& c : lab.checks) {
             md << " " << verdict(c);
             if (c.kind == CheckKind::Noise && lab.solutionVariance > 0)
                 md << ": " << number(lab.studentVariance / lab.solutionVariance, "%.2f");
             if (c.kind == CheckKind::Speed && lab.studentSamplesPerSecond > 0)
-                md << (c.gradedHere ? ": " : "; yours here ")
-                   << number(lab.studentSamplesPerSecond) << " samples/s";
+                md << (c.gradedHere ? ": " : "; yours here ") << number(lab.studentSamplesPerSecond)
+                   << " samples/s";
             md << " |";
         }
         if (lab.checks.size() < 3) md << " not measured (--no-speed) |";
@@ -149,8 +156,10 @@ std::string observationsIn(const std::string& path) {
     std::string line, kept;
     bool below = false;
     while (std::getline(in, line)) {
-        if (below) kept += line + "\n";
-        else below = line == ObservationsHeading;
+        if (below)
+            kept += line + "\n";
+        else
+            below = line == ObservationsHeading;
     }
     const size_t first = kept.find_first_not_of(" \n");
     if (first == std::string::npos) return "";

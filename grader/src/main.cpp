@@ -25,17 +25,22 @@ int main(int argc, char** argv) {
         if (a.command == "merge") return mergeBatches(a);
         const Rubric rubric = loadRubric(a.rubric);
         if (a.command == "rubric") {
-            const int hidden = a.scenesDir.empty() ? 0 : static_cast<int>(hiddenScenePaths(a.scenesDir).size());
+            const int hidden =
+                a.scenesDir.empty() ? 0 : static_cast<int>(hiddenScenePaths(a.scenesDir).size());
             std::fputs(rubricText(rubric, a.rubric, hidden).c_str(), stdout);
             return 0;
         }
         char pattern[] = "/tmp/pathlab-grader-XXXXXX";
         if (!::mkdtemp(pattern)) throw std::runtime_error("cannot make a scratch folder");
         scratch = pattern;
-        if (a.command == "make-references") status = makeReferences(a, rubric, scratch);
-        else if (a.command == "submission") status = gradeOneSubmission(a, rubric, scratch);
-        else if (a.command == "batch") status = runBatch(a, rubric, scratch);
-        else status = gradeBuild(a, rubric, scratch);
+        if (a.command == "make-references")
+            status = makeReferences(a, rubric, scratch);
+        else if (a.command == "submission")
+            status = gradeOneSubmission(a, rubric, scratch);
+        else if (a.command == "batch")
+            status = runBatch(a, rubric, scratch);
+        else
+            status = gradeBuild(a, rubric, scratch);
     } catch (const InputError& e) {
         std::fprintf(stderr, "grader: %s\n", e.what());
         status = 2;

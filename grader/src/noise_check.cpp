@@ -25,22 +25,23 @@ NoiseOutcome checkNoise(const GraderSetup& setup, Lab lab, bool correct, double 
         check.summary = "not compared: noise counts only for a correct lab";
         return outcome;
     }
-    const auto scene = std::find_if(setup.scenes.begin(), setup.scenes.end(), [&](const GradingScene& s) {
-        return s.reference.scene == r.noiseScene;
-    });
+    const auto scene =
+        std::find_if(setup.scenes.begin(), setup.scenes.end(),
+                     [&](const GradingScene& s) { return s.reference.scene == r.noiseScene; });
     const GradingScene& noiseScene = scene != setup.scenes.end() ? *scene : setup.scenes.front();
     const double student = noise;
     const double solution = noiseScene.reference.noise[lab];
     const double ratio = student / solution;
     outcome.variances = {student, solution};
-    check.summary = "per-sample variance " + significant(ratio, 3) + " times the reference solution's (at most " +
-                    significant(r.maxNoiseRatio, 2) + ") on " + noiseScene.reference.scene;
+    check.summary = "per-sample variance " + significant(ratio, 3) +
+                    " times the reference solution's (at most " + significant(r.maxNoiseRatio, 2) +
+                    ") on " + noiseScene.reference.scene;
     check.passed = ratio <= r.maxNoiseRatio;
     check.score = check.passed ? check.maxScore : 0;
     if (!check.passed) {
         check.diagnosis = "too noisy";
-        check.details.push_back("variance per sample: yours " + significant(student, 4) + ", the reference's " +
-                                significant(solution, 4));
+        check.details.push_back("variance per sample: yours " + significant(student, 4) +
+                                ", the reference's " + significant(solution, 4));
         check.details.push_back(hintFor(HintTopic::TooNoisy, lab));
     }
     return outcome;

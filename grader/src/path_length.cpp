@@ -47,7 +47,8 @@ std::string ignoredContinueProb(const std::vector<PathLengthObservation>& observ
     for (const PathLengthObservation& o : observations) anyWrong = anyWrong || !matchesRoulette(o);
     if (!anyWrong) return "";
     return "ctx.continueProb ignored: the paths are as long at one continueProb as at the other "
-           "(bounce rays per sample in the furnace: " + listed(observations, false) +
+           "(bounce rays per sample in the furnace: " +
+           listed(observations, false) +
            "), where continuing with probability continueProb at every hit gives " +
            listed(observations, true) + " (TODO lab4.2)";
 }
@@ -56,9 +57,11 @@ std::string pathLengthNote(const std::vector<PathLengthObservation>& observation
     for (const PathLengthObservation& o : observations)
         if (!matchesRoulette(o))
             return "note: the paths' lengths do not follow continueProb as lab 4 specifies "
-                   "(bounce rays per sample in the furnace: " + listed(observations, false) +
+                   "(bounce rays per sample in the furnace: " +
+                   listed(observations, false) +
                    "; continuing with probability continueProb at every hit gives " +
-                   listed(observations, true) + "): the mean is right, the estimator is not "
+                   listed(observations, true) +
+                   "): the mean is right, the estimator is not "
                    "the handout's (TODO lab4.2)";
     return "";
 }

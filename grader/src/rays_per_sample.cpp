@@ -58,8 +58,8 @@ std::string specificationDeparture(Lab lab, const RaysPerSample& student,
                        reference.shadowPerTrace()) +
                "; the lab calls ctx.directLight(hit) once at each hit (given in the lab file)";
     if (student.bounce > 1.15 * reference.bounce + 0.02)
-        return std::string(bounceSpecification(lab)) + "; yours traces more: " +
-               figures("bounce rays", student.bounce, reference.bounce);
+        return std::string(bounceSpecification(lab)) +
+               "; yours traces more: " + figures("bounce rays", student.bounce, reference.bounce);
     if (lab == Lab::Roulette && student.bounce < 0.85 * reference.bounce - 0.02)
         return std::string(bounceSpecification(lab)) +
                "; yours ends paths sooner (a constant in place of ctx.continueProb?): " +

@@ -19,12 +19,27 @@ namespace fs = std::filesystem;
 
 std::vector<std::string> viewerArguments(const RenderRequest& r, const std::string& image,
                                          const std::string& stats) {
-    std::vector<std::string> argv = {
-        "-c", r.scene, "--size", std::to_string(r.width), std::to_string(r.height),
-        "--spp", std::to_string(r.spp), "--lab", std::string(labName(r.lab)),
-        "--max-depth", std::to_string(r.maxDepth), "--continue-prob", std::to_string(r.continueProb),
-        "--seed", std::to_string(r.seed), "--seeds", std::to_string(r.seeds), "-o", image,
-        "--stats", stats};
+    std::vector<std::string> argv = {"-c",
+                                     r.scene,
+                                     "--size",
+                                     std::to_string(r.width),
+                                     std::to_string(r.height),
+                                     "--spp",
+                                     std::to_string(r.spp),
+                                     "--lab",
+                                     std::string(labName(r.lab)),
+                                     "--max-depth",
+                                     std::to_string(r.maxDepth),
+                                     "--continue-prob",
+                                     std::to_string(r.continueProb),
+                                     "--seed",
+                                     std::to_string(r.seed),
+                                     "--seeds",
+                                     std::to_string(r.seeds),
+                                     "-o",
+                                     image,
+                                     "--stats",
+                                     stats};
     if (!r.runner->sandboxed() && r.runner->implementation == Implementation::Solution)
         argv.push_back("--solution");
     if (r.threads > 0) argv.insert(argv.end(), {"--threads", std::to_string(r.threads)});
@@ -48,7 +63,8 @@ std::string renderSandboxed(const RenderRequest& r, const ProcessLimits& limits,
     const auto arguments = viewerArguments(r, "render.pfm", "render.json");
     run.command.insert(run.command.end(), arguments.begin(), arguments.end());
     // No image-file plug-in: the viewer writes the .pfm it is asked for without one.
-    run.files = {{r.runner->viewer, "/pathlab/viewer"}, {r.runner->libraryFor(r.lab), "/pathlab/labs.so"}};
+    run.files = {{r.runner->viewer, "/pathlab/viewer"},
+                 {r.runner->libraryFor(r.lab), "/pathlab/labs.so"}};
     for (const std::string& file : sceneFiles(r.scene)) run.files.push_back({file, file});
     run.environment = {{"PATHLAB_LABS_LIBRARY", "/pathlab/labs.so"}};
     for (int k = 0; k < r.seeds; ++k) {
@@ -115,7 +131,8 @@ RenderResult renderLab(const RenderRequest& r, const ProcessLimits& limits) {
         problem = renderSandboxed(r, limits, result.process);
     } else {
         std::vector<std::string> argv = {r.runner->viewer};
-        const auto arguments = viewerArguments(r, r.scratch + "/render.pfm", r.scratch + "/render.json");
+        const auto arguments =
+            viewerArguments(r, r.scratch + "/render.pfm", r.scratch + "/render.json");
         argv.insert(argv.end(), arguments.begin(), arguments.end());
         ProcessOptions options;
         options.cpus = r.runner->cpus;
@@ -124,9 +141,11 @@ RenderResult renderLab(const RenderRequest& r, const ProcessLimits& limits) {
     if (!result.process.succeeded()) {
         const ProcessOutcome& p = result.process;
         result.failure = p.describe();
-        result.failureKind = p.timedOut ? "time limit" : p.signal != 0 ? "crashed"
-                           : result.failure.find("memory") != std::string::npos ? "out of memory"
-                                                                                 : "exited with an error";
+        result.failureKind = p.timedOut      ? "time limit"
+                             : p.signal != 0 ? "crashed"
+                             : result.failure.find("memory") != std::string::npos
+                                 ? "out of memory"
+                                 : "exited with an error";
         const std::string printed = result.process.outputTail(8);
         if (!printed.empty()) result.failure += "; it printed: " + printed;
         return result;

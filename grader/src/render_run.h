@@ -18,7 +18,7 @@ namespace pathlab::grader {
 
 /// Whose labs a render runs, and how it is started.
 struct LabRunner {
-    std::string viewer;       ///< the viewer binary
+    std::string viewer; ///< the viewer binary
     /// With the labs linked into `viewer`: which set (--solution or not).
     Implementation implementation = Implementation::Student;
     /// When set, `viewer` is the submission viewer, run in the sandbox with lab L compiled into
@@ -26,8 +26,8 @@ struct LabRunner {
     /// library of the lab it renders and no other, so a lab file that hangs, crashes or exits
     /// while it loads costs only its own lab.
     ByLab<std::string> labLibraries;
-    SandboxPolicy sandbox;    ///< for sandboxed runs
-    std::vector<int> cpus;    ///< for direct runs: the cores to use (empty: any)
+    SandboxPolicy sandbox; ///< for sandboxed runs
+    std::vector<int> cpus; ///< for direct runs: the cores to use (empty: any)
 
     /// Any lab's library set: a submission that left a lab out has none for it, and must still
     /// run in the sandbox.
@@ -40,15 +40,15 @@ struct LabRunner {
 
 struct RenderRequest {
     const LabRunner* runner = nullptr;
-    std::string scene;             ///< .ecs path
+    std::string scene; ///< .ecs path
     Lab lab = Lab::Branching;
     int width = 64, height = 64, spp = 16;
     int maxDepth = 3;
     float continueProb = 0.8f;
     uint64_t seed = 0;
-    int seeds = 1;                 ///< images for seeds seed .. seed+seeds-1, in one process
+    int seeds = 1; ///< images for seeds seed .. seed+seeds-1, in one process
     int threads = 0;
-    std::string scratch;           ///< a folder for the images and stats
+    std::string scratch; ///< a folder for the images and stats
 };
 
 /// One seed's image, and where the viewer's --stats for it are. Those come from the lab's own
@@ -56,9 +56,9 @@ struct RenderRequest {
 /// clock alone. The ray counts explain (rays_per_sample.h), and can only cost a lab points: a
 /// roulette lab whose paths do not lengthen with continueProb fails (path_length.h).
 struct RenderedImage {
-    std::vector<float> rgb;        ///< linear RGB, top row first
-    std::string statsFile;         ///< in the request's scratch folder, until the next render
-    RayCounters rays;              ///< the stats' ray counts: for explanations, never a score alone
+    std::vector<float> rgb; ///< linear RGB, top row first
+    std::string statsFile;  ///< in the request's scratch folder, until the next render
+    RayCounters rays;       ///< the stats' ray counts: for explanations, never a score alone
 };
 
 /// RenderResult::failureKind of a render whose image holds NaN or infinite values.
@@ -66,8 +66,8 @@ inline constexpr const char* NonfiniteRadianceFailure = "NaN or infinite radianc
 
 struct RenderResult {
     bool ok = false;
-    std::string failure;           ///< why not ok, in words for the student
-    std::string failureKind;       ///< the same in a few words ("crashed", "time limit", ...)
+    std::string failure;     ///< why not ok, in words for the student
+    std::string failureKind; ///< the same in a few words ("crashed", "time limit", ...)
     ProcessOutcome process;
     int width = 0, height = 0;
     std::vector<RenderedImage> images; ///< one per seed, in order

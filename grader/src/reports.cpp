@@ -50,7 +50,6 @@ double GradeReport::pointsNotGradedHere() const {
 
 namespace {
 
-
 /// "8/8", or "8/8 (+2 speed: graded by the instructor)" where a check is not graded here.
 std::string scoreText(double score, double maxScore, double notGradedHere) {
     char text[128];
@@ -105,10 +104,13 @@ std::vector<LabRatio> labRatios(const GradeReport& report) {
     if (!branching || !(branching->studentSamplesPerSecond > 0)) return ratios;
     for (const LabGrade& l : report.labs) {
         if (l.lab == Lab::Branching || !(l.studentSamplesPerSecond > 0)) continue;
-        const bool referenceKnown = l.solutionSamplesPerSecond > 0 && branching->solutionSamplesPerSecond > 0;
+        const bool referenceKnown =
+            l.solutionSamplesPerSecond > 0 && branching->solutionSamplesPerSecond > 0;
         ratios.push_back({std::string(labName(l.lab)) + "/branching",
                           l.studentSamplesPerSecond / branching->studentSamplesPerSecond,
-                          referenceKnown ? l.solutionSamplesPerSecond / branching->solutionSamplesPerSecond : 0});
+                          referenceKnown
+                              ? l.solutionSamplesPerSecond / branching->solutionSamplesPerSecond
+                              : 0});
     }
     return ratios;
 }
@@ -127,7 +129,8 @@ std::string terminalReport(const GradeReport& report, bool colour, bool withHidd
         out << std::string(labName(lab.lab)) << std::string(12 - labName(lab.lab).size(), ' ');
         for (const CheckResult& c : lab.checks) {
             if (c.gradedHere)
-                std::snprintf(line, sizeof line, "%s %g/%g", c.passed ? "pass" : "FAIL", c.score, c.maxScore);
+                std::snprintf(line, sizeof line, "%s %g/%g", c.passed ? "pass" : "FAIL", c.score,
+                              c.maxScore);
             else
                 std::snprintf(line, sizeof line, "(+%g)", c.maxScore);
             std::string cell = line;
@@ -141,23 +144,28 @@ std::string terminalReport(const GradeReport& report, bool colour, bool withHidd
     out << line;
     for (const LabGrade& lab : report.labs)
         for (const CheckResult& c : lab.checks)
-            out << "\n" << labName(lab.lab) << " " << c.name() << ": "
+            out << "\n"
+                << labName(lab.lab) << " " << c.name() << ": "
                 << (c.passed || !c.gradedHere ? "" : red) << checkText(c, withHidden) << reset;
     out << "\n";
     const auto ratios = labRatios(report);
     if (!ratios.empty()) {
-        out << "\nspeed ratios between labs: samples/s in the grader's timed runs (roulette as graded) ÷ branching's\n"
+        out << "\nspeed ratios between labs: samples/s in the grader's timed runs (roulette as "
+               "graded) ÷ branching's\n"
             << "                              yours   reference\n";
         for (const LabRatio& r : ratios) {
             std::snprintf(line, sizeof line, "  %-26s %6.2f   ", r.name.c_str(), r.student);
             out << line;
-            if (r.reference > 0) std::snprintf(line, sizeof line, "%6.2f\n", r.reference);
-            else std::snprintf(line, sizeof line, "%6s\n", "-");
+            if (r.reference > 0)
+                std::snprintf(line, sizeof line, "%6.2f\n", r.reference);
+            else
+                std::snprintf(line, sizeof line, "%6s\n", "-");
             out << line;
         }
-        out << "  reference: " << (report.ratiosReference.empty()
-                                       ? "the reference solutions, timed now beside your labs"
-                                       : report.ratiosReference)
+        out << "  reference: "
+            << (report.ratiosReference.empty()
+                    ? "the reference solutions, timed now beside your labs"
+                    : report.ratiosReference)
             << "\n  (compare the ratios, not the samples/s: those depend on the machine; on a busy "
                "machine they vary by tens of percent from run to run)\n";
     }
@@ -170,31 +178,39 @@ std::string jsonReport(const GradeReport& report) {
     for (const LabGrade& lab : report.labs) {
         nlohmann::json checks = nlohmann::json::array();
         for (const CheckResult& c : lab.checks)
-            checks.push_back({{"name", c.name()}, {"score", c.score}, {"max_score", c.maxScore},
-                              {"passed", c.passed}, {"graded_here", c.gradedHere},
-                              {"summary", c.summary}, {"details", c.details},
+            checks.push_back({{"name", c.name()},
+                              {"score", c.score},
+                              {"max_score", c.maxScore},
+                              {"passed", c.passed},
+                              {"graded_here", c.gradedHere},
+                              {"summary", c.summary},
+                              {"details", c.details},
                               {"hidden_scenes", c.hiddenSceneDetails}});
         auto rays = [](const RaysPerSample& r) {
             return nlohmann::json{{"camera", r.camera}, {"bounce", r.bounce}, {"shadow", r.shadow}};
         };
-        labs.push_back({{"lab", labName(lab.lab)}, {"score", lab.score()}, {"max_score", lab.maxScore()},
-                        {"checks", checks},
-                        {"samples_per_second", {{"student", lab.studentSamplesPerSecond},
-                                                {"solution", lab.solutionSamplesPerSecond}}},
-                        {"rays_per_sample", {{"student", rays(lab.studentRays)},
-                                             {"solution", rays(lab.solutionRays)}}},
-                        {"variance_per_sample", {{"student", lab.studentVariance},
-                                                 {"solution", lab.solutionVariance}}},
-                        {"efficiency_ratio", lab.efficiencyRatio}});
+        labs.push_back(
+            {{"lab", labName(lab.lab)},
+             {"score", lab.score()},
+             {"max_score", lab.maxScore()},
+             {"checks", checks},
+             {"samples_per_second",
+              {{"student", lab.studentSamplesPerSecond},
+               {"solution", lab.solutionSamplesPerSecond}}},
+             {"rays_per_sample",
+              {{"student", rays(lab.studentRays)}, {"solution", rays(lab.solutionRays)}}},
+             {"variance_per_sample",
+              {{"student", lab.studentVariance}, {"solution", lab.solutionVariance}}},
+             {"efficiency_ratio", lab.efficiencyRatio}});
     }
     nlohmann::json ratios = nlohmann::json::object();
     for (const LabRatio& r : labRatios(report))
         ratios[r.name] = {{"student", r.student}, {"reference", r.reference}};
-    const nlohmann::json j = {{"kit_version", PATHLAB_VERSION}, {"score", report.score()},
-                              {"max_score", report.maxScore()},
-                              {"points_not_graded_here", report.pointsNotGradedHere()},
-                              {"seconds", report.seconds},
-                              {"labs", labs}, {"speed_ratios", ratios}, {"notes", report.notes}};
+    const nlohmann::json j = {
+        {"kit_version", PATHLAB_VERSION}, {"score", report.score()},
+        {"max_score", report.maxScore()}, {"points_not_graded_here", report.pointsNotGradedHere()},
+        {"seconds", report.seconds},      {"labs", labs},
+        {"speed_ratios", ratios},         {"notes", report.notes}};
     return j.dump(2) + "\n";
 }
 
@@ -204,15 +220,19 @@ std::string junitReport(const GradeReport& report) {
         for (const CheckResult& c : lab.checks) ++tests, failures += c.gradedHere && !c.passed;
     std::ostringstream out;
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-        << "<testsuites tests=\"" << tests << "\" failures=\"" << failures << "\" time=\"" << report.seconds << "\">\n"
-        << "  <testsuite name=\"pathlab-grader\" tests=\"" << tests << "\" failures=\"" << failures << "\">\n";
+        << "<testsuites tests=\"" << tests << "\" failures=\"" << failures << "\" time=\""
+        << report.seconds << "\">\n"
+        << "  <testsuite name=\"pathlab-grader\" tests=\"" << tests << "\" failures=\"" << failures
+        << "\">\n";
     for (const LabGrade& lab : report.labs) {
         for (const CheckResult& c : lab.checks) {
-            out << "    <testcase classname=\"" << labName(lab.lab) << "\" name=\"" << escapeXml(c.name()) << "\">\n";
+            out << "    <testcase classname=\"" << labName(lab.lab) << "\" name=\""
+                << escapeXml(c.name()) << "\">\n";
             if (!c.gradedHere)
                 out << "      <skipped message=\"" << escapeXml(c.summary) << "\"/>\n";
             else if (!c.passed)
-                out << "      <failure message=\"" << escapeXml(c.summary) << "\">" << escapeXml(checkText(c)) << "</failure>\n";
+                out << "      <failure message=\"" << escapeXml(c.summary) << "\">"
+                    << escapeXml(checkText(c)) << "</failure>\n";
             else
                 out << "      <system-out>" << escapeXml(checkText(c)) << "</system-out>\n";
             out << "    </testcase>\n";
@@ -271,7 +291,8 @@ void writeHtmlReport(const GradeReport& report, const std::string& folder) {
     auto heat = [&](int w, int h, const std::vector<float>& a, const std::vector<float>& b) {
         std::vector<unsigned char> rgba, rgb;
         relativeDifferenceImage(a, b, 0.5f, rgba);
-        for (size_t i = 0; i < rgba.size(); i += 4) rgb.insert(rgb.end(), {rgba[i], rgba[i + 1], rgba[i + 2]});
+        for (size_t i = 0; i < rgba.size(); i += 4)
+            rgb.insert(rgb.end(), {rgba[i], rgba[i + 1], rgba[i + 2]});
         const std::string path = folder + "/.heat.png";
         writeDisplayImage(path, w, h, rgb);
         const std::string data = base64(readFile(path));
@@ -281,24 +302,28 @@ void writeHtmlReport(const GradeReport& report, const std::string& folder) {
     std::ostringstream html;
     html << "<!doctype html><html><head><meta charset=\"utf-8\"><title>PathLab grade</title><style>"
          << pageStyle() << "</style></head><body>\n<h1>PathLab grade: "
-         << escapeXml(scoreText(report.score(), report.maxScore(), report.pointsNotGradedHere())) << "</h1>\n"
+         << escapeXml(scoreText(report.score(), report.maxScore(), report.pointsNotGradedHere()))
+         << "</h1>\n"
          << "<table><tr><th>lab</th><th>check</th><th>score</th><th>result</th></tr>\n";
     for (const LabGrade& lab : report.labs)
         for (const CheckResult& c : lab.checks)
-            html << "<tr><td>" << labName(lab.lab) << "</td><td>" << c.name() << "</td><td>" << c.score << " / "
-                 << c.maxScore << "</td><td class=\""
-                 << (!c.gradedHere ? "\">graded by the instructor" : c.passed ? "pass\">pass" : "fail\">FAIL")
+            html << "<tr><td>" << labName(lab.lab) << "</td><td>" << c.name() << "</td><td>"
+                 << c.score << " / " << c.maxScore << "</td><td class=\""
+                 << (!c.gradedHere ? "\">graded by the instructor"
+                     : c.passed    ? "pass\">pass"
+                                   : "fail\">FAIL")
                  << "</td></tr>\n";
     html << "</table>\n";
     for (const LabGrade& lab : report.labs) {
         html << "<h2>" << labName(lab.lab) << "</h2>\n";
-        for (const CheckResult& c : lab.checks) html << "<h3>" << c.name() << "</h3><pre>" << escapeXml(checkText(c)) << "</pre>\n";
+        for (const CheckResult& c : lab.checks)
+            html << "<h3>" << c.name() << "</h3><pre>" << escapeXml(checkText(c)) << "</pre>\n";
         for (const auto& p : lab.pictures) {
             if (p.student.empty() || p.reference.size() != p.student.size()) continue;
             html << "<p>" << p.scene << ": yours, the reference, |yours − reference| / reference "
                  << "(black 0, blue 0.125, green 0.25, yellow 0.375, red ≥ 0.5)</p><p>"
-                 << png(p.width, p.height, p.student) << " " << png(p.width, p.height, p.reference) << " "
-                 << heat(p.width, p.height, p.student, p.reference) << "</p>\n";
+                 << png(p.width, p.height, p.student) << " " << png(p.width, p.height, p.reference)
+                 << " " << heat(p.width, p.height, p.student, p.reference) << "</p>\n";
         }
     }
     html << "</body></html>\n";

@@ -19,7 +19,7 @@ struct GradeReport {
     std::string ratiosReference;
 
     double score() const;
-    double maxScore() const;       ///< of the checks graded here
+    double maxScore() const; ///< of the checks graded here
     double pointsNotGradedHere() const;
 };
 

@@ -44,13 +44,13 @@ Rubric loadRubric(const std::string& path) {
         r.speedWidth = s.at("width");
         r.speedHeight = s.at("height");
         for (Lab lab : AllLabs) {
-            const std::string measure =
-                s.value("judged_by", nlohmann::json::object()).value(std::string(labName(lab)), "samples_per_second");
+            const std::string measure = s.value("judged_by", nlohmann::json::object())
+                                            .value(std::string(labName(lab)), "samples_per_second");
             if (measure != "samples_per_second" && measure != "efficiency")
                 throw InputError(path + ": speed.judged_by." + std::string(labName(lab)) + " is '" +
                                  measure + "'; it must be samples_per_second or efficiency");
-            r.labs[lab].speedJudgedBy = measure == "efficiency" ? SpeedMeasure::Efficiency
-                                                                             : SpeedMeasure::SamplesPerSecond;
+            r.labs[lab].speedJudgedBy =
+                measure == "efficiency" ? SpeedMeasure::Efficiency : SpeedMeasure::SamplesPerSecond;
         }
         // Optional, as judged_by: a rubric written before they existed grades as it did, plus
         // the default parameter check.
@@ -59,11 +59,13 @@ Rubric loadRubric(const std::string& path) {
             r.parameterCheck = {p.at("scene"), p.at("max_depth"), p.at("continue_prob")};
         }
         if (j.contains("hidden_scenes")) {
-            r.hiddenScenesVisibility = j.at("hidden_scenes").value("gradescope_visibility", r.hiddenScenesVisibility);
+            r.hiddenScenesVisibility =
+                j.at("hidden_scenes").value("gradescope_visibility", r.hiddenScenesVisibility);
             const auto& v = r.hiddenScenesVisibility;
             if (v != "visible" && v != "hidden" && v != "after_due_date" && v != "after_published")
-                throw InputError(path + ": hidden_scenes.gradescope_visibility is '" + v + "'; it must be "
-                                        "visible, hidden, after_due_date or after_published");
+                throw InputError(path + ": hidden_scenes.gradescope_visibility is '" + v +
+                                 "'; it must be "
+                                 "visible, hidden, after_due_date or after_published");
         }
         r.secondsPerRun = j.at("limits").at("seconds_per_run");
         r.memoryBytes = static_cast<long long>(j.at("limits").at("memory_mb").get<double>()) << 20;

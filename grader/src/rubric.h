@@ -16,7 +16,9 @@ struct LabPoints {
 
     /// The points of one check.
     double of(CheckKind check) const {
-        return check == CheckKind::Correctness ? correctness : check == CheckKind::Noise ? noise : speed;
+        return check == CheckKind::Correctness ? correctness
+               : check == CheckKind::Noise     ? noise
+                                               : speed;
     }
 };
 
@@ -45,11 +47,11 @@ struct LabRubric {
 struct Rubric {
     ByLab<LabRubric> labs;
     int maxDepth = 3;
-    float continueProb = 0.8f;             ///< lab 4 is graded here: finite variance on VI2
-    double alpha = 1e-3;                   ///< family-wise false-fail rate of one correctness check
+    float continueProb = 0.8f; ///< lab 4 is graded here: finite variance on VI2
+    double alpha = 1e-3;       ///< family-wise false-fail rate of one correctness check
     int seeds = 10;
     int width = 64, height = 64, tiles = 4;
-    std::vector<std::string> scenes;       ///< public scenes, by name in models/
+    std::vector<std::string> scenes; ///< public scenes, by name in models/
     double maxNoiseRatio = 1.5;
     std::string noiseScene;
     double minSpeedRatio = 0.75;
@@ -59,8 +61,8 @@ struct Rubric {
     ParameterCheck parameterCheck;
     double secondsPerRun = 30;
     long long memoryBytes = 4LL << 30;
-    /// When Gradescope shows students the hidden scenes' verdicts (hidden_scenes.gradescope_visibility):
-    /// visible, hidden, after_due_date or after_published.
+    /// When Gradescope shows students the hidden scenes' verdicts
+    /// (hidden_scenes.gradescope_visibility): visible, hidden, after_due_date or after_published.
     std::string hiddenScenesVisibility = "after_published";
     /// A fingerprint of every setting (the file's JSON, reformatted, without "about"): each
     /// result records it, so that results graded under another rubric are never mixed.

@@ -20,18 +20,15 @@ std::vector<std::string> bubblewrapArguments(const SandboxRun& run) {
         "/usr/bin/bwrap",
         // New namespaces for everything (no network: only a loopback that is down), dying
         // with the grader, in a session of its own (no terminal to inject keys into).
-        "--unshare-all", "--unshare-user", "--disable-userns", "--die-with-parent",
-        "--new-session", "--cap-drop", "ALL",
-        "--clearenv", "--setenv", "PATH", "/usr/bin:/bin", "--setenv", "HOME", SandboxScratch,
-        "--setenv", "TMPDIR", SandboxScratch, "--setenv", "LC_ALL", "C",
+        "--unshare-all", "--unshare-user", "--disable-userns", "--die-with-parent", "--new-session",
+        "--cap-drop", "ALL", "--clearenv", "--setenv", "PATH", "/usr/bin:/bin", "--setenv", "HOME",
+        SandboxScratch, "--setenv", "TMPDIR", SandboxScratch, "--setenv", "LC_ALL", "C",
         // The system, read-only; of /etc only what finds libraries: the loader's cache and the
         // alternatives' links (no passwd, no keys).
         "--ro-bind", "/usr", "/usr", "--ro-bind-try", "/etc/ld.so.cache", "/etc/ld.so.cache",
-        "--ro-bind-try", "/etc/alternatives", "/etc/alternatives",
-        "--proc", "/proc", "--dev", "/dev",
-        "--size", std::to_string(run.scratchBytes), "--tmpfs", SandboxScratch,
-        "--chdir", SandboxScratch,
-        "--ro-bind", collectScript, "/pathlab/collect.sh"};
+        "--ro-bind-try", "/etc/alternatives", "/etc/alternatives", "--proc", "/proc", "--dev",
+        "/dev", "--size", std::to_string(run.scratchBytes), "--tmpfs", SandboxScratch, "--chdir",
+        SandboxScratch, "--ro-bind", collectScript, "/pathlab/collect.sh"};
     // Merged-/usr systems link /bin, /lib... into /usr; older ones have real folders.
     for (const char* top : {"/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"}) {
         std::error_code error;
@@ -72,7 +69,8 @@ std::string parseCollected(const std::string& stream, const std::vector<std::str
         if (std::find(expected.begin(), expected.end(), name) == expected.end())
             return "an unexpected file came back";
         at = newline + 1;
-        if (stream.size() - at < size) return name + " is shorter than announced (changed while read?)";
+        if (stream.size() - at < size)
+            return name + " is shorter than announced (changed while read?)";
         files[name] = stream.substr(at, size);
         at += size;
     }
@@ -117,8 +115,8 @@ std::string sandboxUnavailableReason() {
     const SandboxOutcome o = runInSandbox(probe, {20, 0}, {{}, sandboxUserForThisProcess()});
     if (o.process.succeeded()) return "";
     const std::string said = o.process.outputTail(2);
-    const std::string cannot = "bubblewrap cannot make a sandbox here (" + o.process.describe() +
-                               "): " + said + ". ";
+    const std::string cannot =
+        "bubblewrap cannot make a sandbox here (" + o.process.describe() + "): " + said + ". ";
     // Run as root, the sandbox runs as an unused user id (sandboxUserForThisProcess), which must
     // read the kit's files bound into it: not so for a kit in /root, mode 700.
     if (::geteuid() == 0 && said.find("Permission denied") != std::string::npos)

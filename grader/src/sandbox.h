@@ -22,10 +22,10 @@ struct SandboxPolicy {
 
 /// One command in the sandbox.
 struct SandboxRun {
-    std::vector<std::string> command;                        ///< argv, as seen inside
-    std::vector<std::pair<std::string, std::string>> files;  ///< host path, path inside (read-only)
+    std::vector<std::string> command;                       ///< argv, as seen inside
+    std::vector<std::pair<std::string, std::string>> files; ///< host path, path inside (read-only)
     std::vector<std::pair<std::string, std::string>> environment;
-    std::vector<std::string> collect;   ///< names in the scratch folder to hand back
+    std::vector<std::string> collect; ///< names in the scratch folder to hand back
     long long scratchBytes = 256LL << 20;
 };
 

@@ -27,7 +27,8 @@ std::vector<std::string> materialLibraries(const std::string& objPath) {
         std::string key, name;
         if (!(words >> key) || key != "mtllib") continue;
         while (words >> name)
-            if (const fs::path mtl = fs::absolute(fs::path(objPath).parent_path() / name); fs::exists(mtl))
+            if (const fs::path mtl = fs::absolute(fs::path(objPath).parent_path() / name);
+                fs::exists(mtl))
                 libraries.push_back(mtl.string());
     }
     return libraries;
@@ -39,7 +40,8 @@ std::vector<std::string> sceneFiles(const std::string& ecsPath) {
     const char* argv[] = {"scene", "-c", ecsPath.c_str()};
     const RenderOptions options = parseRenderOptions(3, argv);
     std::vector<std::string> files;
-    for (const std::string& script : options.sceneScripts) files.push_back(fs::absolute(script).string());
+    for (const std::string& script : options.sceneScripts)
+        files.push_back(fs::absolute(script).string());
     for (const std::string& obj : options.objFiles) {
         files.push_back(fs::absolute(obj).string());
         for (const std::string& mtl : materialLibraries(obj)) files.push_back(mtl);

@@ -19,8 +19,10 @@ double trimmedSampleVariance(const std::vector<std::vector<float>>& images, int 
         const double variance = std::max(0.0, (squares / k - mean * mean) * k / (k - 1));
         perPixel[i / 3] += variance * spp / 3;
     }
-    const size_t kept = std::max<size_t>(1, pixels - static_cast<size_t>(pixels * NoiseTrimmedShare));
-    std::nth_element(perPixel.begin(), perPixel.begin() + static_cast<std::ptrdiff_t>(kept - 1), perPixel.end());
+    const size_t kept =
+        std::max<size_t>(1, pixels - static_cast<size_t>(pixels * NoiseTrimmedShare));
+    std::nth_element(perPixel.begin(), perPixel.begin() + static_cast<std::ptrdiff_t>(kept - 1),
+                     perPixel.end());
     double total = 0;
     for (size_t i = 0; i < kept; ++i) total += perPixel[i];
     return total / static_cast<double>(kept);

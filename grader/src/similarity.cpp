@@ -39,17 +39,17 @@ const std::unordered_set<std::string>& keywords() {
 /// different program.
 const std::unordered_map<std::string, std::string>& alternativeTokens() {
     static const std::unordered_map<std::string, std::string> spelled = {
-        {"and", "&&"}, {"and_eq", "&="}, {"bitand", "&"}, {"bitor", "|"}, {"compl", "~"},
-        {"not", "!"},  {"not_eq", "!="}, {"or", "||"},    {"or_eq", "|="}, {"xor", "^"},
-        {"xor_eq", "^="}};
+        {"and", "&&"},   {"and_eq", "&="}, {"bitand", "&"},  {"bitor", "|"},
+        {"compl", "~"},  {"not", "!"},     {"not_eq", "!="}, {"or", "||"},
+        {"or_eq", "|="}, {"xor", "^"},     {"xor_eq", "^="}};
     return spelled;
 }
 
 /// Longest first, so that each operator is taken whole (maximal munch). `>>` is not among them:
 /// as two `>` it reads the same whether a template's brackets were closed as `>>` or `> >`.
 constexpr const char* MultiCharOperators[] = {
-    "<=>", "<<=", ">>=", "->*", "...", "::", "->", ".*", "++", "--", "+=", "-=", "*=", "/=",
-    "%=",  "&=",  "|=",  "^=",  "<<",  "<=", ">=", "==", "!=", "&&", "||", "##"};
+    "<=>", "<<=", ">>=", "->*", "...", "::", "->", ".*", "++", "--", "+=", "-=", "*=",
+    "/=",  "%=",  "&=",  "|=",  "^=",  "<<", "<=", ">=", "==", "!=", "&&", "||", "##"};
 
 bool isIdentifierStart(char c) {
     // Bytes above 127 are UTF-8 letters, which C++ allows in names; GCC allows '$' too.

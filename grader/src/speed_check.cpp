@@ -62,8 +62,18 @@ double startupSeconds(const GraderSetup& setup, const LabRunner& runner, const s
     return startUps.seconds(what, [&] {
         std::vector<double> seconds;
         for (int i = 0; i < 3; ++i) {
-            RenderRequest request{&runner, scene, lab, 1, 1, 1, setup.rubric.maxDepth,
-                                  setup.rubric.continueProb, 1, 1, threads, setup.scratch};
+            RenderRequest request{&runner,
+                                  scene,
+                                  lab,
+                                  1,
+                                  1,
+                                  1,
+                                  setup.rubric.maxDepth,
+                                  setup.rubric.continueProb,
+                                  1,
+                                  1,
+                                  threads,
+                                  setup.scratch};
             const RenderResult r = renderLab(request, limitsOf(setup));
             if (r.ok) seconds.push_back(r.process.seconds);
         }
@@ -82,14 +92,16 @@ struct TimedSeries {
 TimedSeries timedSeries(const GraderSetup& setup, const LabRunner& startupRunner, Lab lab,
                         StartUpTimes& startUps) {
     const Rubric& r = setup.rubric;
-    const auto scene = std::find_if(setup.scenes.begin(), setup.scenes.end(), [&](const GradingScene& s) {
-        return s.reference.scene == r.speedScene;
-    });
+    const auto scene =
+        std::find_if(setup.scenes.begin(), setup.scenes.end(),
+                     [&](const GradingScene& s) { return s.reference.scene == r.speedScene; });
     TimedSeries series;
-    series.scene = scene != setup.scenes.end() ? scene->path
-                                               : std::string(PATHLAB_MODELS_DIR) + "/" + r.speedScene + ".ecs";
+    series.scene = scene != setup.scenes.end()
+                       ? scene->path
+                       : std::string(PATHLAB_MODELS_DIR) + "/" + r.speedScene + ".ecs";
     series.threads = setup.timing.threads > 0 ? setup.timing.threads : setup.threads;
-    series.startup = startupSeconds(setup, startupRunner, series.scene, lab, series.threads, startUps);
+    series.startup =
+        startupSeconds(setup, startupRunner, series.scene, lab, series.threads, startUps);
     return series;
 }
 
@@ -104,9 +116,18 @@ struct TimedRun {
 TimedRun timedRun(const GraderSetup& setup, const TimedSeries& series, const LabRunner& runner,
                   Lab lab, int run) {
     const Rubric& r = setup.rubric;
-    RenderRequest request{&runner, series.scene, lab, r.speedWidth, r.speedHeight,
-                          r.forLab(lab).speedSpp, r.maxDepth, r.continueProb,
-                          static_cast<uint64_t>(77 + run), 1, series.threads, setup.scratch};
+    RenderRequest request{&runner,
+                          series.scene,
+                          lab,
+                          r.speedWidth,
+                          r.speedHeight,
+                          r.forLab(lab).speedSpp,
+                          r.maxDepth,
+                          r.continueProb,
+                          static_cast<uint64_t>(77 + run),
+                          1,
+                          series.threads,
+                          setup.scratch};
     TimedRun timed{renderLab(request, limitsOf(setup))};
     if (!timed.result.ok) return timed;
     timed.samples = static_cast<double>(request.width) * request.height * request.spp;
@@ -121,7 +142,7 @@ struct TimedRuns {
     std::vector<double> samplesPerSecond; ///< one per run that finished
     RayCounters rays;
     double samples = 0;
-    bool complete = false;                ///< every run finished
+    bool complete = false; ///< every run finished
 
     double medianSamplesPerSecond() const { return complete ? median(samplesPerSecond) : 0; }
 };
@@ -158,14 +179,16 @@ SpeedOutcome timeWithoutSolutions(const GraderSetup& setup, Lab lab, bool correc
     outcome.studentSamplesPerSecond = runs.medianSamplesPerSecond();
     outcome.solutionSamplesPerSecond = setup.storedSolutionSamplesPerSecond[lab];
     check.summary = correct ? "graded by the instructor: this build has no reference solutions to "
-                              "time your lab against (at least " + fixed(r.minSpeedRatio, 2) +
+                              "time your lab against (at least " +
+                                  fixed(r.minSpeedRatio, 2) +
                                   " of the reference's samples/s on the same machine)"
                             : "speed counts only for a correct lab";
     if (outcome.studentSamplesPerSecond > 0)
-        check.details.push_back("yours on this machine: " + significant(outcome.studentSamplesPerSecond, 3) +
-                                " samples/s in the grader's timed runs (grading every lab prints "
-                                "the ratios between them); rays per sample: " +
-                                raysText(outcome.studentRays));
+        check.details.push_back(
+            "yours on this machine: " + significant(outcome.studentSamplesPerSecond, 3) +
+            " samples/s in the grader's timed runs (grading every lab prints "
+            "the ratios between them); rays per sample: " +
+            raysText(outcome.studentRays));
     return outcome;
 }
 
@@ -204,14 +227,17 @@ SpeedVerdict judgeSpeed(const GraderSetup& setup, Lab lab, double perSample, dou
         // handout's, better in this sense. Said as it is, whichever measure the rubric takes.
         verdict.details.push_back("slower than the reference per sample (" + fixed(perSample, 2) +
                                   " times its samples/s) but more efficient: it reaches the same "
-                                  "noise in " + fixed(1 / efficiencyRatio, 2) + " of the reference's time");
-        if (!departure.empty()) verdict.details.push_back("it departs from the lab's specification: " + departure);
-        verdict.details.push_back(measure == SpeedMeasure::Efficiency
-                                    ? "the rubric judges this lab's speed by efficiency: time to "
-                                      "equal noise"
-                                    : "the rubric judges this lab's speed by samples/s, the lab as "
-                                      "its handout specifies it: implement the lab's estimator "
-                                      "for these points");
+                                  "noise in " +
+                                  fixed(1 / efficiencyRatio, 2) + " of the reference's time");
+        if (!departure.empty())
+            verdict.details.push_back("it departs from the lab's specification: " + departure);
+        verdict.details.push_back(
+            measure == SpeedMeasure::Efficiency
+                ? "the rubric judges this lab's speed by efficiency: time to "
+                  "equal noise"
+                : "the rubric judges this lab's speed by samples/s, the lab as "
+                  "its handout specifies it: implement the lab's estimator "
+                  "for these points");
         if (!verdict.passed) verdict.diagnosis = "slower per sample, more efficient";
         return verdict;
     }
@@ -223,23 +249,26 @@ SpeedVerdict judgeSpeed(const GraderSetup& setup, Lab lab, double perSample, dou
     if (measure == SpeedMeasure::Efficiency && perSample >= r.minSpeedRatio) {
         // Judged by efficiency: fast enough per sample, but noisier.
         verdict.diagnosis = "less efficient";
-        verdict.details.push_back("fast enough per sample (" + fixed(perSample, 2) +
-                                  " times the reference's samples/s) but less efficient: the same "
-                                  "noise takes " + fixed(1 / efficiencyRatio, 2) +
-                                  " times the reference's time, for its variance per sample is higher");
-        if (!departure.empty()) verdict.details.push_back("it departs from the lab's specification: " + departure);
+        verdict.details.push_back(
+            "fast enough per sample (" + fixed(perSample, 2) +
+            " times the reference's samples/s) but less efficient: the same "
+            "noise takes " +
+            fixed(1 / efficiencyRatio, 2) +
+            " times the reference's time, for its variance per sample is higher");
+        if (!departure.empty())
+            verdict.details.push_back("it departs from the lab's specification: " + departure);
         return verdict;
     }
     if (!departure.empty())
         verdict.details.push_back("slower than the reference at the same image: " + departure);
     else if (studentRays.bounce <= 1.15 * solutionRays.bounce + 0.02)
         verdict.details.push_back("slower than the reference at the same image, with no more rays "
-                                "per sample: the time goes into work repeated per sample (or "
-                                "work between samples, such as allocations)");
+                                  "per sample: the time goes into work repeated per sample (or "
+                                  "work between samples, such as allocations)");
     else
         verdict.details.push_back("slower than the reference at the same image: extra rays (a "
-                                "shadow ray or bounce that is not needed), or work repeated per "
-                                "sample");
+                                  "shadow ray or bounce that is not needed), or work repeated per "
+                                  "sample");
     return verdict;
 }
 
@@ -282,19 +311,24 @@ SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, bool correct,
     // The median of each pair's ratio: the two runs of a pair ran back to back, under the same
     // load, which the ratio of the two medians would not keep together.
     std::vector<double> pairRatios;
-    for (size_t i = 0; i < t.student.size(); ++i) pairRatios.push_back(t.student[i] / t.solution[i]);
+    for (size_t i = 0; i < t.student.size(); ++i)
+        pairRatios.push_back(t.student[i] / t.solution[i]);
     const double ratio = median(pairRatios);
     // Efficiency, 1/(variance per sample x time per sample), from the noise check's variances
     // (the same scene) and these samples/s: known for a correct lab only.
     const bool variancesKnown = variances.student > 0 && variances.solution > 0;
-    const double efficiencyRatio = variancesKnown ? ratio * variances.solution / variances.student : 0;
+    const double efficiencyRatio =
+        variancesKnown ? ratio * variances.solution / variances.student : 0;
     outcome.efficiencyRatio = efficiencyRatio;
     const SpeedMeasure measure = r.forLab(lab).speedJudgedBy;
-    check.summary = significant(outcome.studentSamplesPerSecond, 3) + " samples/s, " + fixed(ratio, 2) +
-                    " times the reference solution's " + significant(outcome.solutionSamplesPerSecond, 3) +
-                    " (the median of " + std::to_string(pairRatios.size()) + " interleaved pairs)";
-    if (variancesKnown) check.summary += "; efficiency " + fixed(efficiencyRatio, 2) + " times the reference's";
-    check.summary += "; judged by " + measureName(measure) + " (at least " + fixed(r.minSpeedRatio, 2) + ")";
+    check.summary = significant(outcome.studentSamplesPerSecond, 3) + " samples/s, " +
+                    fixed(ratio, 2) + " times the reference solution's " +
+                    significant(outcome.solutionSamplesPerSecond, 3) + " (the median of " +
+                    std::to_string(pairRatios.size()) + " interleaved pairs)";
+    if (variancesKnown)
+        check.summary += "; efficiency " + fixed(efficiencyRatio, 2) + " times the reference's";
+    check.summary +=
+        "; judged by " + measureName(measure) + " (at least " + fixed(r.minSpeedRatio, 2) + ")";
     check.details.push_back("rays per sample: yours " + raysText(outcome.studentRays) +
                             ", the reference's " + raysText(outcome.solutionRays));
     if (variancesKnown)
@@ -312,8 +346,9 @@ SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, bool correct,
         check.summary += "; the timed runs' mean radiance differs from the reference's, and "
                          "speed counts only for a correct timed run";
         check.diagnosis = "wrong image in the timed runs";
-        check.details.push_back("mean radiance of the timed runs: yours " + significant(median(t.studentMeans), 4) +
-                                ", the reference's " + significant(median(t.solutionMeans), 4));
+        check.details.push_back("mean radiance of the timed runs: yours " +
+                                significant(median(t.studentMeans), 4) + ", the reference's " +
+                                significant(median(t.solutionMeans), 4));
         return outcome;
     }
     if (measure == SpeedMeasure::Efficiency && !variancesKnown) {
@@ -322,7 +357,8 @@ SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, bool correct,
         check.diagnosis = "efficiency unknown";
         return outcome;
     }
-    SpeedVerdict verdict = judgeSpeed(setup, lab, ratio, efficiencyRatio, outcome.studentRays, outcome.solutionRays);
+    SpeedVerdict verdict =
+        judgeSpeed(setup, lab, ratio, efficiencyRatio, outcome.studentRays, outcome.solutionRays);
     check.passed = verdict.passed;
     check.score = check.passed ? check.maxScore : 0;
     check.details.insert(check.details.end(), verdict.details.begin(), verdict.details.end());

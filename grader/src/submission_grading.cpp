@@ -41,16 +41,20 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
     outcome.scenesHash = grader.scenesHash;
     outcome.intake = takeSubmission(submission, sources, policy);
     ContentHash files;
-    for (const auto& [name, where] : outcome.intake.taken) files.add(name).addFile(sources + "/" + name);
+    for (const auto& [name, where] : outcome.intake.taken)
+        files.add(name).addFile(sources + "/" + name);
     outcome.filesHash = files.hex();
     GradeReport& report = outcome.report;
-    for (const std::string& problem : outcome.intake.problems) report.notes.push_back("submission: " + problem);
+    for (const std::string& problem : outcome.intake.problems)
+        report.notes.push_back("submission: " + problem);
     if (outcome.intake.taken.empty()) {
         outcome.status = "no lab files found";
         for (Lab lab : AllLabs)
-            report.labs.push_back(ungradedLab(grader.rubric, lab, grader.measureSpeed, "not submitted", {}));
+            report.labs.push_back(
+                ungradedLab(grader.rubric, lab, grader.measureSpeed, "not submitted", {}));
     } else {
-        const SubmissionLibrary library = buildSubmissionLibrary(grader.build, grader.kit, sources, build, policy);
+        const SubmissionLibrary library =
+            buildSubmissionLibrary(grader.build, grader.kit, sources, build, policy);
         GraderSetup setup;
         setup.student = {grader.build.viewer, Implementation::Student, library.library, policy, {}};
         // The solutions' one library holds every lab.
@@ -65,12 +69,13 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
         setup.threads = grader.threads;
         setup.measureSpeed = grader.measureSpeed;
         setup.runSeconds = grader.runSeconds;
-        StartUpTimes startUps; // this submission's: its labs' libraries are its own
+        StartUpTimes startUps;        // this submission's: its labs' libraries are its own
         std::string broken, unlinked; // names of the labs that do not compile, do not link
         for (Lab lab : AllLabs) {
             const LabCompilation& compiled = library.labs[lab];
             if (compiled.status == LabCompilation::Status::NotSubmitted) {
-                report.labs.push_back(ungradedLab(grader.rubric, lab, grader.measureSpeed, "not submitted", {}));
+                report.labs.push_back(
+                    ungradedLab(grader.rubric, lab, grader.measureSpeed, "not submitted", {}));
             } else if (compiled.status == LabCompilation::Status::Failed) {
                 broken += (broken.empty() ? "" : " ") + std::string(labName(lab));
                 report.labs.push_back(ungradedLab(grader.rubric, lab, grader.measureSpeed,
@@ -94,7 +99,8 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
     }
     killProcessesOf(policy.user);
     fs::remove_all(scratch);
-    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     writeFileAtomically(folder + "/feedback.json", jsonReport(report));
     writeHtmlReport(report, folder);
@@ -108,15 +114,18 @@ std::string resultJson(const SubmissionOutcome& outcome, const std::string& subm
     for (const LabGrade& lab : outcome.report.labs) {
         nlohmann::json checks = nlohmann::json::object();
         for (const CheckResult& c : lab.checks)
-            checks[c.name()] = {{"score", c.score}, {"max_score", c.maxScore}, {"passed", c.passed},
+            checks[c.name()] = {{"score", c.score},
+                                {"max_score", c.maxScore},
+                                {"passed", c.passed},
                                 {"graded_here", c.gradedHere}};
-        labs[std::string(labName(lab.lab))] = {{"score", lab.score()}, {"max_score", lab.maxScore()},
-                                               {"checks", checks}};
+        labs[std::string(labName(lab.lab))] = {
+            {"score", lab.score()}, {"max_score", lab.maxScore()}, {"checks", checks}};
         if (!outcome.intake.taken.count(std::string(labName(lab.lab)) + ".cpp"))
             missing.push_back(std::string(labName(lab.lab)));
         for (const CheckResult& c : lab.checks)
             if (!c.passed && !c.diagnosis.empty())
-                diagnoses.push_back({{"lab", labName(lab.lab)}, {"check", c.name()}, {"diagnosis", c.diagnosis}});
+                diagnoses.push_back(
+                    {{"lab", labName(lab.lab)}, {"check", c.name()}, {"diagnosis", c.diagnosis}});
     }
     nlohmann::json taken = nlohmann::json::object();
     for (const auto& [name, where] : outcome.intake.taken) taken[name] = where;
@@ -130,14 +139,18 @@ std::string resultJson(const SubmissionOutcome& outcome, const std::string& subm
                               {"missing_labs", missing},
                               {"diagnoses", diagnoses},
                               {"seconds", outcome.report.seconds},
-                              {"graded_under", {{"rubric_hash", outcome.rubricHash},
-                                                {"scenes_hash", outcome.scenesHash},
-                                                {"kit_version", PATHLAB_VERSION}}},
-                              {"intake", {{"kind", intake.kind}, {"taken", taken},
-                                          {"problems", intake.problems}, {"commit", intake.commit},
-                                          {"files_hash", outcome.filesHash},
-                                          {"submitted_at", intake.submittedAt},
-                                          {"time_source", intake.timeSource}}}};
+                              {"graded_under",
+                               {{"rubric_hash", outcome.rubricHash},
+                                {"scenes_hash", outcome.scenesHash},
+                                {"kit_version", PATHLAB_VERSION}}},
+                              {"intake",
+                               {{"kind", intake.kind},
+                                {"taken", taken},
+                                {"problems", intake.problems},
+                                {"commit", intake.commit},
+                                {"files_hash", outcome.filesHash},
+                                {"submitted_at", intake.submittedAt},
+                                {"time_source", intake.timeSource}}}};
     return j.dump(1) + "\n";
 }
 

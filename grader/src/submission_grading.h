@@ -21,10 +21,10 @@ struct SubmissionGrader {
     TimingPolicy timing;
     std::vector<int> workCpus; ///< cores for compiling and the correctness renders (empty: any)
     uint64_t seedBase = 1;
-    int threads = 0;           ///< threads per correctness render (0: all cores)
+    int threads = 0; ///< threads per correctness render (0: all cores)
     bool measureSpeed = true;
-    double runSeconds = 0;     ///< each render's time limit (GraderSetup::runSeconds)
-    std::string scenesHash;    ///< grading_scenes.h: recorded in result.json with the rubric's hash
+    double runSeconds = 0;  ///< each render's time limit (GraderSetup::runSeconds)
+    std::string scenesHash; ///< grading_scenes.h: recorded in result.json with the rubric's hash
 };
 
 struct SubmissionOutcome {

@@ -14,7 +14,8 @@ namespace fs = std::filesystem;
 const std::string unpackScript = std::string(PATHLAB_GRADER_DIR) + "/sandbox/unpack_submission.py";
 
 bool endsWith(const std::string& text, const std::string& end) {
-    return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+    return text.size() >= end.size() &&
+           text.compare(text.size() - end.size(), end.size(), end) == 0;
 }
 
 /// The archive extension of a submission file ("" for a folder), as the unpacker reads it.
@@ -30,11 +31,13 @@ std::string archiveExtension(const std::string& path) {
 
 std::string submissionId(const std::string& submission) {
     std::string name = fs::path(submission).lexically_normal().filename().string();
-    if (name.empty()) name = fs::path(submission).lexically_normal().parent_path().filename().string();
+    if (name.empty())
+        name = fs::path(submission).lexically_normal().parent_path().filename().string();
     name = name.substr(0, name.size() - archiveExtension(name).size());
     std::string id;
     for (char c : name)
-        id += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' ? c : '_';
+        id += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' ? c
+                                                                                              : '_';
     return id.empty() || id[0] == '.' ? "submission" + id : id;
 }
 
@@ -48,7 +51,8 @@ Intake takeSubmission(const std::string& submission, const std::string& folder,
         return intake;
     }
     if (fs::is_symlink(status)) {
-        intake.problems.push_back(submission + ": a symbolic link; submissions are taken as they are, never followed");
+        intake.problems.push_back(
+            submission + ": a symbolic link; submissions are taken as they are, never followed");
         return intake;
     }
     const std::string inside = "/in/submission" + archiveExtension(submission);
@@ -64,9 +68,10 @@ Intake takeSubmission(const std::string& submission, const std::string& folder,
     const SandboxOutcome outcome = runInSandbox(run, limits, policy);
     const auto report = outcome.files.find("intake.json");
     if (!outcome.process.succeeded() || !outcome.problem.empty() || report == outcome.files.end()) {
-        intake.problems.push_back("the submission could not be read (" +
-                                  (outcome.problem.empty() ? outcome.process.describe() : outcome.problem) +
-                                  "): " + outcome.process.outputTail(2));
+        intake.problems.push_back(
+            "the submission could not be read (" +
+            (outcome.problem.empty() ? outcome.process.describe() : outcome.problem) +
+            "): " + outcome.process.outputTail(2));
         return intake;
     }
     try {
@@ -82,11 +87,13 @@ Intake takeSubmission(const std::string& submission, const std::string& folder,
             if (file == outcome.files.end() || file->second.size() > MaxLabFileBytes) continue;
             std::ofstream(folder + "/" + name, std::ios::binary) << file->second;
             fs::permissions(folder + "/" + name, fs::perms::owner_read | fs::perms::owner_write |
-                                                     fs::perms::group_read | fs::perms::others_read);
+                                                     fs::perms::group_read |
+                                                     fs::perms::others_read);
             intake.taken[name] = where.get<std::string>();
         }
     } catch (const nlohmann::json::exception& e) {
-        intake.problems.push_back(std::string("the submission's report could not be read: ") + e.what());
+        intake.problems.push_back(std::string("the submission's report could not be read: ") +
+                                  e.what());
     }
     return intake;
 }

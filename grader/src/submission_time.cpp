@@ -10,7 +10,8 @@ namespace pathlab::grader {
 
 std::optional<long long> parseTime(const std::string& text) {
     int year = 0, month = 0, day = 0, hour = 0, minute = 0, second = 0, used = 0;
-    if (std::sscanf(text.c_str(), "%4d-%2d-%2dT%2d:%2d%n", &year, &month, &day, &hour, &minute, &used) != 5)
+    if (std::sscanf(text.c_str(), "%4d-%2d-%2dT%2d:%2d%n", &year, &month, &day, &hour, &minute,
+                    &used) != 5)
         return std::nullopt;
     std::string rest = text.substr(static_cast<size_t>(used));
     if (rest.size() >= 3 && rest[0] == ':') {
@@ -37,7 +38,8 @@ std::optional<long long> parseTime(const std::string& text) {
     if (rest != "Z") {
         int offsetHours = 0, offsetMinutes = 0;
         if ((rest[0] != '+' && rest[0] != '-') ||
-            std::sscanf(rest.c_str() + 1, "%2d:%2d", &offsetHours, &offsetMinutes) != 2 || rest.size() != 6)
+            std::sscanf(rest.c_str() + 1, "%2d:%2d", &offsetHours, &offsetMinutes) != 2 ||
+            rest.size() != 6)
             return std::nullopt;
         offset = (rest[0] == '-' ? -1 : 1) * (offsetHours * 3600LL + offsetMinutes * 60LL);
     }
@@ -67,8 +69,10 @@ std::map<std::string, long long> loadSubmissionTimes(const std::string& path) {
         const std::optional<long long> seconds = parseTime(time);
         if (number == 1 && !seconds && id == "id") continue; // the header, id,submitted_at
         if (!seconds)
-            throw InputError(path + ":" + std::to_string(number) + ": expected id,time (time as "
-                             "2026-12-01T23:59:00Z), got '" + line + "'");
+            throw InputError(path + ":" + std::to_string(number) +
+                             ": expected id,time (time as "
+                             "2026-12-01T23:59:00Z), got '" +
+                             line + "'");
         times[id] = *seconds;
     }
     return times;

@@ -25,10 +25,10 @@ HeadlessResult renderHeadless(const RenderOptions& options, const RenderScene& s
                         options.parameters, options.seed, options.spp);
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
 
-    result.stats = renderStats({options.sceneName, options.lab, options.implementation,
-                                options.parameters, options.seed},
-                               result.image, renderer.threads(), elapsed.count(), renderer.rayCounters(),
-                               renderer.firstNonfinite());
+    result.stats = renderStats(
+        {options.sceneName, options.lab, options.implementation, options.parameters, options.seed},
+        result.image, renderer.threads(), elapsed.count(), renderer.rayCounters(),
+        renderer.firstNonfinite());
     setHeadlessFrameRate(result.stats);
     return result;
 }

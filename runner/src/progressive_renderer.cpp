@@ -10,7 +10,9 @@
 namespace pathlab {
 
 bool ViewSettings::operator==(const ViewSettings& o) const {
-    const auto same = [](const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
+    const auto same = [](const Vec3& a, const Vec3& b) {
+        return a.x == b.x && a.y == b.y && a.z == b.z;
+    };
     return lab == o.lab && implementation == o.implementation &&
            parameters.maxDepth == o.parameters.maxDepth &&
            parameters.continueProb == o.parameters.continueProb &&
@@ -100,7 +102,7 @@ void ProgressiveRenderer::run() {
     double seconds[2] = {0, 0};
     RayCounters rays;
     std::optional<NonfiniteSample> firstNonfinite; // of the shown implementation since the restart
-    FrameRate frameRate; // of the implementation shown (buffer 0)
+    FrameRate frameRate;                           // of the implementation shown (buffer 0)
     int frames = 0;
     while (true) {
         {
@@ -128,17 +130,16 @@ void ProgressiveRenderer::run() {
         }
         // In the split view both implementations get equal render time: the one behind goes next.
         const int which = settings.split && seconds[1] < seconds[0] ? 1 : 0;
-        const Implementation impl =
-            which == 0 ? settings.implementation
-                       : (settings.implementation == Implementation::Student ? Implementation::Solution
-                                                                             : Implementation::Student);
+        const Implementation impl = which == 0 ? settings.implementation
+                                               : (settings.implementation == Implementation::Student
+                                                      ? Implementation::Solution
+                                                      : Implementation::Student);
         const Camera camera(settings.camera, settings.width, settings.height);
         renderer.resetCounts(); // this pass's rays and non-finite samples alone
         const auto start = std::chrono::steady_clock::now();
-        const bool finished = renderer.renderPass(buffers[which], camera,
-                                                  findPathTrace(settings.lab, impl),
-                                                  settings.parameters, settings.seed,
-                                                  settings.sppPerFrame, &cancel_);
+        const bool finished =
+            renderer.renderPass(buffers[which], camera, findPathTrace(settings.lab, impl),
+                                settings.parameters, settings.seed, settings.sppPerFrame, &cancel_);
         const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
         if (!finished) continue; // restarted mid-pass: the partial pass is thrown away
         seconds[which] += elapsed.count();
@@ -160,9 +161,9 @@ void ProgressiveRenderer::run() {
         frame.frameSeconds = elapsed.count();
         frame.medianFrameSeconds = frameRate.medianSeconds();
         frame.raysPerSecond = static_cast<double>(traced.total()) / elapsed.count();
-        frame.stats = renderStats({"", settings.lab, settings.implementation, settings.parameters,
-                                   settings.seed},
-                                  buffers[0], renderer.threads(), seconds[0], rays, firstNonfinite);
+        frame.stats = renderStats(
+            {"", settings.lab, settings.implementation, settings.parameters, settings.seed},
+            buffers[0], renderer.threads(), seconds[0], rays, firstNonfinite);
         if (onFrame_) onFrame_(frame);
         std::lock_guard<std::mutex> lock(mutex_);
         if (generation == generation_) {
@@ -171,8 +172,10 @@ void ProgressiveRenderer::run() {
             std::vector<float> image = std::move(latest_.image);
             std::vector<float> otherImage = std::move(latest_.otherImage);
             buffers[0].meanImage(image);
-            if (settings.split) buffers[1].meanImage(otherImage);
-            else otherImage.clear();
+            if (settings.split)
+                buffers[1].meanImage(otherImage);
+            else
+                otherImage.clear();
             latest_ = std::move(frame);
             latest_.image = std::move(image);
             latest_.otherImage = std::move(otherImage);

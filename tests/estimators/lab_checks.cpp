@@ -80,8 +80,7 @@ std::string likelyCauses(const LabRun& run, const grader::FurnaceObservation& ow
     if (causes.empty()) return "";
     std::ostringstream text;
     text << " This value" << others.str() << (observations.size() > 1 ? " match: " : " matches: ");
-    for (size_t i = 0; i < causes.size(); ++i)
-        text << (i == 0 ? "" : "; or: ") << causes[i];
+    for (size_t i = 0; i < causes.size(); ++i) text << (i == 0 ? "" : "; or: ") << causes[i];
     text << ".";
     return text.str();
 }

@@ -28,10 +28,9 @@ using namespace pathlab::test;
 namespace {
 
 const grader::SceneReference& vi2Reference() {
-    static const grader::SceneReference reference =
-        grader::loadReference(PATHLAB_GRADER_DIR "/references",
-                              pathlab::test::modelPath("cornell_box_VI2_Specular.ecs"),
-                              grader::loadRubric(PATHLAB_GRADER_DIR "/rubric.json"));
+    static const grader::SceneReference reference = grader::loadReference(
+        PATHLAB_GRADER_DIR "/references", pathlab::test::modelPath("cornell_box_VI2_Specular.ecs"),
+        grader::loadRubric(PATHLAB_GRADER_DIR "/rubric.json"));
     return reference;
 }
 

@@ -25,7 +25,8 @@ const fs::path Kit = fs::path(PATHLAB_GRADER_DIR).parent_path();
 std::string handoutOf(Lab lab) {
     const std::string prefix = "0" + std::to_string(static_cast<int>(lab) + 1) + "-";
     for (const auto& entry : fs::directory_iterator(Kit / "handouts"))
-        if (entry.path().filename().string().rfind(prefix, 0) == 0) return readFile(entry.path().string());
+        if (entry.path().filename().string().rfind(prefix, 0) == 0)
+            return readFile(entry.path().string());
     FAIL("no handout " << prefix << "*.md in " << (Kit / "handouts").string());
     return "";
 }
@@ -35,8 +36,10 @@ void requireStepExists(LabStep step, Lab lab) {
     const int number = stepNumber(step, lab);
     INFO(labName(lab) << ", step " << static_cast<int>(step));
     REQUIRE(number > 0);
-    const std::string name = "lab" + std::to_string(static_cast<int>(lab) + 1) + "." + std::to_string(number);
-    const std::string labFile = readFile((Kit / "labs" / (std::string(labName(lab)) + ".cpp")).string());
+    const std::string name =
+        "lab" + std::to_string(static_cast<int>(lab) + 1) + "." + std::to_string(number);
+    const std::string labFile =
+        readFile((Kit / "labs" / (std::string(labName(lab)) + ".cpp")).string());
     CHECK(labFile.find("TODO(" + name + ")") != std::string::npos);
     CHECK(handoutOf(lab).find("### " + name + " ") != std::string::npos);
 }
@@ -72,7 +75,8 @@ TEST_CASE("every known bug is found from the furnace values it gives", "[grader]
             const int depth = 3; // where a lab renders at a depth of its own
             std::vector<FurnaceObservation> observations;
             for (const FurnaceModel& furnace : furnaces)
-                observations.push_back({furnace, furnaceValueWithBug(lab, furnace, bug, depth), 0.0});
+                observations.push_back(
+                    {furnace, furnaceValueWithBug(lab, furnace, bug, depth), 0.0});
             const std::string sentence = bugSentence(bug, lab, depth);
             INFO(labName(lab) << ": " << sentence);
             CHECK(contains(likelyFurnaceCauses(lab, observations), sentence));

@@ -84,8 +84,9 @@ TEST_CASE("the furnace at two maxDepths names a lab that ignores ctx.maxDepth", 
           "says (a constant in its place?) (TODO lab1.2)");
     CHECK(contains(likeliest(Lab::Importance, ignoring), "(TODO lab3.2)"));
     // A correct lab at both depths: nothing; one furnace alone cannot tell this cause.
-    CHECK(likelyFurnaceCauses(Lab::Branching, {{diffuse, 1.9375, 0.0005},
-                                               {deeper, correctFurnaceValue(Lab::Branching, deeper), 0.0005}})
+    CHECK(likelyFurnaceCauses(Lab::Branching,
+                              {{diffuse, 1.9375, 0.0005},
+                               {deeper, correctFurnaceValue(Lab::Branching, deeper), 0.0005}})
               .empty());
     for (const std::string& cause : likelyFurnaceCauses(Lab::Branching, {{diffuse, 1.9, 0.0005}}))
         CHECK_FALSE(contains(cause, "ctx.maxDepth ignored"));

@@ -28,7 +28,8 @@ namespace {
 
 /// A scratch folder, removed at the end of the test.
 struct Scratch {
-    fs::path path = fs::temp_directory_path() / ("pathlab-graded-under-" + std::to_string(::getpid()));
+    fs::path path =
+        fs::temp_directory_path() / ("pathlab-graded-under-" + std::to_string(::getpid()));
     Scratch() { fs::create_directories(path); }
     ~Scratch() { fs::remove_all(path); }
 };
@@ -89,7 +90,8 @@ TEST_CASE("a scene's files: the .ecs, the .obj it names and the .mtl that names"
     CHECK(sceneFilesHash(ecs) != before);
 }
 
-TEST_CASE("a stored reference is stale when its scene files, the rubric's sizes or the kit change", "[grader]") {
+TEST_CASE("a stored reference is stale when its scene files, the rubric's sizes or the kit change",
+          "[grader]") {
     Scratch scratch;
     const std::string ecs = copyFurnace(scratch.path);
     const std::string references = (scratch.path / "references").string();
@@ -107,7 +109,8 @@ TEST_CASE("a stored reference is stale when its scene files, the rubric's sizes 
     SECTION("another image size in the rubric") {
         Rubric wider = rubric;
         wider.width = 2 * rubric.width;
-        CHECK(staleWhy(references, ecs, wider).find("the rubric's image size") != std::string::npos);
+        CHECK(staleWhy(references, ecs, wider).find("the rubric's image size") !=
+              std::string::npos);
         Rubric moreSeeds = rubric; // more precise, the same expectation: not stale
         moreSeeds.seeds = 2 * rubric.seeds;
         CHECK(staleWhy(references, ecs, moreSeeds).empty());
@@ -148,7 +151,8 @@ TEST_CASE("the kit's stored references fit the kit's scenes and rubric", "[grade
 
 TEST_CASE("the rubric's hash: its settings, not its layout or its 'about'", "[grader]") {
     Scratch scratch;
-    nlohmann::json j = nlohmann::json::parse(readText(std::string(PATHLAB_GRADER_DIR) + "/rubric.json"));
+    nlohmann::json j =
+        nlohmann::json::parse(readText(std::string(PATHLAB_GRADER_DIR) + "/rubric.json"));
     const std::string path = (scratch.path / "rubric.json").string();
     auto hashOf = [&](const nlohmann::json& rubric, int indent) {
         std::ofstream(path) << rubric.dump(indent);
@@ -167,7 +171,8 @@ TEST_CASE("content hashes tell pieces apart", "[grader]") {
     CHECK(ContentHash().add("x").hex().size() == 16);
 }
 
-TEST_CASE("submission times: ISO 8601 with a zone, a deadline in local time, an LMS's CSV", "[grader]") {
+TEST_CASE("submission times: ISO 8601 with a zone, a deadline in local time, an LMS's CSV",
+          "[grader]") {
     CHECK(parseTime("2026-12-01T23:59Z") == 1796169540LL);
     CHECK(parseTime("2026-12-01T23:59:30Z") == 1796169570LL);
     CHECK(parseTime("2026-12-02T00:59+01:00") == 1796169540LL);
@@ -182,7 +187,8 @@ TEST_CASE("submission times: ISO 8601 with a zone, a deadline in local time, an 
 
     Scratch scratch;
     const fs::path csv = scratch.path / "times.csv";
-    std::ofstream(csv) << "id,submitted_at\nalice,2026-12-01T10:00:00Z\r\nbob,2026-12-02T10:00:00Z\n";
+    std::ofstream(csv)
+        << "id,submitted_at\nalice,2026-12-01T10:00:00Z\r\nbob,2026-12-02T10:00:00Z\n";
     const auto times = loadSubmissionTimes(csv.string());
     CHECK(times.at("alice") == *parseTime("2026-12-01T10:00Z"));
     CHECK(times.at("bob") == *parseTime("2026-12-02T10:00Z"));
@@ -203,12 +209,20 @@ TEST_CASE("submission times: ISO 8601 with a zone, a deadline in local time, an 
 TEST_CASE("a gradebook never mixes maxima, says pending, stale and late", "[grader]") {
     Scratch scratch;
     GradingNow now{"rubric-now", "scenes-now", 40, parseTime("2026-12-01T23:59Z"), {}};
-    auto result = [](double score, double max, const std::string& rubric, const std::string& submitted) {
-        return nlohmann::json{{"status", "graded"}, {"score", score}, {"max_score", max},
-                              {"labs", nlohmann::json::object()}, {"missing_labs", nlohmann::json::array()},
-                              {"graded_under", {{"rubric_hash", rubric}, {"scenes_hash", "scenes-now"}}},
-                              {"intake", {{"submitted_at", *parseTime(submitted)}, {"time_source", "last commit"},
-                                          {"commit", "abc123"}, {"files_hash", "f00d"}}}};
+    auto result = [](double score, double max, const std::string& rubric,
+                     const std::string& submitted) {
+        return nlohmann::json{
+            {"status", "graded"},
+            {"score", score},
+            {"max_score", max},
+            {"labs", nlohmann::json::object()},
+            {"missing_labs", nlohmann::json::array()},
+            {"graded_under", {{"rubric_hash", rubric}, {"scenes_hash", "scenes-now"}}},
+            {"intake",
+             {{"submitted_at", *parseTime(submitted)},
+              {"time_source", "last commit"},
+              {"commit", "abc123"},
+              {"files_hash", "f00d"}}}};
     };
     std::vector<GradebookEntry> entries = {
         {"alice", "", result(40, 40, "rubric-now", "2026-12-01T12:00Z"), "", false},
@@ -235,9 +249,12 @@ TEST_CASE("a gradebook never mixes maxima, says pending, stale and late", "[grad
         bool quoted = false;
         std::string field;
         for (char c : line) {
-            if (c == '"') quoted = !quoted;
-            else if (c == ',' && !quoted) fields.push_back(field), field.clear();
-            else field += c;
+            if (c == '"')
+                quoted = !quoted;
+            else if (c == ',' && !quoted)
+                fields.push_back(field), field.clear();
+            else
+                field += c;
         }
         fields.push_back(field);
         rows[fields[0]] = fields;
@@ -266,5 +283,6 @@ TEST_CASE("a gradebook never mixes maxima, says pending, stale and late", "[grad
 
     const std::string summary = readText(scratch.path / "summary.html");
     CHECK(summary.find("1 pending, 2 stale") != std::string::npos);
-    CHECK(summary.find("97%</td><td>uniform</td><td>alice</td><td>reference solutions") != std::string::npos);
+    CHECK(summary.find("97%</td><td>uniform</td><td>alice</td><td>reference solutions") !=
+          std::string::npos);
 }

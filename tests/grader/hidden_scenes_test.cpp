@@ -41,7 +41,8 @@ std::string visibilityError(const std::string& visibility) {
     nlohmann::json j = nlohmann::json::parse(in);
     j["hidden_scenes"]["gradescope_visibility"] = visibility;
     const std::string path = (std::filesystem::temp_directory_path() /
-                              ("pathlab-hidden-" + std::to_string(::getpid()) + ".json")).string();
+                              ("pathlab-hidden-" + std::to_string(::getpid()) + ".json"))
+                                 .string();
     std::ofstream(path) << j.dump();
     std::string error;
     try {
@@ -55,8 +56,11 @@ std::string visibilityError(const std::string& visibility) {
 
 } // namespace
 
-TEST_CASE("Gradescope: the hidden scenes' verdicts in a test of their own, shown when the rubric says", "[grader]") {
-    const nlohmann::json results = nlohmann::json::parse(gradescopeReport(reportWithHiddenScene(), "after_published"));
+TEST_CASE(
+    "Gradescope: the hidden scenes' verdicts in a test of their own, shown when the rubric says",
+    "[grader]") {
+    const nlohmann::json results =
+        nlohmann::json::parse(gradescopeReport(reportWithHiddenScene(), "after_published"));
     const auto& tests = results.at("tests");
     REQUIRE(tests.size() == 2);
     CHECK(tests[0].at("name") == "uniform: correctness");
@@ -68,18 +72,21 @@ TEST_CASE("Gradescope: the hidden scenes' verdicts in a test of their own, shown
     CHECK(tests[1].at("visibility") == "after_published");
     CHECK(tests[1].at("max_score") == 0);
     CHECK(tests[1].at("status") == "failed");
-    CHECK(tests[1].at("output") == "hidden scene 1: differs from its reference\nhidden scene 2: matches its reference");
+    CHECK(tests[1].at("output") ==
+          "hidden scene 1: differs from its reference\nhidden scene 2: matches its reference");
     const std::string output = results.at("output");
     CHECK(output.find("hidden scene 1") == std::string::npos);
 
     // The student's own feedback (terminal, JSON) says pass or fail per hidden scene, by number.
-    CHECK(terminalReport(reportWithHiddenScene(), false).find("hidden scene 1: differs") != std::string::npos);
+    CHECK(terminalReport(reportWithHiddenScene(), false).find("hidden scene 1: differs") !=
+          std::string::npos);
 }
 
 TEST_CASE("the rubric's visibility of hidden scenes: one of Gradescope's four", "[grader]") {
     CHECK(visibilityError("after_published").empty());
     CHECK(visibilityError("hidden").empty());
-    CHECK(visibilityError("sometimes").find("hidden_scenes.gradescope_visibility is 'sometimes'") != std::string::npos);
+    CHECK(visibilityError("sometimes").find("hidden_scenes.gradescope_visibility is 'sometimes'") !=
+          std::string::npos);
 }
 
 TEST_CASE("a render's failure on a hidden scene names neither its path nor its name", "[grader]") {
@@ -90,8 +97,8 @@ TEST_CASE("a render's failure on a hidden scene names neither its path nor its n
     scene.hidden = true;
     const std::string failure = "crashed (signal 11): viewer: /course/hidden/secret_lantern.ecs: "
                                 "loaded secret_lantern, then secret_lantern again";
-    CHECK(withoutSceneName(failure, scene) ==
-          "crashed (signal 11): viewer: hidden scene 2: loaded hidden scene 2, then hidden scene 2 again");
+    CHECK(withoutSceneName(failure, scene) == "crashed (signal 11): viewer: hidden scene 2: loaded "
+                                              "hidden scene 2, then hidden scene 2 again");
     scene.hidden = false; // a public scene's, or one the instructor reveals: as it is
     CHECK(withoutSceneName(failure, scene) == failure);
 }

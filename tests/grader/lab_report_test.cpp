@@ -25,8 +25,10 @@ TEST_CASE("make report keeps what the student wrote under What I observed", "[gr
     std::ofstream(path) << first << "Lab 2 is noisier: it traces a bounce one time in three.\n";
     const std::string notes = observationsIn(path);
     CHECK(notes.find("<!--") == 0); // the prompt they left stays with their text
-    CHECK(notes.find("Lab 2 is noisier: it traces a bounce one time in three.\n") != std::string::npos);
-    const std::string second = labReport(GradeReport{}, Rubric{}, LabFigures{}, std::nullopt, notes);
+    CHECK(notes.find("Lab 2 is noisier: it traces a bounce one time in three.\n") !=
+          std::string::npos);
+    const std::string second =
+        labReport(GradeReport{}, Rubric{}, LabFigures{}, std::nullopt, notes);
     std::ofstream(path) << second;
     CHECK(observationsIn(path) == notes);
 }

@@ -8,7 +8,8 @@
 using namespace pathlab;
 using namespace pathlab::grader;
 
-TEST_CASE("a runner with a library for any lab is sandboxed, and renders each lab with its own", "[grader]") {
+TEST_CASE("a runner with a library for any lab is sandboxed, and renders each lab with its own",
+          "[grader]") {
     LabRunner linkedIn;
     CHECK_FALSE(linkedIn.sandboxed());
     LabRunner uniformOnly;

@@ -38,7 +38,8 @@ TEST_CASE("the specification each lab's extra bounce rays depart from", "[grader
     CHECK(contains(specificationDeparture(Lab::Roulette, moreBounces, reference), "TODO lab4.2"));
 }
 
-TEST_CASE("rays like the reference's depart from nothing; a noisy few percent neither", "[grader]") {
+TEST_CASE("rays like the reference's depart from nothing; a noisy few percent neither",
+          "[grader]") {
     const RaysPerSample reference{1, 0.93, 1.62};
     CHECK(specificationDeparture(Lab::Uniform, reference, reference).empty());
     CHECK(specificationDeparture(Lab::Uniform, {1, 0.95, 1.64}, reference).empty());

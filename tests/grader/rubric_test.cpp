@@ -26,7 +26,8 @@ nlohmann::json kitRubric() {
 /// `rubric` written to a file of its own and read back.
 Rubric load(const nlohmann::json& rubric) {
     const std::string path = (std::filesystem::temp_directory_path() /
-                              ("pathlab-rubric-test-" + std::to_string(::getpid()) + ".json")).string();
+                              ("pathlab-rubric-test-" + std::to_string(::getpid()) + ".json"))
+                                 .string();
     std::ofstream(path) << rubric.dump();
     struct Remove {
         std::string path;
@@ -50,7 +51,8 @@ std::string errorOf(const nlohmann::json& rubric) {
 
 } // namespace
 
-TEST_CASE("the kit's rubric: speed by samples/s, parameter check at maxDepth 5 and q 0.5", "[grader]") {
+TEST_CASE("the kit's rubric: speed by samples/s, parameter check at maxDepth 5 and q 0.5",
+          "[grader]") {
     const Rubric r = load(kitRubric());
     for (Lab lab : AllLabs) CHECK(r.forLab(lab).speedJudgedBy == SpeedMeasure::SamplesPerSecond);
     CHECK(r.parameterCheck.scene == "furnace");

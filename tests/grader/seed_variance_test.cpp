@@ -18,7 +18,8 @@ std::vector<std::vector<float>> images(const std::vector<float>& values, int pix
 
 } // namespace
 
-TEST_CASE("the trimmed per-sample variance is the spread of the seeds' pixel means times spp", "[grader]") {
+TEST_CASE("the trimmed per-sample variance is the spread of the seeds' pixel means times spp",
+          "[grader]") {
     // Values 1, 2, 3, 4: sample variance 5/3; at 8 spp a sample's variance is 8·5/3.
     CHECK(trimmedSampleVariance(images({1, 2, 3, 4}, 500), 8) == Approx(8 * 5.0 / 3));
     CHECK(trimmedSampleVariance(images({2, 2, 2}, 100), 16) == Approx(0.0));

@@ -155,17 +155,19 @@ const char* const Labs[] = {"branching", "uniform", "importance", "roulette"};
 /// spacing. A keyword missing here is renamed too, and shows as a copy scoring below 1.
 std::string disguised(const std::string& source) {
     static const std::set<std::string> keywords = {
-        "auto", "bool", "const", "constexpr", "else", "false", "float", "for", "if", "int",
-        "namespace", "nullptr", "return", "static", "static_cast", "thread_local", "true",
-        "void", "volatile", "while"};
+        "auto",        "bool",         "const", "constexpr", "else",     "false",  "float",
+        "for",         "if",           "int",   "namespace", "nullptr",  "return", "static",
+        "static_cast", "thread_local", "true",  "void",      "volatile", "while"};
     std::istringstream lines(source);
     std::string line, code, out = "/* all my own work */\n";
     while (std::getline(lines, line)) {
         line = line.substr(0, line.find("//")); // the labs have no "//" inside a string
         const size_t start = line.find_first_not_of(" \t");
         if (start == std::string::npos) continue;
-        if (line[start] == '#') out += line + "\n";
-        else code += line.substr(start) + " ";
+        if (line[start] == '#')
+            out += line + "\n";
+        else
+            code += line.substr(start) + " ";
     }
     const auto isWordChar = [](char c) {
         return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
@@ -200,8 +202,8 @@ TEST_CASE("normalised tokens keep keywords and operators, and nothing a copier c
           Tokens{"int", "id", "=", "id", "->", "id", "+", "0", ";"});
     // Every number is "0", every string and character literal "\"\"", raw and prefixed alike.
     CHECK(normalisedTokens("f(1.5e-3f, 1'000, .5, \"a \\\" b\", 'x', u8\"s\", R\"d(\")d\")") ==
-          Tokens{"id", "(", "0", ",", "0", ",", "0", ",", "\"\"", ",", "\"\"", ",", "\"\"",
-                 ",", "\"\"", ")"});
+          Tokens{"id", "(", "0", ",", "0", ",", "0", ",", "\"\"", ",", "\"\"", ",", "\"\"", ",",
+                 "\"\"", ")"});
     // Operators whole, as the compiler reads them; `and` is `&&`; `>>` two `>`, so that
     // `vector<vector<int>>` and `vector<vector<int> >` read the same.
     CHECK(normalisedTokens("a::b += i++ <= j && k and not m;") ==
@@ -298,13 +300,11 @@ TEST_CASE("the class's pairs: most alike first, no submission with itself, each 
     for (const SimilarPair& pair : everything) {
         CHECK(pair.first != pair.second);
         CHECK((pair.lab == "mean") == (pair.first == "grace" && pair.second == "heidi"));
-        if (pair.lab == "mean")
-            CHECK(pair.similarity == Approx(alike(Original, Independent, "")));
+        if (pair.lab == "mean") CHECK(pair.similarity == Approx(alike(Original, Independent, "")));
     }
-    CHECK(std::is_sorted(everything.begin(), everything.end(),
-                         [](const SimilarPair& a, const SimilarPair& b) {
-                             return a.similarity > b.similarity;
-                         }));
+    CHECK(std::is_sorted(
+        everything.begin(), everything.end(),
+        [](const SimilarPair& a, const SimilarPair& b) { return a.similarity > b.similarity; }));
 }
 
 TEST_CASE("the reference solutions: disguised 1, stub 0, mutants near copies",

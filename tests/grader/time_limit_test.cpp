@@ -6,15 +6,16 @@
 
 using namespace pathlab::grader;
 
-TEST_CASE("The time limit scales with the start-up's slow-down, from 1 to MaxSlowness", "[time_limit]") {
-    CHECK(scaledTimeLimit(30, 0.4, 0.2) == Approx(60));                 // twice as slow
-    CHECK(scaledTimeLimit(30, 0.1, 0.2) == Approx(30));                 // faster: never shorter
-    CHECK(scaledTimeLimit(30, 50.0, 0.2) == Approx(30 * MaxSlowness));  // at most
+TEST_CASE("The time limit scales with the start-up's slow-down, from 1 to MaxSlowness",
+          "[time_limit]") {
+    CHECK(scaledTimeLimit(30, 0.4, 0.2) == Approx(60));                // twice as slow
+    CHECK(scaledTimeLimit(30, 0.1, 0.2) == Approx(30));                // faster: never shorter
+    CHECK(scaledTimeLimit(30, 50.0, 0.2) == Approx(30 * MaxSlowness)); // at most
 }
 
 TEST_CASE("Without both start-ups the rubric's limit holds", "[time_limit]") {
-    CHECK(scaledTimeLimit(30, 0.4, 0) == Approx(30));  // references made before start-ups were kept
-    CHECK(scaledTimeLimit(30, 0, 0.2) == Approx(30));  // no start-up render ran
+    CHECK(scaledTimeLimit(30, 0.4, 0) == Approx(30)); // references made before start-ups were kept
+    CHECK(scaledTimeLimit(30, 0, 0.2) == Approx(30)); // no start-up render ran
 }
 
 TEST_CASE("The note gives the slow-down and the limit", "[time_limit]") {

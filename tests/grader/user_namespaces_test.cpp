@@ -36,16 +36,18 @@ TEST_CASE("Ubuntu 24.04's AppArmor restriction is named with both of its remedie
 }
 
 TEST_CASE("Other switches that forbid user namespaces are named", "[sandbox]") {
-    CHECK(contains(pathlab::grader::userNamespaceRemedy(
-                       procSysWith("kernel/unprivileged_userns_clone", "0")),
-                   "sysctl -w kernel.unprivileged_userns_clone=1"));
-    CHECK(contains(pathlab::grader::userNamespaceRemedy(procSysWith("user/max_user_namespaces", "0")),
-                   "sysctl -w user.max_user_namespaces="));
+    CHECK(contains(
+        pathlab::grader::userNamespaceRemedy(procSysWith("kernel/unprivileged_userns_clone", "0")),
+        "sysctl -w kernel.unprivileged_userns_clone=1"));
+    CHECK(
+        contains(pathlab::grader::userNamespaceRemedy(procSysWith("user/max_user_namespaces", "0")),
+                 "sysctl -w user.max_user_namespaces="));
 }
 
 TEST_CASE("Settings that allow user namespaces need no remedy", "[sandbox]") {
     CHECK(pathlab::grader::userNamespaceRemedy(
               procSysWith("kernel/apparmor_restrict_unprivileged_userns", "0")) == "");
-    CHECK(pathlab::grader::userNamespaceRemedy(procSysWith("kernel/unprivileged_userns_clone", "1")) == "");
+    CHECK(pathlab::grader::userNamespaceRemedy(
+              procSysWith("kernel/unprivileged_userns_clone", "1")) == "");
     CHECK(pathlab::grader::userNamespaceRemedy("/nonexistent-proc-sys") == "");
 }

@@ -90,7 +90,8 @@ TEST_CASE("ctx.trace refuses a direction that is not unit length", "[render][che
 }
 
 TEST_CASE("the first non-finite sample is reported by sample index and pixel, whatever the "
-          "order tiles ran in", "[render][checks]") {
+          "order tiles ran in",
+          "[render][checks]") {
     // The expectation, found independently of the renderer: the same random numbers, drawn as
     // the renderer draws them (the jitter's two, then the lab's first), scanned in order.
     std::optional<NonfiniteSample> expected;
@@ -124,14 +125,15 @@ TEST_CASE("the first non-finite sample is reported by sample index and pixel, wh
     CHECK(buffer.summary().nonfinitePixels == nanPixels);
 
     // The line the viewer prints names all of it.
-    RenderStats stats = renderStats({"box", Lab::Roulette, Implementation::Student, {}, Seed}, buffer,
-                                    2, 1.0, renderer.rayCounters(), renderer.firstNonfinite());
+    RenderStats stats =
+        renderStats({"box", Lab::Roulette, Implementation::Student, {}, Seed}, buffer, 2, 1.0,
+                    renderer.rayCounters(), renderer.firstNonfinite());
     const std::string warning = stats.nonfiniteWarning();
     INFO(warning);
     CHECK(mentions(warning, std::to_string(nanPixels) + " pixel(s)"));
     CHECK(mentions(warning, "pixel (" + std::to_string(expected->x) + ", " +
-                                                  std::to_string(expected->y) + "), sample " +
-                                                  std::to_string(expected->sampleIndex)));
+                                std::to_string(expected->y) + "), sample " +
+                                std::to_string(expected->sampleIndex)));
     CHECK(mentions(warning, "lab roulette (student)"));
 
     // And --stats keeps it, its NaN as text.

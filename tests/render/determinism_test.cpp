@@ -46,8 +46,8 @@ TEST_CASE("a second pass continues the sample sequence instead of repeating it",
     // 2 passes of 2 spp must equal 1 pass of 4 spp: sample indices carry on across passes.
     const RenderOptions options = [] {
         const std::string scene = test::modelPath("furnace.ecs");
-        const char* argv[] = {"viewer", "-c", scene.c_str(), "--size", "16", "16", "--lab",
-                              "uniform", "--solution"};
+        const char* argv[] = {"viewer", "-c",    scene.c_str(), "--size",    "16",
+                              "16",     "--lab", "uniform",     "--solution"};
         return parseRenderOptions(9, argv);
     }();
     const RenderScene scene(loadScene(options));

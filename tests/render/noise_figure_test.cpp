@@ -60,9 +60,11 @@ namespace {
 /// read after each of `spps` samples per pixel, as the window's panel reads it frame after frame.
 std::vector<double> progressiveNoise(const char* lab, const char* continueProb, int size,
                                      std::vector<int> spps, uint64_t seed) {
-    const std::string scene = test::modelPath("cornell_box_VI2_Specular.ecs"), side = std::to_string(size);
-    const char* argv[] = {"viewer", "-c", scene.c_str(), "--size", side.c_str(), side.c_str(),
-                          "--lab", lab, "--continue-prob", continueProb, "--solution"};
+    const std::string scene = test::modelPath("cornell_box_VI2_Specular.ecs"),
+                      side = std::to_string(size);
+    const char* argv[] = {"viewer",          "-c",         scene.c_str(), "--size",
+                          side.c_str(),      side.c_str(), "--lab",       lab,
+                          "--continue-prob", continueProb, "--solution"};
     const RenderOptions options = parseRenderOptions(11, argv);
     const RenderScene renderScene(loadScene(options));
     const Camera camera(*renderScene.scene().camera, size, size);
@@ -91,14 +93,19 @@ std::vector<double> progressiveNoise(const char* lab, const char* continueProb, 
 // to halve (handout 4's first question).
 TEST_CASE("the noise figure halves when the samples quadruple, 64 -> 256 -> 1024 spp",
           "[render][noise][solutions]") {
-    struct Case { const char* lab; const char* continueProb; };
-    for (const Case c : {Case{"branching", "0.1"}, Case{"uniform", "0.1"}, Case{"importance", "0.1"},
-                         Case{"roulette", "0.8"}}) {
-        const std::vector<double> large = progressiveNoise(c.lab, c.continueProb, 256, {64, 256}, 21);
-        const std::vector<double> small = progressiveNoise(c.lab, c.continueProb, 128, {256, 1024}, 22);
+    struct Case {
+        const char* lab;
+        const char* continueProb;
+    };
+    for (const Case c : {Case{"branching", "0.1"}, Case{"uniform", "0.1"},
+                         Case{"importance", "0.1"}, Case{"roulette", "0.8"}}) {
+        const std::vector<double> large =
+            progressiveNoise(c.lab, c.continueProb, 256, {64, 256}, 21);
+        const std::vector<double> small =
+            progressiveNoise(c.lab, c.continueProb, 128, {256, 1024}, 22);
         INFO(c.lab << " at continueProb " << c.continueProb << ": noise " << large[0] << " -> "
-                   << large[1] << " from 64 to 256 spp at 256x256, " << small[0] << " -> " << small[1]
-                   << " from 256 to 1024 spp at 128x128");
+                   << large[1] << " from 64 to 256 spp at 256x256, " << small[0] << " -> "
+                   << small[1] << " from 256 to 1024 spp at 128x128");
         CHECK(large[0] / large[1] == Approx(2.0).epsilon(0.1));
         CHECK(small[0] / small[1] == Approx(2.0).epsilon(0.1));
     }

@@ -32,7 +32,8 @@ TEST_CASE("EXR, PFM and HDR keep linear radiance; PNG is sRGB-encoded and clampe
     CHECK(png.rgb[2] == Approx(1.0f)); // clamped
     CHECK(linearToSrgb(0.5f) == Approx(0.7354f).epsilon(1e-3));
     int files = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(dir)) files += entry.is_regular_file();
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        files += entry.is_regular_file();
     CHECK(files == 4); // no temporary files left behind
 }
 
@@ -40,8 +41,8 @@ TEST_CASE("--stats writes the fields the README lists", "[render][stats][solutio
     const std::string dir = test::temporaryFolder("stats");
     const auto run = test::runViewer("-c " + test::modelPath("furnace.ecs") +
                                      " --size 16 8 --spp 2 --lab roulette --solution --seed 3"
-                                     " --continue-prob 0.5 -o " + dir + "/f.exr --stats " + dir +
-                                     "/f.json");
+                                     " --continue-prob 0.5 -o " +
+                                     dir + "/f.exr --stats " + dir + "/f.json");
     INFO(run.output);
     REQUIRE(run.exitStatus == 0);
     std::ifstream in(dir + "/f.json");
@@ -62,16 +63,21 @@ TEST_CASE("--stats writes the fields the README lists", "[render][stats][solutio
     CHECK(stats["nonfinite_pixels"] == 0);
     CHECK(stats["continue_prob"].get<double>() == Approx(0.5));
     // The figures a student writes down, each from the others as the README defines them.
-    const double variance = (stats["mean_variance"][0].get<double>() + stats["mean_variance"][1].get<double>() +
-                             stats["mean_variance"][2].get<double>()) / 3;
-    const double radiance = (stats["mean_radiance"][0].get<double>() + stats["mean_radiance"][1].get<double>() +
-                             stats["mean_radiance"][2].get<double>()) / 3;
+    const double variance =
+        (stats["mean_variance"][0].get<double>() + stats["mean_variance"][1].get<double>() +
+         stats["mean_variance"][2].get<double>()) /
+        3;
+    const double radiance =
+        (stats["mean_radiance"][0].get<double>() + stats["mean_radiance"][1].get<double>() +
+         stats["mean_radiance"][2].get<double>()) /
+        3;
     CHECK(stats["noise"].get<double>() == Approx(std::sqrt(variance / 2) / radiance));
     CHECK(stats["efficiency"].get<double>() ==
           Approx(1 / (std::pow(stats["noise"].get<double>(), 2) * stats["seconds"].get<double>())));
     CHECK(stats["frames_per_second"].get<double>() ==
           Approx(stats["samples_per_second"].get<double>() / (16 * 8)));
-    CHECK(stats["frames_per_second_source"].get<std::string>().find("headless") != std::string::npos);
+    CHECK(stats["frames_per_second_source"].get<std::string>().find("headless") !=
+          std::string::npos);
     // And what the viewer writes, the grader's report reads back.
     const RenderStats read = readRenderStats(dir + "/f.json");
     CHECK(read.noise == Approx(stats["noise"].get<double>()));
@@ -102,9 +108,15 @@ TEST_CASE("the lab stubs compile, run, and render direct light only", "[render][
     // Direct light only: the stub and the solution at --max-depth 0 agree exactly, for every lab
     // but roulette (whose solution draws a roulette number even at the first hit).
     for (Lab lab : {Lab::Branching, Lab::Uniform, Lab::Importance}) {
-        const std::vector<std::string> common = {
-            "-c", test::modelPath("cornell_box_diffuse.ecs"), "--size", "32", "32", "--spp", "2",
-            "--lab", std::string(labName(lab))};
+        const std::vector<std::string> common = {"-c",
+                                                 test::modelPath("cornell_box_diffuse.ecs"),
+                                                 "--size",
+                                                 "32",
+                                                 "32",
+                                                 "--spp",
+                                                 "2",
+                                                 "--lab",
+                                                 std::string(labName(lab))};
         auto stubArgs = common;
         auto solutionArgs = common;
         solutionArgs.insert(solutionArgs.end(), {"--solution", "--max-depth", "0"});

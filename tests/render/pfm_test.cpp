@@ -32,7 +32,8 @@ std::string floatBytes(float v, bool bigEndian) {
     uint32_t bits;
     std::memcpy(&bits, &v, 4);
     std::string out(4, '\0');
-    for (int i = 0; i < 4; ++i) out[bigEndian ? 3 - i : i] = static_cast<char>((bits >> (8 * i)) & 0xff);
+    for (int i = 0; i < 4; ++i)
+        out[bigEndian ? 3 - i : i] = static_cast<char>((bits >> (8 * i)) & 0xff);
     return out;
 }
 
@@ -47,7 +48,8 @@ std::string errorReading(const std::string& path) {
 
 } // namespace
 
-TEST_CASE("a PFM is written as the format defines it: bottom row first, little-endian", "[render][images]") {
+TEST_CASE("a PFM is written as the format defines it: bottom row first, little-endian",
+          "[render][images]") {
     const std::string dir = test::temporaryFolder("pfm-write");
     // 2x2: top row (1, 2), bottom row (3, 4), grey.
     writeImage(dir + "/w.pfm", 2, 2, {1, 1, 1, 2, 2, 2, 3, 3, 3, 4, 4, 4});
@@ -77,8 +79,10 @@ TEST_CASE("a broken PFM is refused, naming the file and the fault", "[render][im
     CHECK(errorReading(dir + "/short.pfm") ==
           dir + "/short.pfm: cannot read the image: the file ends before its pixels do");
     writeBytes(dir + "/header.pfm", "P6\n2 2\n255\n");
-    CHECK(errorReading(dir + "/header.pfm").find(dir + "/header.pfm: cannot read the image: not a PFM header") == 0);
+    CHECK(errorReading(dir + "/header.pfm")
+              .find(dir + "/header.pfm: cannot read the image: not a PFM header") == 0);
     writeBytes(dir + "/huge.pfm", "PF\n100000 100000\n-1.0\n");
     CHECK(errorReading(dir + "/huge.pfm").find("not a PFM header") != std::string::npos);
-    CHECK(errorReading(dir + "/missing.pfm").find(dir + "/missing.pfm: cannot read the image") == 0);
+    CHECK(errorReading(dir + "/missing.pfm").find(dir + "/missing.pfm: cannot read the image") ==
+          0);
 }

@@ -23,17 +23,19 @@ TEST_CASE("--seeds renders each seed as its own run would", "[render][solutions]
     const std::string folder = test::temporaryFolder("seeds");
     const std::string scene = "-c " + test::modelPath("cornell_box_VI2_Specular.ecs") +
                               " --size 16 12 --spp 3 --lab uniform --solution";
-    const auto many = test::runViewer(scene + " --seed 40 --seeds 3 -o " + folder + "/many.pfm --stats " +
-                                      folder + "/many.json");
+    const auto many = test::runViewer(scene + " --seed 40 --seeds 3 -o " + folder +
+                                      "/many.pfm --stats " + folder + "/many.json");
     REQUIRE(many.exitStatus == 0);
     for (int seed : {40, 41, 42}) {
         const std::string one = folder + "/one-" + std::to_string(seed) + ".pfm";
-        REQUIRE(test::runViewer(scene + " --seed " + std::to_string(seed) + " -o " + one).exitStatus == 0);
+        REQUIRE(
+            test::runViewer(scene + " --seed " + std::to_string(seed) + " -o " + one).exitStatus ==
+            0);
         const std::string image = bytes(folder + "/many-" + std::to_string(seed) + ".pfm");
         CHECK(!image.empty());
         CHECK(image == bytes(one));
-        CHECK(bytes(folder + "/many-" + std::to_string(seed) + ".json").find("\"seed\": " + std::to_string(seed)) !=
-              std::string::npos);
+        CHECK(bytes(folder + "/many-" + std::to_string(seed) + ".json")
+                  .find("\"seed\": " + std::to_string(seed)) != std::string::npos);
     }
     // Different seeds, different images.
     CHECK(bytes(folder + "/many-40.pfm") != bytes(folder + "/many-41.pfm"));

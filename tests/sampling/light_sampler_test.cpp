@@ -13,7 +13,8 @@ using namespace pathlab;
 TEST_CASE("lights are picked in proportion to power (chi-square, alpha = 1e-4)",
           "[sampling][lights]") {
     Scene scene;
-    scene.pointLights = {{{0, 0, 0}, Color(1.0f)}, {{1, 0, 0}, Color(3.0f, 0.0f, 0.0f)},
+    scene.pointLights = {{{0, 0, 0}, Color(1.0f)},
+                         {{1, 0, 0}, Color(3.0f, 0.0f, 0.0f)},
                          {{2, 0, 0}, Color(0.0f)}}; // the dark one is never a light
     // One emissive triangle of area 2 and Ke 1: power π·2·1 against 4π·1 and 4π·1 above.
     scene.positions = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}};

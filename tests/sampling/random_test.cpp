@@ -12,8 +12,8 @@ using namespace pathlab;
 TEST_CASE("PCG32 matches the reference implementation's first outputs", "[sampling][rng]") {
     // pcg32-demo from the PCG reference code: seed 42, sequence 54.
     Pcg32 rng(42u, 54u);
-    const uint32_t expected[] = {0xa15c02b7, 0x7b47f409, 0xba1d3330, 0x83d2f293, 0xbfa4784b,
-                                 0xcbed606e};
+    const uint32_t expected[] = {0xa15c02b7, 0x7b47f409, 0xba1d3330,
+                                 0x83d2f293, 0xbfa4784b, 0xcbed606e};
     for (uint32_t e : expected) CHECK(rng.nextUint() == e);
 }
 

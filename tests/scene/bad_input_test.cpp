@@ -57,12 +57,14 @@ TEST_CASE("malformed OBJ lines are named by file and line", "[scene][bad-input]"
     expectRejected("a.obj", "v 0 0 0\nv 1 zero 0\n", "a.obj:2: 'v' expects numbers, found 'zero'");
     expectRejected("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
                    "a.obj:4: face corner '9' refers to vertex 9, but the file has 3");
-    expectRejected("a.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", "a.obj:3: a face needs at least 3 corners");
+    expectRejected("a.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n",
+                   "a.obj:3: a face needs at least 3 corners");
     expectRejected("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/x 2 3\n", "a.obj:4: face corner '1/x'");
     expectRejected("a.obj", "v 0 0 0\nwat 1 2\n", "a.obj:2: unknown OBJ keyword 'wat'");
     expectRejected("a.obj", "mtllib m.mtl\nusemtl chrome\n",
                    "a.obj:2: material 'chrome' is not defined");
-    expectRejected("a.obj", "mtllib nowhere.mtl\n", "a.obj:1: material library 'nowhere.mtl' not found");
+    expectRejected("a.obj", "mtllib nowhere.mtl\n",
+                   "a.obj:1: material library 'nowhere.mtl' not found");
 }
 
 TEST_CASE("malformed MTL lines are named by file and line", "[scene][bad-input]") {
@@ -78,7 +80,8 @@ TEST_CASE("malformed scene scripts are named by file and line", "[scene][bad-inp
     expectRejected("s.ecs", "-i a.obj\n-vp 1 2\n", "s.ecs:2: option -vp needs three numbers");
     expectRejected("s.ecs", "-i a.obj\n-vp 1 2 x\n", "s.ecs:2: option -vp expects three numbers");
     expectRejected("s.ecs", "-i a.obj\n-frobnicate 3\n", "s.ecs:2: unknown option '-frobnicate'");
-    expectRejected("s.ecs", "# nothing here\n-i missing.obj\n", "missing.obj: cannot open the OBJ file");
+    expectRejected("s.ecs", "# nothing here\n-i missing.obj\n",
+                   "missing.obj: cannot open the OBJ file");
     expectRejected("s.ecs", "-i a.obj -fov 0\n", "s.ecs:1: option -fov expects an angle");
 }
 
@@ -91,14 +94,18 @@ TEST_CASE("nonsensical options are named", "[scene][bad-input]") {
                    "--continue-prob 1.5");
     expectRejected("a.obj", goodObj, "option --max-depth expects a depth from 0", "--max-depth -1");
     expectRejected("a.obj", goodObj, "option --size expects a width in pixels", "--size 0 8");
-    expectRejected("a.obj", goodObj, "option --lab expects one of branching, uniform, importance, roulette, got 'fancy'", "--lab fancy");
+    expectRejected(
+        "a.obj", goodObj,
+        "option --lab expects one of branching, uniform, importance, roulette, got 'fancy'",
+        "--lab fancy");
     expectRejected("a.obj", goodObj, "option --threads expects", "--threads lots");
 }
 
 TEST_CASE("missing files and unwritable outputs are named", "[scene][bad-input]") {
     auto run = test::runViewer("-c /nonexistent/scene.ecs -o /tmp/x.png");
     CHECK(run.exitStatus == 2);
-    CHECK(run.output.find("/nonexistent/scene.ecs: cannot open the scene script") != std::string::npos);
+    CHECK(run.output.find("/nonexistent/scene.ecs: cannot open the scene script") !=
+          std::string::npos);
 
     const std::string scene = test::modelPath("furnace.ecs");
     run = test::runViewer("-c " + scene + " -o /nonexistent-folder/out.png");
@@ -109,7 +116,7 @@ TEST_CASE("missing files and unwritable outputs are named", "[scene][bad-input]"
     CHECK(run.exitStatus == 2);
     CHECK(run.output.find("must end in .exr, .pfm, .hdr") != std::string::npos);
 
-#if !defined(_WIN32) // a folder's permission bits do not stop writes on Windows
+#if !defined(_WIN32)        // a folder's permission bits do not stop writes on Windows
     if (::geteuid() != 0) { // root may write anywhere
         const std::string dir = test::temporaryFolder("readonly");
         fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec);
@@ -130,9 +137,11 @@ TEST_CASE("a material that reflects more than it receives is named in a warning"
     const std::string dir = test::temporaryFolder("energy");
     writeFile(dir + "/m.mtl", "newmtl shiny\nKd 0.8 0.2 0.2\nKs 0.5 0.5 0.5\n");
     writeFile(dir + "/a.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl shiny\nf 1 2 3\n");
-    const auto run = test::runViewer("-i " + dir + "/a.obj --size 4 4 --spp 1 -o " + dir + "/o.png");
+    const auto run =
+        test::runViewer("-i " + dir + "/a.obj --size 4 4 --spp 1 -o " + dir + "/o.png");
     INFO(run.output);
     CHECK(run.exitStatus == 0);
-    CHECK(run.output.find("warning: " + dir + "/m.mtl:1: material 'shiny' is not energy "
+    CHECK(run.output.find("warning: " + dir +
+                          "/m.mtl:1: material 'shiny' is not energy "
                           "conserving: Kd+Ks+Kt = 1.3 in red") != std::string::npos);
 }

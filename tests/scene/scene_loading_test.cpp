@@ -57,12 +57,14 @@ TEST_CASE("the VI2 Cornell box loads with its camera, glass, mirror and area lig
 }
 
 TEST_CASE("PathLab's scenes load without notes or warnings", "[scene][solutions]") {
-    for (const char* scene : {"cornell_box_VI2_Specular.ecs", "cornell_box_diffuse.ecs",
-                              "furnace.ecs", "furnace_a08.ecs", "furnace_mirror.ecs",
-                              "furnace_glass.ecs", "refraction_check.ecs"}) {
+    for (const char* scene :
+         {"cornell_box_VI2_Specular.ecs", "cornell_box_diffuse.ecs", "furnace.ecs",
+          "furnace_a08.ecs", "furnace_mirror.ecs", "furnace_glass.ecs", "refraction_check.ecs"}) {
         const std::string image = test::temporaryFolder("quiet") + "/out.png";
-        const auto run = test::runViewer("-c " + modelPath(scene) + " --size 8 8 --spp 1 --lab "
-                                         "importance --solution -o " + image);
+        const auto run = test::runViewer("-c " + modelPath(scene) +
+                                         " --size 8 8 --spp 1 --lab "
+                                         "importance --solution -o " +
+                                         image);
         INFO(scene << ": " << run.output);
         CHECK(run.exitStatus == 0);
         CHECK(run.output.find("warning") == std::string::npos);
@@ -92,7 +94,7 @@ TEST_CASE("OBJ features: quads, negative indices, normals, Kt/Tf, Ni, Ke, defaul
     writeFile(dir + "/a.obj", "mtllib m.mtl\n"
                               "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\n"
                               "usemtl glass\nf 1//1 2//1 3//1 4//1\n" // a quad: two triangles
-                              "usemtl lamp\nf -4 -3 -2\n"              // negative indices
+                              "usemtl lamp\nf -4 -3 -2\n"             // negative indices
                               "usemtl filter\nf 1 3 4\n");
     writeFile(dir + "/b.obj", "v 0 0 1\nv 1 0 1\nv 0 1 1\nf 1 2 3\n"); // no material at all
     Scene scene;

@@ -8,7 +8,9 @@
 
 namespace pathlab::test {
 
-std::string modelPath(const std::string& name) { return std::string(PATHLAB_MODELS_DIR) + "/" + name; }
+std::string modelPath(const std::string& name) {
+    return std::string(PATHLAB_MODELS_DIR) + "/" + name;
+}
 
 std::string temporaryFolder(const std::string& name) {
     namespace fs = std::filesystem;

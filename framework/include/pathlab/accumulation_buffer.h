@@ -39,10 +39,10 @@ public:
     Color variance(int pixel) const;
     /// The figures of the whole image so far, from one pass over its pixels.
     struct Summary {
-        Color meanRadiance;    ///< per channel, over the pixels
-        Color meanVariance;    ///< the per-sample variance, per channel, averaged over the pixels
-        int nonfinitePixels;   ///< pixels with at least one NaN or infinite sample
-        double noise;          ///< imageNoise (pathlab/image_noise.h)
+        Color meanRadiance;  ///< per channel, over the pixels
+        Color meanVariance;  ///< the per-sample variance, per channel, averaged over the pixels
+        int nonfinitePixels; ///< pixels with at least one NaN or infinite sample
+        double noise;        ///< imageNoise (pathlab/image_noise.h)
     };
     Summary summary() const;
 

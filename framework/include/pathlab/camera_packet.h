@@ -14,12 +14,12 @@ namespace pathlab {
 struct CameraPacket {
     static constexpr int Size = 8; ///< Embree's 8-wide queries: AVX2, emulated where narrower
 
-    int count = 0;        ///< rays in use
+    int count = 0; ///< rays in use
     Ray rays[Size];
     // The hits, as RenderScene::intersect(rays[i]) reports them.
-    bool found[Size];     ///< the ray hit something
-    float distance[Size]; ///< ray parameter t of the hit
-    float u[Size], v[Size]; ///< barycentric coordinates of the hit
+    bool found[Size];        ///< the ray hit something
+    float distance[Size];    ///< ray parameter t of the hit
+    float u[Size], v[Size];  ///< barycentric coordinates of the hit
     uint32_t triangle[Size]; ///< index of the triangle hit
 
     /// Whether `ray` is, bit for bit, the camera ray in `lane`.

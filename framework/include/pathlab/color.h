@@ -15,15 +15,36 @@ struct Color {
     constexpr Color(float r, float g, float b) : r(r), g(g), b(b) {}
 
     constexpr float operator[](int i) const { return i == 0 ? r : (i == 1 ? g : b); }
-    constexpr Color& operator+=(const Color& c) { r += c.r; g += c.g; b += c.b; return *this; }
-    constexpr Color& operator*=(const Color& c) { r *= c.r; g *= c.g; b *= c.b; return *this; }
-    constexpr Color& operator*=(float s) { r *= s; g *= s; b *= s; return *this; }
+    constexpr Color& operator+=(const Color& c) {
+        r += c.r;
+        g += c.g;
+        b += c.b;
+        return *this;
+    }
+    constexpr Color& operator*=(const Color& c) {
+        r *= c.r;
+        g *= c.g;
+        b *= c.b;
+        return *this;
+    }
+    constexpr Color& operator*=(float s) {
+        r *= s;
+        g *= s;
+        b *= s;
+        return *this;
+    }
     constexpr Color& operator/=(float s) { return *this *= 1.0f / s; }
 };
 
-constexpr Color operator+(const Color& a, const Color& c) { return {a.r + c.r, a.g + c.g, a.b + c.b}; }
-constexpr Color operator-(const Color& a, const Color& c) { return {a.r - c.r, a.g - c.g, a.b - c.b}; }
-constexpr Color operator*(const Color& a, const Color& c) { return {a.r * c.r, a.g * c.g, a.b * c.b}; }
+constexpr Color operator+(const Color& a, const Color& c) {
+    return {a.r + c.r, a.g + c.g, a.b + c.b};
+}
+constexpr Color operator-(const Color& a, const Color& c) {
+    return {a.r - c.r, a.g - c.g, a.b - c.b};
+}
+constexpr Color operator*(const Color& a, const Color& c) {
+    return {a.r * c.r, a.g * c.g, a.b * c.b};
+}
 constexpr Color operator*(const Color& a, float s) { return {a.r * s, a.g * s, a.b * s}; }
 constexpr Color operator*(float s, const Color& a) { return a * s; }
 constexpr Color operator/(const Color& a, float s) { return a * (1.0f / s); }

@@ -26,8 +26,8 @@ inline void intersect1(RTCScene scene, RTCRayHit& rayHit, bool coherent = false)
 #else
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    context.flags = coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
-                             : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    context.flags =
+        coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
     rtcIntersect1(scene, &context, &rayHit);
 #endif
 }

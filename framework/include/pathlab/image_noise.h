@@ -9,7 +9,8 @@ namespace pathlab {
 
 /// The relative standard error of an image of `spp` samples per pixel:
 ///
-///     noise = sqrt( mean over pixels and channels of s² / spp ) / mean over pixels and channels of L̄
+///     noise = sqrt( mean over pixels and channels of s² / spp ) / mean over pixels and channels of
+///     L̄
 ///
 /// with s² a pixel's sample variance (per channel) and L̄ its mean. The numerator is the
 /// root-mean-square standard error of the pixel values: the RMS error of the image against its

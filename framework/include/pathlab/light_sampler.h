@@ -16,11 +16,11 @@ namespace pathlab {
 struct LightSource {
     enum class Type { Point, Triangle } type = Type::Point;
     uint32_t index = 0; ///< into Scene::pointLights, or the triangle index
-    Vec3 position;     ///< a point light's position
-    Color intensity;   ///< a point light's intensity
-    Vec3 a, b, c;      ///< a triangle's vertices, counter-clockwise
-    Vec3 areaNormal;   ///< a triangle's cross(b - a, c - a): twice its area, out of its front
-    Color Ke;          ///< a triangle's emitted radiance
+    Vec3 position;      ///< a point light's position
+    Color intensity;    ///< a point light's intensity
+    Vec3 a, b, c;       ///< a triangle's vertices, counter-clockwise
+    Vec3 areaNormal;    ///< a triangle's cross(b - a, c - a): twice its area, out of its front
+    Color Ke;           ///< a triangle's emitted radiance
 };
 
 /// Walker's alias method over the lights' powers: one table lookup and one comparison per pick.

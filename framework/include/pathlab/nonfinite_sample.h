@@ -17,7 +17,7 @@ struct NonfiniteSample {
     /// Closest-hit rays the sample traced, its camera ray included: how deep its path went
     /// (one ray per bounce for labs 2–4; lab 1 branches).
     uint64_t raysTraced = 0;
-    Color radiance;           ///< what pathTrace returned
+    Color radiance; ///< what pathTrace returned
 
     /// By sample index, then pixel: the "first" one is the same whatever order tiles ran in.
     bool before(const NonfiniteSample& other) const {

@@ -1,5 +1,6 @@
 #pragma once
-/// Line-by-line checks of .obj and .mtl files, so every malformed line is reported by file and line.
+/// Line-by-line checks of .obj and .mtl files, so every malformed line is reported by file and
+/// line.
 
 #include <string>
 #include <vector>

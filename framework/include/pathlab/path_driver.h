@@ -11,7 +11,8 @@
 // Lab files are compiled with PATHLAB_IMPL (student or solution): they see lab.h and nothing of
 // the renderer's side.
 #ifdef PATHLAB_IMPL
-#error "pathlab/path_driver.h is the renderer's side of PathContext: a lab includes pathlab/lab.h only"
+#error                                                                                             \
+    "pathlab/path_driver.h is the renderer's side of PathContext: a lab includes pathlab/lab.h only"
 #endif
 
 namespace pathlab {

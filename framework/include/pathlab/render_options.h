@@ -18,33 +18,34 @@ namespace pathlab {
 
 struct RenderOptions {
     // Scene
-    std::string sceneName;               ///< the .ecs or .obj named first, for reports
+    std::string sceneName;                 ///< the .ecs or .obj named first, for reports
     std::vector<std::string> sceneScripts; ///< -c files read, those they include as well
-    std::vector<std::string> objFiles;   ///< -i, resolved relative to the .ecs that named them
-    std::vector<PointLight> pointLights; ///< --pointlight
+    std::vector<std::string> objFiles;     ///< -i, resolved relative to the .ecs that named them
+    std::vector<PointLight> pointLights;   ///< --pointlight
     CameraSettings camera;
-    bool cameraSet = false;              ///< any of --vp/--vi/--vu/--fov was given
-    int width = 512, height = 512;       ///< --size
+    bool cameraSet = false;        ///< any of --vp/--vi/--vu/--fov was given
+    int width = 512, height = 512; ///< --size
 
     // Estimator
-    Lab lab = Lab::Branching;                        ///< --lab
+    Lab lab = Lab::Branching;                                ///< --lab
     Implementation implementation = Implementation::Student; ///< --solution
-    LabParameters parameters;                        ///< --max-depth, --continue-prob
-    uint64_t seed = 0;                               ///< --seed
-    int threads = 0;                                 ///< --threads; 0 = all cores
+    LabParameters parameters;                                ///< --max-depth, --continue-prob
+    uint64_t seed = 0;                                       ///< --seed
+    int threads = 0;                                         ///< --threads; 0 = all cores
 
     // Headless output
-    std::string outputImage;       ///< -o
-    int spp = 16;                  ///< --spp
-    std::string statsFile;         ///< --stats
-    int seedCount = 1;             ///< --seeds: that many images, for seeds seed, seed+1, ...
+    std::string outputImage; ///< -o
+    int spp = 16;            ///< --spp
+    std::string statsFile;   ///< --stats
+    int seedCount = 1;       ///< --seeds: that many images, for seeds seed, seed+1, ...
 
-    bool help = false;             ///< --help
+    bool help = false; ///< --help
 };
 
 /// Options a program reads beside these (the viewer's window options, apps/viewer): by name
 /// without dashes, what reads the option's values.
-using ExtraOptions = std::map<std::string, std::function<void(OptionReader& in, const Token& option)>>;
+using ExtraOptions =
+    std::map<std::string, std::function<void(OptionReader& in, const Token& option)>>;
 
 /// Parses the command line; -c files are read in place, as if their tokens had been typed there.
 /// Throws InputError naming the option (and file:line for .ecs files) on anything it cannot use.

@@ -45,10 +45,10 @@ private:
     /// What shading a hit needs of its triangle, copied out of the Scene's arrays so a hit reads
     /// one cache line instead of five scattered ones.
     struct alignas(64) TriangleRecord {
-        Vec3 a, b, c;            ///< vertex positions, counter-clockwise
-        Vec3 geometricNormal;    ///< normalize(cross(b - a, c - a)), computed once
-        uint32_t material;       ///< index into Scene::materials
-        uint32_t vertexNormals;  ///< index into vertexNormals_, or Flat when the OBJ gave none
+        Vec3 a, b, c;           ///< vertex positions, counter-clockwise
+        Vec3 geometricNormal;   ///< normalize(cross(b - a, c - a)), computed once
+        uint32_t material;      ///< index into Scene::materials
+        uint32_t vertexNormals; ///< index into vertexNormals_, or Flat when the OBJ gave none
     };
     static constexpr uint32_t Flat = ~0u;
 

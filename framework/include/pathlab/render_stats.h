@@ -21,13 +21,13 @@ struct RenderStats {
     int maxDepth = 0;
     float continueProb = 0;
     int threads = 0;
-    double seconds = 0;            ///< wall time of rendering alone (no loading, no writing)
+    double seconds = 0; ///< wall time of rendering alone (no loading, no writing)
     RayCounters rays;
     Color meanRadiance;
-    Color meanVariance;            ///< per-sample variance averaged over pixels, per channel
+    Color meanVariance; ///< per-sample variance averaged over pixels, per channel
     int nonfinitePixels = 0;
     std::optional<NonfiniteSample> firstNonfinite; ///< where the first of those samples was
-    double noise = 0;              ///< imageNoise of the image (pathlab/image_noise.h)
+    double noise = 0; ///< imageNoise of the image (pathlab/image_noise.h)
     /// Frames per second of the window at this size, one sample per pixel per frame: the panel's
     /// median when the window measured it, samples/s ÷ (width × height) for a headless render.
     double framesPerSecond = 0;
@@ -35,7 +35,7 @@ struct RenderStats {
 
     double samplesPerSecond() const;
     double raysPerSecond() const;
-    double efficiency() const;     ///< renderEfficiency(noise, seconds)
+    double efficiency() const; ///< renderEfficiency(noise, seconds)
     /// The efficiency for people: "2.44", or "undefined (no noise)" for a noiseless image.
     std::string efficiencyText() const;
     /// Empty when every sample was finite; otherwise one line for the student: how many pixels,

@@ -24,14 +24,14 @@ struct PointLight {
 /// All geometry merged into one indexed triangle mesh (one Embree geometry), so a hit's
 /// primitive index is the triangle index below.
 struct Scene {
-    std::vector<Vec3> positions;      ///< vertex positions
-    std::vector<Vec3> vertexNormals;  ///< per vertex; the zero vector where the OBJ gave none
+    std::vector<Vec3> positions;     ///< vertex positions
+    std::vector<Vec3> vertexNormals; ///< per vertex; the zero vector where the OBJ gave none
     std::vector<std::array<uint32_t, 3>> triangles; ///< vertex indices, counter-clockwise = front
     std::vector<uint32_t> triangleMaterials;        ///< index into `materials`, per triangle
     std::vector<Material> materials;
-    std::vector<std::string> materialNames;         ///< same order as `materials`
+    std::vector<std::string> materialNames; ///< same order as `materials`
     std::vector<PointLight> pointLights;
-    std::optional<CameraSettings> camera;           ///< from the scene script, if it set one
+    std::optional<CameraSettings> camera; ///< from the scene script, if it set one
 
     /// Adds a material and returns its index.
     uint32_t addMaterial(const std::string& name, const Material& material) {

@@ -1,5 +1,6 @@
 #pragma once
-/// Tokens of Embree's scene-script (.ecs) format and of the command line, with where they came from.
+/// Tokens of Embree's scene-script (.ecs) format and of the command line, with where they came
+/// from.
 
 #include <string>
 #include <vector>

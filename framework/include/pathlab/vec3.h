@@ -14,7 +14,12 @@ struct Vec3 {
 
     constexpr float operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
     constexpr Vec3 operator-() const { return {-x, -y, -z}; }
-    constexpr Vec3& operator+=(const Vec3& v) { x += v.x; y += v.y; z += v.z; return *this; }
+    constexpr Vec3& operator+=(const Vec3& v) {
+        x += v.x;
+        y += v.y;
+        z += v.z;
+        return *this;
+    }
 };
 
 /// Two uniform random numbers in [0,1)², as the sampler hands them out.

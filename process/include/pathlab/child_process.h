@@ -80,7 +80,7 @@ private:
 /// How long a child may run, and how much of what it writes is kept.
 struct RunLimits {
     double wallSeconds = std::numeric_limits<double>::infinity(); ///< killed after this
-    size_t outputBytes = std::numeric_limits<size_t>::max(); ///< the last bytes of its output
+    size_t outputBytes = std::numeric_limits<size_t>::max();      ///< the last bytes of its output
     size_t collectBytes = std::numeric_limits<size_t>::max(); ///< the first bytes on descriptor 3
 };
 

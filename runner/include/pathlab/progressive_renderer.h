@@ -37,15 +37,15 @@ struct ViewSettings {
 /// One finished frame: the accumulated image (never a partial pass) and what it cost.
 struct Frame {
     ViewSettings settings;
-    int number = 0;                  ///< frames finished since the last restart
-    std::vector<float> image;        ///< mean radiance, linear RGB, top row first
-    std::vector<float> otherImage;   ///< split view: the other implementation's image
-    int otherSpp = 0;                ///< split view: the other implementation's spp
-    double frameSeconds = 0;         ///< wall time of the last pass
+    int number = 0;                ///< frames finished since the last restart
+    std::vector<float> image;      ///< mean radiance, linear RGB, top row first
+    std::vector<float> otherImage; ///< split view: the other implementation's image
+    int otherSpp = 0;              ///< split view: the other implementation's spp
+    double frameSeconds = 0;       ///< wall time of the last pass
     /// The median wall time of the last 31 passes since the restart (FrameRate): the frame rate
     /// the panel and --print-frame-rate show, steady enough to write down.
     double medianFrameSeconds = 0;
-    double raysPerSecond = 0;        ///< of the last pass
+    double raysPerSecond = 0; ///< of the last pass
     /// `image` as --stats describes a render: its spp, the seconds and rays of all its passes
     /// since the restart, its noise (no scene name, no frame rate: the window knows those).
     RenderStats stats;
@@ -82,7 +82,7 @@ private:
     std::mutex mutex_;
     std::condition_variable wake_;
     ViewSettings settings_;
-    uint64_t generation_ = 1;        ///< bumped by every restart
+    uint64_t generation_ = 1; ///< bumped by every restart
     bool stopping_ = false;
     std::atomic<bool> cancel_{false};
     std::atomic<int> framesFinished_{0};

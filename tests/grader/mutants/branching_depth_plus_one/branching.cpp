@@ -1,6 +1,6 @@
 // Mutant 'branching_depth_plus_one': one bounce too many (depth > maxDepth)
 // A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
-// Lab 1: the branching path tracer (handouts/01-branching.md). 
+// Lab 1: the branching path tracer (handouts/01-branching.md).
 #include "pathlab/lab.h"
 
 namespace pathlab::branching {

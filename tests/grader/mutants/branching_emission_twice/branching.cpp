@@ -1,6 +1,6 @@
 // Mutant 'branching_emission_twice': adds emission after diffuse bounces too
 // A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
-// Lab 1: the branching path tracer (handouts/01-branching.md). 
+// Lab 1: the branching path tracer (handouts/01-branching.md).
 #include "pathlab/lab.h"
 
 namespace pathlab::branching {

@@ -1,5 +1,5 @@
-// Mutant 'branching_ignores_max_depth': a depth limit of its own (MAX_DEPTH 3) in place of ctx.maxDepth
-// A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
+// Mutant 'branching_ignores_max_depth': a depth limit of its own (MAX_DEPTH 3) in place of
+// ctx.maxDepth A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
 // Lab 1: the branching path tracer (handouts/01-branching.md).
 #include "pathlab/lab.h"
 

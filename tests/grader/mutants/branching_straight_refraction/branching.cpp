@@ -1,6 +1,6 @@
-// Mutant 'branching_straight_refraction': traces the transmitted ray straight on, without refraction
-// A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
-// Lab 1: the branching path tracer (handouts/01-branching.md). 
+// Mutant 'branching_straight_refraction': traces the transmitted ray straight on, without
+// refraction A plausible student bug; the grader must fail it (see tests/grader/mutants.json). Lab
+// 1: the branching path tracer (handouts/01-branching.md).
 #include "pathlab/lab.h"
 
 namespace pathlab::branching {
@@ -24,7 +24,10 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
     if (!isBlack(m.Kd))
         radiance += m.Kd * pathTrace(diffuseRay(hit, ctx.sampler.get2D()), depth + 1, ctx);
     if (!isBlack(m.Ks)) radiance += m.Ks * pathTrace(mirrorRay(ray, hit), depth + 1, ctx);
-    if (!isBlack(m.Kt)) radiance += m.Kt * pathTrace(Ray{hit.position + ray.direction * 0.01f, ray.direction, RayKind::Specular}, depth + 1, ctx);
+    if (!isBlack(m.Kt))
+        radiance += m.Kt * pathTrace(Ray{hit.position + ray.direction * 0.01f, ray.direction,
+                                         RayKind::Specular},
+                                     depth + 1, ctx);
     return radiance;
 }
 

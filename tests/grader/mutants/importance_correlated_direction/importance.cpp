@@ -31,8 +31,7 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
     const float u = ctx.sampler.get1D() * total;
     if (u < diffuse) {
         const float v = ctx.sampler.get1D();
-        radiance += m.Kd * pathTrace(diffuseRay(hit, {v, v}), depth + 1, ctx) *
-                    (total / diffuse);
+        radiance += m.Kd * pathTrace(diffuseRay(hit, {v, v}), depth + 1, ctx) * (total / diffuse);
     } else if (u < diffuse + mirror)
         radiance += m.Ks * pathTrace(mirrorRay(ray, hit), depth + 1, ctx) * (total / mirror);
     else

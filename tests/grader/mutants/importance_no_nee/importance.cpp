@@ -1,7 +1,7 @@
 // Mutant 'importance_no_nee': no next-event estimation; emission added on every ray instead
 // A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
 // Lab 3: importance selection of one component (handouts/03-importance-pick.md).
-// 
+//
 #include "pathlab/lab.h"
 
 namespace pathlab::importance {

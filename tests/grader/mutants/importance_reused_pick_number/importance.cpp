@@ -32,8 +32,7 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
     const Vec2 uv = ctx.sampler.get2D();
     const float u = uv.x * total;
     if (u < diffuse)
-        radiance += m.Kd * pathTrace(diffuseRay(hit, uv), depth + 1, ctx) *
-                    (total / diffuse);
+        radiance += m.Kd * pathTrace(diffuseRay(hit, uv), depth + 1, ctx) * (total / diffuse);
     else if (u < diffuse + mirror)
         radiance += m.Ks * pathTrace(mirrorRay(ray, hit), depth + 1, ctx) * (total / mirror);
     else

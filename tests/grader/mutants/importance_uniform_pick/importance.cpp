@@ -1,7 +1,7 @@
-// Mutant 'importance_uniform_pick': picks a component uniformly in the importance lab (right mean, more noise)
-// A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
-// Lab 3: importance selection of one component (handouts/03-importance-pick.md).
-// 
+// Mutant 'importance_uniform_pick': picks a component uniformly in the importance lab (right mean,
+// more noise) A plausible student bug; the grader must fail it (see tests/grader/mutants.json). Lab
+// 3: importance selection of one component (handouts/03-importance-pick.md).
+//
 #include "pathlab/lab.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
-// Mutant 'importance_wrong_probability': divides by 1/3 instead of the chosen component's probability
-// A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
-// Lab 3: importance selection of one component (handouts/03-importance-pick.md).
-// 
+// Mutant 'importance_wrong_probability': divides by 1/3 instead of the chosen component's
+// probability A plausible student bug; the grader must fail it (see tests/grader/mutants.json). Lab
+// 3: importance selection of one component (handouts/03-importance-pick.md).
+//
 #include "pathlab/lab.h"
 
 namespace pathlab::importance {
@@ -30,8 +30,7 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
     // Trace the chosen component and divide by its probability (TODO lab3.4).
     const float u = ctx.sampler.get1D() * total;
     if (u < diffuse)
-        radiance += m.Kd * pathTrace(diffuseRay(hit, ctx.sampler.get2D()), depth + 1, ctx) *
-                    3.0f;
+        radiance += m.Kd * pathTrace(diffuseRay(hit, ctx.sampler.get2D()), depth + 1, ctx) * 3.0f;
     else if (u < diffuse + mirror)
         radiance += m.Ks * pathTrace(mirrorRay(ray, hit), depth + 1, ctx) * 3.0f;
     else

@@ -1,6 +1,7 @@
-// Mutant 'roulette_ignores_continue_prob': a continue probability of its own (#define continueProb .1f) in place of ctx.continueProb, in the test and the weight alike: unbiased, but not the lab
-// A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
-// Lab 4: Russian roulette instead of a depth limit (handouts/04-russian-roulette.md).
+// Mutant 'roulette_ignores_continue_prob': a continue probability of its own (#define continueProb
+// .1f) in place of ctx.continueProb, in the test and the weight alike: unbiased, but not the lab A
+// plausible student bug; the grader must fail it (see tests/grader/mutants.json). Lab 4: Russian
+// roulette instead of a depth limit (handouts/04-russian-roulette.md).
 //
 #include "pathlab/lab.h"
 

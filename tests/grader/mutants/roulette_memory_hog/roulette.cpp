@@ -1,7 +1,7 @@
 // Mutant 'roulette_memory_hog': allocates without bound
 // A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
 // Lab 4: Russian roulette instead of a depth limit (handouts/04-russian-roulette.md).
-// 
+//
 #include "pathlab/lab.h"
 
 #include <vector>

@@ -1,7 +1,7 @@
 // Mutant 'roulette_no_weight': forgets the Russian-roulette weight 1/continueProb
 // A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
 // Lab 4: Russian roulette instead of a depth limit (handouts/04-russian-roulette.md).
-// 
+//
 #include "pathlab/lab.h"
 
 namespace pathlab::roulette {

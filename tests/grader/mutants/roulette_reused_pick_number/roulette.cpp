@@ -33,8 +33,7 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
     const float u = uv.x * total;
     Color traced;
     if (u < diffuse)
-        traced = m.Kd * pathTrace(diffuseRay(hit, uv), depth + 1, ctx) *
-                 (total / diffuse);
+        traced = m.Kd * pathTrace(diffuseRay(hit, uv), depth + 1, ctx) * (total / diffuse);
     else if (u < diffuse + mirror)
         traced = m.Ks * pathTrace(mirrorRay(ray, hit), depth + 1, ctx) * (total / mirror);
     else

@@ -1,6 +1,6 @@
 // Mutant 'uniform_branches': branches into every component in the uniform lab
 // A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
-// Lab 2: uniform selection of one component (handouts/02-uniform-pick.md). 
+// Lab 2: uniform selection of one component (handouts/02-uniform-pick.md).
 #include "pathlab/lab.h"
 
 #include <algorithm>
@@ -31,10 +31,8 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
     const Material& m = hit.material;
     if (!isBlack(m.Kd))
         radiance += m.Kd * pathTrace(diffuseRay(hit, ctx.sampler.get2D()), depth + 1, ctx);
-    if (!isBlack(m.Ks))
-        radiance += m.Ks * pathTrace(mirrorRay(ray, hit), depth + 1, ctx);
-    if (!isBlack(m.Kt))
-        radiance += m.Kt * pathTrace(refractionRay(ray, hit), depth + 1, ctx);
+    if (!isBlack(m.Ks)) radiance += m.Ks * pathTrace(mirrorRay(ray, hit), depth + 1, ctx);
+    if (!isBlack(m.Kt)) radiance += m.Kt * pathTrace(refractionRay(ray, hit), depth + 1, ctx);
     return radiance;
 }
 

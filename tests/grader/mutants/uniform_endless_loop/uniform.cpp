@@ -1,6 +1,6 @@
 // Mutant 'uniform_endless_loop': never returns
 // A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
-// Lab 2: uniform selection of one component (handouts/02-uniform-pick.md). 
+// Lab 2: uniform selection of one component (handouts/02-uniform-pick.md).
 #include "pathlab/lab.h"
 
 #include <algorithm>

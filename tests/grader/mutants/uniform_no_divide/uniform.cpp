@@ -1,6 +1,6 @@
 // Mutant 'uniform_no_divide': forgets to divide by the pick probability 1/3
 // A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
-// Lab 2: uniform selection of one component (handouts/02-uniform-pick.md). 
+// Lab 2: uniform selection of one component (handouts/02-uniform-pick.md).
 #include "pathlab/lab.h"
 
 #include <algorithm>

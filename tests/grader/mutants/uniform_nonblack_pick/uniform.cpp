@@ -1,6 +1,7 @@
-// Mutant 'uniform_nonblack_pick': picks uniformly among the non-black components only (1/k each): unbiased and less noisy, not lab 2's pick among all three
-// A plausible student bug; the grader must fail it (see tests/grader/mutants.json).
-// Lab 2: uniform selection of one component (handouts/02-uniform-pick.md).
+// Mutant 'uniform_nonblack_pick': picks uniformly among the non-black components only (1/k each):
+// unbiased and less noisy, not lab 2's pick among all three A plausible student bug; the grader
+// must fail it (see tests/grader/mutants.json). Lab 2: uniform selection of one component
+// (handouts/02-uniform-pick.md).
 #include "pathlab/lab.h"
 
 #include <algorithm>
