@@ -153,6 +153,18 @@ Image readPfm(const std::string& path) {
     return image;
 }
 
+/// Moves the temporary file written for `path` into place, or, when writing it failed (`why`),
+/// removes it and says why: a failed write never leaves a half-written image behind.
+void finishWrite(const std::string& temporary, const std::string& path, const std::string& why) {
+    if (why == "unsupported") throw InputError(path + ": OpenImageIO cannot write this format");
+    if (!why.empty()) {
+        std::error_code ignored;
+        fs::remove(temporary, ignored);
+        throw InputError(path + ": cannot write the image: " + why);
+    }
+    moveIntoPlace(temporary, path);
+}
+
 } // namespace
 
 float linearToSrgb(float linear) {
@@ -191,13 +203,7 @@ void writeImage(const std::string& path, int width, int height, const std::vecto
     } else {
         why = writeThroughPlugin(temporary, width, height, rgb.data(), false);
     }
-    if (why == "unsupported") throw InputError(path + ": OpenImageIO cannot write this format");
-    if (!why.empty()) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        throw InputError(path + ": cannot write the image: " + why);
-    }
-    moveIntoPlace(temporary, path);
+    finishWrite(temporary, path, why);
 }
 
 void writeDisplayImage(const std::string& path, int width, int height,
@@ -205,13 +211,7 @@ void writeDisplayImage(const std::string& path, int width, int height,
     checkImageOutputPath(path);
     const std::string temporary = temporaryNameFor(path);
     const std::string why = writeThroughPlugin(temporary, width, height, rgb8.data(), true);
-    if (why == "unsupported") throw InputError(path + ": OpenImageIO cannot write this format");
-    if (!why.empty()) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        throw InputError(path + ": cannot write the image: " + why);
-    }
-    moveIntoPlace(temporary, path);
+    finishWrite(temporary, path, why);
 }
 
 Image readImage(const std::string& path) {

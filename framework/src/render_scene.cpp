@@ -1,4 +1,5 @@
 #include "pathlab/render_scene.h"
+#include "pathlab/check.h"
 
 #include "pathlab/embree_rays.h"
 #include "pathlab/input_error.h"
@@ -137,6 +138,9 @@ Hit RenderScene::shade(const Ray& ray, uint32_t triangle, float distance, float 
     }
     hit.material = scene_.materials[t.material];
     if (hit.frontFace) hit.emitted = hit.material.Ke;
+    // hit.h promises unit normals facing the ray's side: diffuseRay and directLight rely on it.
+    PATHLAB_DCHECK(std::abs(dot(hit.normal, hit.normal) - 1.0f) < 1e-3f);
+    PATHLAB_DCHECK(dot(hit.geometricNormal, ray.direction) <= 0);
     return hit;
 }
 

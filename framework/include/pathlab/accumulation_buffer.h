@@ -1,6 +1,7 @@
 #pragma once
 /// Per-pixel running sums of radiance samples: the image so far and how noisy it is.
 
+#include "pathlab/check.h"
 #include "pathlab/color.h"
 
 #include <cstdint>
@@ -25,6 +26,7 @@ public:
     void finishPass(int spp) { samplesPerPixel_ += spp; }
 
     void addSample(int pixel, const Color& value) {
+        PATHLAB_DCHECK(pixel >= 0 && static_cast<size_t>(pixel) < sum_.size());
         if (!isFinite(value)) {
             nonfinite_[pixel] = 1;
             return;

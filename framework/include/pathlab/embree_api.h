@@ -12,42 +12,48 @@
 
 namespace pathlab::embree {
 
-/// Closest hit along rayHit.ray; fills rayHit.hit. `coherent` hints that neighbouring calls trace
-/// similar rays (camera rays of one tile).
-inline void intersect1(RTCScene scene, RTCRayHit& rayHit, bool coherent = false) {
+/// What a closest-hit query passes to Embree besides the rays: Embree 4's query arguments, or
+/// Embree 3's intersect context. `coherent` hints that neighbouring calls trace similar rays
+/// (camera rays of one tile).
+struct ClosestHitQuery {
 #if PATHLAB_EMBREE_VERSION >= 4
     RTCRayQueryContext context;
-    rtcInitRayQueryContext(&context);
     RTCIntersectArguments arguments;
-    rtcInitIntersectArguments(&arguments);
-    arguments.context = &context;
-    arguments.flags = coherent ? RTC_RAY_QUERY_FLAG_COHERENT : RTC_RAY_QUERY_FLAG_INCOHERENT;
-    rtcIntersect1(scene, &rayHit, &arguments);
+    explicit ClosestHitQuery(bool coherent) {
+        rtcInitRayQueryContext(&context);
+        rtcInitIntersectArguments(&arguments);
+        arguments.context = &context;
+        arguments.flags = coherent ? RTC_RAY_QUERY_FLAG_COHERENT : RTC_RAY_QUERY_FLAG_INCOHERENT;
+    }
+    ClosestHitQuery(const ClosestHitQuery&) = delete; // arguments points into itself
 #else
     RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags =
-        coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
-    rtcIntersect1(scene, &context, &rayHit);
+    explicit ClosestHitQuery(bool coherent) {
+        rtcInitIntersectContext(&context);
+        context.flags =
+            coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    }
+#endif
+};
+
+/// Closest hit along rayHit.ray; fills rayHit.hit.
+inline void intersect1(RTCScene scene, RTCRayHit& rayHit, bool coherent = false) {
+    ClosestHitQuery query(coherent);
+#if PATHLAB_EMBREE_VERSION >= 4
+    rtcIntersect1(scene, &rayHit, &query.arguments);
+#else
+    rtcIntersect1(scene, &query.context, &rayHit);
 #endif
 }
 
 /// Closest hits of the lanes of an 8-ray packet whose `valid` entry is -1 (rays that start
 /// together and point nearly the same way: camera rays).
 inline void intersect8(RTCScene scene, const int* valid, RTCRayHit8& rayHits) {
+    ClosestHitQuery query(true);
 #if PATHLAB_EMBREE_VERSION >= 4
-    RTCRayQueryContext context;
-    rtcInitRayQueryContext(&context);
-    RTCIntersectArguments arguments;
-    rtcInitIntersectArguments(&arguments);
-    arguments.context = &context;
-    arguments.flags = RTC_RAY_QUERY_FLAG_COHERENT;
-    rtcIntersect8(valid, scene, &rayHits, &arguments);
+    rtcIntersect8(valid, scene, &rayHits, &query.arguments);
 #else
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-    rtcIntersect8(valid, scene, &context, &rayHits);
+    rtcIntersect8(valid, scene, &query.context, &rayHits);
 #endif
 }
 
