@@ -4,7 +4,8 @@ AddressSanitizer and UndefinedBehaviorSanitizer.
 
 What it proves, in a build folder of its own beside the kit's:
   - the framework, the labs (the stubs and the solutions) and the viewer compile with clang and
-    libc++ with warnings as errors, and everything else (grader, tests) compiles and links;
+    libc++ with warnings as errors, and the grader, the benchmark and the tests below compile
+    and link (not the grader's mutant labs: copies of the solutions, half the build);
   - the build without the Linux-only parts (PATHLAB_SANDBOX=OFF: no bubblewrap sandbox, seccomp
     filter or batch grading), which is what macOS builds, and `grader batch` there says in one
     line that it needs Linux;
@@ -33,6 +34,8 @@ import sys
 import time
 
 SKIP = 77
+TARGETS = ["viewer", "viewer_solutions_as_student", "grader", "bench", "test_sampling",
+           "test_scene", "test_render", "test_estimators", "test_grader", "test_process"]
 
 
 def run(command, cwd, what, timings, env=None):
@@ -80,7 +83,11 @@ def main():
     # UBSan's reports with their stack, in every program below and those they start. ASan's
     # defaults stand: a report ends the program, and a leak is checked for at every exit.
     os.environ["UBSAN_OPTIONS"] = "print_stacktrace=1"
-    run(["cmake", "--build", args.build, "-j", str(args.jobs)], args.source, "build", timings)
+    # What the steps below run, and the benchmark, so that all of PathLab's own code is compiled
+    # with clang; not the grader's mutant labs and their viewers (copies of the solutions, each
+    # built four labs at a time: half the build, and no code of their own).
+    run(["cmake", "--build", args.build, "-j", str(args.jobs), "--target", *TARGETS], args.source,
+        "build", timings)
 
     # Built with libc++: the standard library a program uses shows in what it links.
     linked = subprocess.run(["ldd", os.path.join(args.build, "viewer")], capture_output=True,
