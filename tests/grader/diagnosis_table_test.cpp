@@ -38,10 +38,14 @@ void requireStepExists(LabStep step, Lab lab) {
     REQUIRE(number > 0);
     const std::string name =
         "lab" + std::to_string(static_cast<int>(lab) + 1) + "." + std::to_string(number);
+    CHECK(handoutOf(lab).find("### " + name + " ") != std::string::npos);
+    // labs/ holds the stubs as shipped in the kit (which has solutions/). In the student release
+    // it is the student's work, whose TODO markers go as the steps are written: there the
+    // handout alone names the step.
+    if (!fs::exists(Kit / "solutions")) return;
     const std::string labFile =
         readFile((Kit / "labs" / (std::string(labName(lab)) + ".cpp")).string());
     CHECK(labFile.find("TODO(" + name + ")") != std::string::npos);
-    CHECK(handoutOf(lab).find("### " + name + " ") != std::string::npos);
 }
 
 bool contains(const std::vector<std::string>& list, const std::string& item) {
