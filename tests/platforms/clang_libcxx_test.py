@@ -31,27 +31,12 @@ import re
 import shutil
 import subprocess
 import sys
-import time
+
+from timed_steps import TimedSteps
 
 SKIP = 77
 TARGETS = ["viewer", "viewer_solutions_as_student", "grader", "bench", "test_sampling",
            "test_scene", "test_render", "test_estimators", "test_grader", "test_process"]
-
-
-def run(command, cwd, what, timings, env=None):
-    print("$ " + " ".join(command), flush=True)
-    start = time.monotonic()
-    result = subprocess.run(command, cwd=cwd, env=env)
-    timings.append((what, time.monotonic() - start))
-    if result.returncode != 0:
-        print(f"clang + libc++: {what} failed (exit {result.returncode})", flush=True)
-        report(timings)
-        sys.exit(1)
-
-
-def report(timings):
-    for what, seconds in timings:
-        print(f"clang + libc++: {what}: {seconds:.0f} s")
 
 
 def libcxx_missing(compiler):
@@ -76,18 +61,18 @@ def main():
         return SKIP
 
     shutil.rmtree(args.build, ignore_errors=True)
-    timings = []
+    steps = TimedSteps("clang + libc++")
     # The preset in CMakePresets.json, which a maintainer uses by hand too, in our own folder.
-    run(["cmake", "--preset", "clang-libcxx-asan", "-B", args.build,
-         f"-DCMAKE_CXX_COMPILER={compiler}"], args.source, "configure", timings)
+    steps.run(["cmake", "--preset", "clang-libcxx-asan", "-B", args.build,
+               f"-DCMAKE_CXX_COMPILER={compiler}"], args.source, "configure")
     # UBSan's reports with their stack, in every program below and those they start. ASan's
     # defaults stand: a report ends the program, and a leak is checked for at every exit.
     os.environ["UBSAN_OPTIONS"] = "print_stacktrace=1"
     # What the steps below run, and the benchmark, so that all of PathLab's own code is compiled
     # with clang; not the grader's mutant labs and their viewers (copies of the solutions, each
     # built four labs at a time: half the build, and no code of their own).
-    run(["cmake", "--build", args.build, "-j", str(args.jobs), "--target", *TARGETS], args.source,
-        "build", timings)
+    steps.run(["cmake", "--build", args.build, "-j", str(args.jobs), "--target", *TARGETS],
+              args.source, "build")
 
     # Built with libc++: the standard library a program uses shows in what it links.
     linked = subprocess.run(["ldd", os.path.join(args.build, "viewer")], capture_output=True,
@@ -96,19 +81,18 @@ def main():
         print("clang + libc++: the viewer is not linked with libc++:\n" + linked)
         return 1
 
-    run(["ctest", "--output-on-failure", "-j", str(args.jobs),
-         "-R", r"^(sampling|scene|estimators(\.lab[1-4])?|grader)$"],
-        args.build, "tests", timings)
+    steps.run(["ctest", "--output-on-failure", "-j", str(args.jobs),
+               "-R", r"^(sampling|scene|estimators(\.lab[1-4])?|grader)$"], args.build, "tests")
     # The window without LeakSanitizer: Mesa's software OpenGL, unloaded before the check at
     # exit, leaves two blocks of its own that LSan can only call "<unknown module>", which no
     # suppression can name. Every other program here, the viewer headless included, is checked.
-    run(["ctest", "--output-on-failure", "-R", r"^viewer\.window$"], args.build, "window test",
-        timings, dict(os.environ, ASAN_OPTIONS="detect_leaks=0"))
+    steps.run(["ctest", "--output-on-failure", "-R", r"^viewer\.window$"], args.build,
+              "window test", dict(os.environ, ASAN_OPTIONS="detect_leaks=0"))
     # The render tests but the one that renders 4 labs to 1024 spp to see the noise figure halve:
     # its code is the other render tests', and sanitized it is most of this test's time. The
     # kit's own build runs it (ctest `render`).
-    run([os.path.join(args.build, "tests", "test_render"), "~*-> 1024 spp"], args.build,
-        "render tests", timings)
+    steps.run([os.path.join(args.build, "tests", "test_render"), "~*-> 1024 spp"], args.build,
+              "render tests")
 
     # A local grade of one lab, through the portable process runner, and batch grading's refusal.
     grader = os.path.join(args.build, "grader")
@@ -124,7 +108,7 @@ def main():
     if batch.returncode != 2 or "needs Linux and bubblewrap" not in batch.stderr:
         print("clang + libc++: `grader batch` without the sandbox should say it needs Linux")
         return 1
-    report(timings)
+    steps.report()
     return 0
 
 

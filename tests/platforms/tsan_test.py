@@ -26,7 +26,8 @@ import platform
 import shutil
 import subprocess
 import sys
-import time
+
+from timed_steps import TimedSteps
 
 SKIP = 77
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -37,22 +38,6 @@ int main() { std::mutex m; int n = 0;
   std::thread t([&] { std::lock_guard<std::mutex> l(m); ++n; });
   { std::lock_guard<std::mutex> l(m); ++n; } t.join(); return n == 2 ? 0 : 1; }
 """
-
-
-def run(command, cwd, what, timings, env=None):
-    print("$ " + " ".join(command), flush=True)
-    start = time.monotonic()
-    result = subprocess.run(command, cwd=cwd, env=env)
-    timings.append((what, time.monotonic() - start))
-    if result.returncode != 0:
-        print(f"TSan: {what} failed (exit {result.returncode})", flush=True)
-        report(timings)
-        sys.exit(1)
-
-
-def report(timings):
-    for what, seconds in timings:
-        print(f"TSan: {what}: {seconds:.0f} s")
 
 
 def tsan_launcher(compiler, folder):
@@ -107,21 +92,21 @@ def main():
         print("TSan: programs run under " + " ".join(launcher) +
               " (this kernel's address randomisation is more than clang 14's TSan allows)")
 
-    timings = []
-    run(["cmake", "--preset", "tsan", "-B", args.build, f"-DCMAKE_CXX_COMPILER={compiler}"],
-        args.source, "configure", timings)
-    run(["cmake", "--build", args.build, "-j", str(args.jobs), "--target", "viewer", "test_render"],
-        args.source, "build", timings)
+    steps = TimedSteps("TSan")
+    steps.run(["cmake", "--preset", "tsan", "-B", args.build, f"-DCMAKE_CXX_COMPILER={compiler}"],
+              args.source, "configure")
+    steps.run(["cmake", "--build", args.build, "-j", str(args.jobs), "--target", "viewer",
+               "test_render"], args.source, "build")
 
     # Every report, with both stacks, then exit 66 (TSan's exit code after a report).
     env = dict(os.environ, TSAN_OPTIONS=" ".join([
         "suppressions=" + os.path.join(HERE, "tsan.supp"), "second_deadlock_stack=1"]))
-    run(launcher + [os.path.join(args.build, "tests", "test_render"), "[rng],[stats]"], args.build,
-        "render tests", timings, env)
-    run(launcher + [sys.executable, os.path.join(args.source, "tests", "viewer", "window_test.py"),
-                    os.path.join(args.build, "viewer"), os.path.join(args.source, "models")],
-        args.build, "window test", timings, env)
-    report(timings)
+    steps.run(launcher + [os.path.join(args.build, "tests", "test_render"), "[rng],[stats]"],
+              args.build, "render tests", env)
+    steps.run(launcher + [sys.executable, os.path.join(args.source, "tests", "viewer", "window_test.py"),
+                          os.path.join(args.build, "viewer"), os.path.join(args.source, "models")],
+              args.build, "window test", env)
+    steps.report()
     return 0
 
 
