@@ -25,16 +25,14 @@ is `clang-libcxx` (kept for maintainers, without the sanitizers) plus PATHLAB_SA
 Exits 77 (skipped, with the reason on a line starting "skipped:") when clang++ or libc++ is
 not installed.
 """
-import argparse
 import os
 import re
 import shutil
 import subprocess
 import sys
 
-from timed_steps import TimedSteps
+from platform_support import SKIP, TimedSteps, build_arguments, clang_or_skip
 
-SKIP = 77
 TARGETS = ["viewer", "viewer_solutions_as_student", "grader", "bench", "test_sampling",
            "test_scene", "test_render", "test_estimators", "test_grader", "test_process"]
 
@@ -46,16 +44,8 @@ def libcxx_missing(compiler):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--source", required=True, help="the kit's source folder")
-    parser.add_argument("--build", required=True, help="the folder to build in (made fresh)")
-    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
-    args = parser.parse_args()
-
-    compiler = shutil.which("clang++")
-    if not compiler:
-        print("skipped: clang++ is not installed (apt install clang)")
-        return SKIP
+    args = build_arguments(__doc__.splitlines()[0])
+    compiler = clang_or_skip()
     if libcxx_missing(compiler):
         print("skipped: libc++ is not installed (apt install libc++-dev libc++abi-dev)")
         return SKIP

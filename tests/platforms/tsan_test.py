@@ -20,16 +20,14 @@ Mesa's memory (also uninstrumented), each entry saying why.
 Exits 77 (skipped, with the reason on a line starting "skipped:") when clang++, ThreadSanitizer's
 runtime, Xvfb, xdotool or oiiotool is missing.
 """
-import argparse
 import os
 import platform
 import shutil
 import subprocess
 import sys
 
-from timed_steps import TimedSteps
+from platform_support import SKIP, TimedSteps, build_arguments, clang_or_skip
 
-SKIP = 77
 HERE = os.path.dirname(os.path.abspath(__file__))
 # Two threads and a mutex: TSan's runtime starts, and reports no race.
 PROBE = """#include <mutex>
@@ -66,16 +64,8 @@ def tsan_launcher(compiler, folder):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--source", required=True, help="the kit's source folder")
-    parser.add_argument("--build", required=True, help="the folder to build in (made fresh)")
-    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
-    args = parser.parse_args()
-
-    compiler = shutil.which("clang++")
-    if not compiler:
-        print("skipped: clang++ is not installed (apt install clang)")
-        return SKIP
+    args = build_arguments(__doc__.splitlines()[0])
+    compiler = clang_or_skip()
     for tool, package in (("Xvfb", "xvfb"), ("xdotool", "xdotool"),
                           ("oiiotool", "openimageio-tools")):
         if not shutil.which(tool):
