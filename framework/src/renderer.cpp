@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -63,6 +65,25 @@ struct PendingSample {
     Sampler sampler;
 };
 
+/// The first exception any tile threw, to throw again once the tiles are done.
+class FirstFailure {
+public:
+    void keep(std::exception_ptr error) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        if (!error_) error_ = std::move(error);
+        happened_.store(true, std::memory_order_relaxed);
+    }
+    bool happened() const { return happened_.load(std::memory_order_relaxed); }
+    void rethrow() const {
+        if (error_) std::rethrow_exception(error_);
+    }
+
+private:
+    std::mutex mutex_;
+    std::exception_ptr error_;
+    std::atomic<bool> happened_{false};
+};
+
 } // namespace
 
 Renderer::Renderer(const RenderScene& scene, int threads)
@@ -85,68 +106,79 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
     std::atomic<uint64_t> intersect{0}, occluded{0};
     std::vector<RayLog> tileLogs(log ? static_cast<size_t>(tilesX) * tilesY : 0);
     FirstNonfiniteSample nonfinite;
+    FirstFailure failure;
     const char passStarts = 0, tilesFinished = 0; // their addresses name the hand-offs to TSan
+
+    const auto renderTile = [&](int tile) {
+        PathDriver driver(scene_, parameters);
+        if (log) driver.recordRaysInto(&tileLogs[static_cast<size_t>(tile)]);
+        const int x0 = (tile % tilesX) * TileSize, y0 = (tile / tilesX) * TileSize;
+        const int x1 = std::min(x0 + TileSize, width), y1 = std::min(y0 + TileSize, height);
+        // Camera rays go to Embree a packet at a time; each sample's pathTrace then finds its
+        // camera ray's hit waiting in the context. Samples keep their order within a pixel, so
+        // every pixel's sums add up exactly as one by one.
+        CameraPacket packet;
+        std::vector<PendingSample> pending;
+        pending.reserve(CameraPacket::Size);
+        const auto tracePending = [&] {
+            scene_.intersect(packet);
+            for (int i = 0; i < packet.count; ++i) {
+                const PendingSample& sample = pending[static_cast<size_t>(i)];
+                driver.restoreSampler(sample.sampler);
+                driver.primeCameraHit(&packet, i);
+                const uint64_t raysBefore = driver.rayCounters().intersect;
+                const Color radiance = pathTrace(packet.rays[i], 0, driver.context());
+                if (!isFinite(radiance))
+                    nonfinite.note({sample.pixel % width, sample.pixel / width, sample.sampleIndex,
+                                    driver.rayCounters().intersect - raysBefore, radiance});
+                buffer.addSample(sample.pixel, radiance);
+            }
+            packet.count = 0;
+            pending.clear();
+        };
+        for (int y = y0; y < y1; ++y) {
+            for (int x = x0; x < x1; ++x) {
+                const int pixel = y * width + x;
+                for (int s = 0; s < spp; ++s) {
+                    const uint64_t sampleIndex = firstSample + static_cast<uint64_t>(s);
+                    driver.startSample(seed, static_cast<uint64_t>(pixel), sampleIndex);
+                    const Vec2 jitter = driver.context().sampler.get2D();
+                    packet.rays[packet.count] = camera.generateRay(
+                        static_cast<float>(x) + jitter.x, static_cast<float>(y) + jitter.y);
+                    pending.push_back({pixel, sampleIndex, driver.savedSampler()});
+                    if (++packet.count == CameraPacket::Size) tracePending();
+                }
+            }
+        }
+        if (packet.count > 0) tracePending();
+        // Counted per tile in the context, summed here once: nothing shared per ray.
+        intersect.fetch_add(driver.rayCounters().intersect, std::memory_order_relaxed);
+        occluded.fetch_add(driver.rayCounters().occluded, std::memory_order_relaxed);
+    };
 
     releaseTo(&passStarts);
     arena_->arena.execute([&] {
-        tbb::parallel_for(
-            tbb::blocked_range<int>(0, tilesX * tilesY, 1),
-            [&](const tbb::blocked_range<int>& tiles) {
-                acquireFrom(&passStarts);
-                for (int tile = tiles.begin(); tile != tiles.end(); ++tile) {
-                    if (cancel && cancel->load(std::memory_order_relaxed)) break;
-                    PathDriver driver(scene_, parameters);
-                    if (log) driver.recordRaysInto(&tileLogs[static_cast<size_t>(tile)]);
-                    const int x0 = (tile % tilesX) * TileSize, y0 = (tile / tilesX) * TileSize;
-                    const int x1 = std::min(x0 + TileSize, width),
-                              y1 = std::min(y0 + TileSize, height);
-                    // Camera rays go to Embree a packet at a time; each sample's pathTrace then
-                    // finds its camera ray's hit waiting in the context. Samples keep their order
-                    // within a pixel, so every pixel's sums add up exactly as one by one.
-                    CameraPacket packet;
-                    std::vector<PendingSample> pending;
-                    pending.reserve(CameraPacket::Size);
-                    const auto tracePending = [&] {
-                        scene_.intersect(packet);
-                        for (int i = 0; i < packet.count; ++i) {
-                            const PendingSample& sample = pending[static_cast<size_t>(i)];
-                            driver.restoreSampler(sample.sampler);
-                            driver.primeCameraHit(&packet, i);
-                            const uint64_t raysBefore = driver.rayCounters().intersect;
-                            const Color radiance = pathTrace(packet.rays[i], 0, driver.context());
-                            if (!isFinite(radiance))
-                                nonfinite.note(
-                                    {sample.pixel % width, sample.pixel / width, sample.sampleIndex,
-                                     driver.rayCounters().intersect - raysBefore, radiance});
-                            buffer.addSample(sample.pixel, radiance);
-                        }
-                        packet.count = 0;
-                        pending.clear();
-                    };
-                    for (int y = y0; y < y1; ++y) {
-                        for (int x = x0; x < x1; ++x) {
-                            const int pixel = y * width + x;
-                            for (int s = 0; s < spp; ++s) {
-                                const uint64_t sampleIndex = firstSample + static_cast<uint64_t>(s);
-                                driver.startSample(seed, static_cast<uint64_t>(pixel), sampleIndex);
-                                const Vec2 jitter = driver.context().sampler.get2D();
-                                packet.rays[packet.count] =
-                                    camera.generateRay(static_cast<float>(x) + jitter.x,
-                                                       static_cast<float>(y) + jitter.y);
-                                pending.push_back({pixel, sampleIndex, driver.savedSampler()});
-                                if (++packet.count == CameraPacket::Size) tracePending();
-                            }
-                        }
-                    }
-                    if (packet.count > 0) tracePending();
-                    // Counted per tile in the context, summed here once: nothing shared per ray.
-                    intersect.fetch_add(driver.rayCounters().intersect, std::memory_order_relaxed);
-                    occluded.fetch_add(driver.rayCounters().occluded, std::memory_order_relaxed);
-                }
-                releaseTo(&tilesFinished);
-            });
+        tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY, 1),
+                          [&](const tbb::blocked_range<int>& tiles) {
+                              acquireFrom(&passStarts);
+                              for (int tile = tiles.begin(); tile != tiles.end(); ++tile) {
+                                  if (cancel && cancel->load(std::memory_order_relaxed)) break;
+                                  if (failure.happened()) break;
+                                  // A lab's exception (a broken check) is kept and thrown again
+                                  // after the loop, in this thread's own C++ runtime: carried
+                                  // through TBB's, which may be another (the clang + libc++
+                                  // build), it would arrive as an unknown object.
+                                  try {
+                                      renderTile(tile);
+                                  } catch (...) {
+                                      failure.keep(std::current_exception());
+                                  }
+                              }
+                              releaseTo(&tilesFinished);
+                          });
     });
     acquireFrom(&tilesFinished);
+    failure.rethrow();
     counters_ += RayCounters{intersect.load(), occluded.load()};
     if (nonfinite.first() && (!firstNonfinite_ || nonfinite.first()->before(*firstNonfinite_)))
         firstNonfinite_ = nonfinite.first();
