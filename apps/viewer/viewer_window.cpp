@@ -83,14 +83,12 @@ RenderStats frameStats(const Frame& frame, const RenderOptions& options) {
 
 /// The keys, the labs' from the list of labs.
 std::string helpText() {
-    std::string labs;
-    for (Lab lab : AllLabs) labs += (labs.empty() ? "" : ", ") + std::string(labName(lab));
     return "h        this help\n"
            "f        fullscreen on/off\n"
            "drag     orbit the camera\n"
            "WASD     move (arrow keys too)\n"
            "1-" +
-           std::to_string(AllLabs.size()) + "      lab: " + labs +
+           std::to_string(AllLabs.size()) + "      lab: " + labNames(", ") +
            "\n"
            "Tab      your code <-> reference solution\n"
            "+ / -    continueProb up / down (lab 4)\n"

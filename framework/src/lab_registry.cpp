@@ -18,6 +18,15 @@ std::optional<Lab> labFromName(std::string_view name) {
     return std::nullopt;
 }
 
+std::string labNames(std::string_view separator) {
+    std::string names;
+    for (Lab lab : AllLabs) {
+        if (!names.empty()) names += separator;
+        names += labName(lab);
+    }
+    return names;
+}
+
 std::string_view implementationName(Implementation impl) {
     return impl == Implementation::Student ? "student" : "solution";
 }

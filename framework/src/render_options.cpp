@@ -19,13 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The labs' names, in order, between `separator`s.
-std::string labNames(const char* separator) {
-    std::string names;
-    for (Lab lab : AllLabs) names += (names.empty() ? "" : separator) + std::string(labName(lab));
-    return names;
-}
-
 /// "--max-depth", "-max-depth" -> "max-depth": Embree's scene scripts use one dash, GNU style two.
 std::string optionName(const std::string& text) {
     if (text.size() >= 2 && text[0] == '-' && text[1] == '-') return text.substr(2);

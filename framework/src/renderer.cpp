@@ -128,10 +128,9 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
                 driver.primeCameraHit(&packet, i);
                 const uint64_t raysBefore = driver.rayCounters().intersect;
                 const Color radiance = pathTrace(packet.rays[i], 0, driver.context());
-                if (!isFinite(radiance))
+                if (!buffer.addSample(sample.pixel, radiance))
                     nonfinite.note({sample.pixel % width, sample.pixel / width, sample.sampleIndex,
                                     driver.rayCounters().intersect - raysBefore, radiance});
-                buffer.addSample(sample.pixel, radiance);
             }
             packet.count = 0;
             pending.clear();

@@ -25,14 +25,17 @@ public:
     /// Called by the renderer when a pass has given every pixel `spp` more samples.
     void finishPass(int spp) { samplesPerPixel_ += spp; }
 
-    void addSample(int pixel, const Color& value) {
+    /// Adds one sample to `pixel`; a NaN or infinite one is left out and the pixel marked.
+    /// Returns whether the sample was finite.
+    bool addSample(int pixel, const Color& value) {
         PATHLAB_DCHECK(pixel >= 0 && static_cast<size_t>(pixel) < sum_.size());
         if (!isFinite(value)) {
             nonfinite_[pixel] = 1;
-            return;
+            return false;
         }
         sum_[pixel] += value;
         sumSquares_[pixel] += value * value;
+        return true;
     }
 
     /// The pixel's estimate: the mean of its samples.

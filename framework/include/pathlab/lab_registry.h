@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace pathlab {
@@ -38,6 +39,8 @@ enum class Implementation { Student, Solution };
 /// "branching", "uniform", "importance", "roulette": the lab's file, namespace and --lab name.
 std::string_view labName(Lab lab);
 std::optional<Lab> labFromName(std::string_view name);
+/// Every lab's name, in order, between `separator`s: "branching, uniform, ...".
+std::string labNames(std::string_view separator);
 /// "student" or "solution".
 std::string_view implementationName(Implementation impl);
 
