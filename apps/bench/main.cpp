@@ -8,8 +8,10 @@
 #include "scene_measurement.h"
 
 #include "pathlab/input_error.h"
+#include "pathlab/program_main.h"
 #include "pathlab/render_stats.h"
 #include "pathlab/this_process.h"
+#include "pathlab/whole_file.h"
 
 #include <cstdio>
 #include <exception>
@@ -73,18 +75,12 @@ int runBench(BenchOptions options) {
 } // namespace
 
 int main(int argc, char** argv) {
-    try {
+    return runMain("bench", [&] {
         const BenchOptions options = parseBenchOptions(argc, argv);
         if (options.help) {
             std::fputs(benchOptionsHelp(), stdout);
             return 0;
         }
         return runBench(options);
-    } catch (const InputError& error) {
-        std::fprintf(stderr, "bench: %s\n", error.what());
-        return 2;
-    } catch (const std::exception& error) {
-        std::fprintf(stderr, "bench: error: %s\n", error.what());
-        return 1;
-    }
+    });
 }

@@ -3,6 +3,7 @@
 #include "pathlab/headless_render.h"
 #include "pathlab/image_io.h"
 #include "pathlab/input_error.h"
+#include "pathlab/program_main.h"
 #include "pathlab/render_options.h"
 #include "pathlab/render_scene.h"
 #include "viewer_window.h"
@@ -67,7 +68,7 @@ int renderToFile(const RenderOptions& options) {
 } // namespace
 
 int main(int argc, char** argv) {
-    try {
+    return runMain("viewer", [&] {
         WindowOptions window;
         const RenderOptions options =
             parseRenderOptions(argc, argv, viewer::windowOptionReaders(window));
@@ -83,11 +84,5 @@ int main(int argc, char** argv) {
         checkOutputs(options, window);
         if (!options.outputImage.empty()) return renderToFile(options);
         return runViewerWindow(options, window);
-    } catch (const InputError& error) {
-        std::fprintf(stderr, "viewer: %s\n", error.what());
-        return 2;
-    } catch (const std::exception& error) {
-        std::fprintf(stderr, "viewer: error: %s\n", error.what());
-        return 1;
-    }
+    });
 }

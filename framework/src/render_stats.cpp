@@ -2,7 +2,7 @@
 
 #include "pathlab/image_noise.h"
 #include "pathlab/input_error.h"
-#include "pathlab/this_process.h"
+#include "pathlab/whole_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -78,29 +78,6 @@ void setHeadlessFrameRate(RenderStats& stats) {
     stats.framesPerSecond = pixels > 0 ? stats.samplesPerSecond() / pixels : 0;
     stats.framesPerSecondSource = "samples_per_second / (width x height): headless, as the "
                                   "window at this size with 1 spp per frame";
-}
-
-void writeFileAtomically(const std::string& path, const std::string& text) {
-    namespace fs = std::filesystem;
-    const fs::path target(path);
-    const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".tmp" +
-                                                       std::to_string(processId()));
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out << text;
-        out.close();
-        if (!out) {
-            std::error_code ignored;
-            fs::remove(temporary, ignored);
-            throw InputError(path + ": cannot write the file");
-        }
-    }
-    std::error_code error;
-    fs::rename(temporary, target, error);
-    if (error) {
-        fs::remove(temporary, error);
-        throw InputError(path + ": cannot move the finished file into place");
-    }
 }
 
 void writeRenderStats(const std::string& path, const RenderStats& s) {

@@ -23,6 +23,7 @@
 #include "pathlab/input_error.h"
 #include "pathlab/render_stats.h"
 #include "pathlab/this_process.h"
+#include "pathlab/whole_file.h"
 
 #include <algorithm>
 #include <chrono>

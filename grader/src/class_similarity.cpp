@@ -1,6 +1,6 @@
 #include "class_similarity.h"
 
-#include "read_file.h"
+#include "pathlab/whole_file.h"
 #include "similarity.h"
 
 #include "pathlab/lab_registry.h"

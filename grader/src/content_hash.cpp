@@ -1,6 +1,6 @@
 #include "content_hash.h"
 
-#include "read_file.h"
+#include "pathlab/whole_file.h"
 
 #include <cstdio>
 

@@ -8,6 +8,7 @@
 #include "pathlab/image_io.h"
 #include "pathlab/input_error.h"
 #include "pathlab/render_stats.h"
+#include "pathlab/whole_file.h"
 
 #include <nlohmann/json.hpp>
 

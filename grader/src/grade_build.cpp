@@ -10,6 +10,7 @@
 
 #include "pathlab/input_error.h"
 #include "pathlab/render_stats.h"
+#include "pathlab/whole_file.h"
 
 #include <algorithm>
 #include <chrono>

@@ -8,6 +8,7 @@
 
 #include "pathlab/lab_registry.h"
 #include "pathlab/render_stats.h"
+#include "pathlab/whole_file.h"
 
 #include <algorithm>
 #include <cmath>

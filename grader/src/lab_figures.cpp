@@ -2,6 +2,7 @@
 
 #include "pathlab/input_error.h"
 #include "pathlab/render_stats.h"
+#include "pathlab/whole_file.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,6 +1,6 @@
 #include "lab_library.h"
 
-#include "read_file.h"
+#include "pathlab/whole_file.h"
 
 #include "pathlab/input_error.h"
 

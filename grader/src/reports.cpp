@@ -1,7 +1,7 @@
 #include "reports.h"
 
 #include "page_style.h"
-#include "read_file.h"
+#include "pathlab/whole_file.h"
 
 #include "pathlab/false_colour.h"
 #include "pathlab/image_io.h"

@@ -3,6 +3,7 @@
 #include "content_hash.h"
 
 #include "pathlab/render_stats.h"
+#include "pathlab/whole_file.h"
 
 #include <nlohmann/json.hpp>
 

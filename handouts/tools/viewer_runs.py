@@ -3,7 +3,11 @@ import json
 import os
 import re
 import subprocess
+import sys
 import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+from virtual_display import start_xvfb  # noqa: E402,F401  (make_figures imports it from here)
 
 
 class Viewer:
@@ -47,22 +51,6 @@ class Viewer:
             if stats["seconds"] >= at_least_seconds or spp >= 4096:
                 return stats["samples_per_second"]
             spp *= 2
-
-
-def start_xvfb():
-    """An X server on a free display number (which Xvfb reports on a pipe)."""
-    read, write = os.pipe()
-    server = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", "1024x768x24",
-                               "-nolisten", "tcp"], pass_fds=[write], stderr=subprocess.DEVNULL)
-    os.close(write)
-    number = b""
-    while not number.endswith(b"\n"):
-        chunk = os.read(read, 16)
-        if not chunk:
-            raise RuntimeError("Xvfb did not start")
-        number += chunk
-    os.close(read)
-    return server, ":" + number.decode().strip()
 
 
 FRAME_LINE = re.compile(r"frame (\d+): median ([\d.]+) fps .* (\d+) spp, .* noise ([\d.]+), "

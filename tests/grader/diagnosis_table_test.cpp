@@ -5,7 +5,7 @@
 
 #include "diagnosis.h"
 #include "diagnosis_table.h"
-#include "read_file.h"
+#include "pathlab/whole_file.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -1,6 +1,7 @@
 // The diagnosis shared by the grader and the lab tests, against the furnace series worked by hand
 // and the values known bugs give.
 #include "catch.h"
+#include "messages.h"
 
 #include "diagnosis.h"
 
@@ -18,10 +19,6 @@ const FurnaceModel mirror{FurnaceWalls::Mirror, 0.5, 3, 0.8};
 std::string likeliest(Lab lab, const std::vector<FurnaceObservation>& observations) {
     const std::vector<std::string> causes = likelyFurnaceCauses(lab, observations);
     return causes.empty() ? "" : causes.front();
-}
-
-bool contains(const std::string& text, const std::string& words) {
-    return text.find(words) != std::string::npos;
 }
 
 } // namespace

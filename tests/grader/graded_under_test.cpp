@@ -1,6 +1,7 @@
 // What a grade was made under, and what tells that it no longer fits: the scene files' hash, the
 // rubric's, a stored reference's staleness, the submission times and the gradebook's maxima.
 #include "catch.h"
+#include "messages.h"
 
 #include "content_hash.h"
 #include "expectation.h"
@@ -65,12 +66,7 @@ SceneReference flatReference(const std::string& ecs, const Rubric& rubric) {
 }
 
 std::string staleWhy(const std::string& folder, const std::string& ecs, const Rubric& rubric) {
-    try {
-        loadReference(folder, ecs, rubric);
-    } catch (const StaleReference& e) {
-        return e.what();
-    }
-    return "";
+    return messageOf<StaleReference>([&] { loadReference(folder, ecs, rubric); });
 }
 
 } // namespace

@@ -30,7 +30,7 @@ import tempfile
 import time
 import zlib
 
-from support import arguments, check, exit_code, grader
+from support import LABS, arguments, check, exit_code, grader
 
 SKIPPED = 77  # the test's SKIP_RETURN_CODE (tests/CMakeLists.txt)
 WINDOW = (1200, 2000)  # CSS pixels: the furnace's row of the feedback page lies inside
@@ -229,7 +229,7 @@ def result_json(identifier, score, diagnoses=()):
     """A result.json as `grader batch` writes one, with only what the gradebook reads."""
     return {"id": identifier, "status": "graded", "score": score, "max_score": 32,
             "labs": {lab: {"score": score / 4, "max_score": 8}
-                     for lab in ("branching", "uniform", "importance", "roulette")},
+                     for lab in LABS},
             "diagnoses": [{"lab": lab, "check": "correctness", "diagnosis": d}
                           for lab, d in diagnoses],
             "graded_under": GRADED_UNDER}

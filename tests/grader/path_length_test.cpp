@@ -1,18 +1,11 @@
 // Russian roulette's path lengths in a diffuse furnace: q/(1-q) bounce rays per sample, and the
 // verdicts on labs whose paths do not follow ctx.continueProb.
 #include "catch.h"
+#include "messages.h"
 
 #include "path_length.h"
 
 using namespace pathlab::grader;
-
-namespace {
-
-bool contains(const std::string& text, const std::string& words) {
-    return text.find(words) != std::string::npos;
-}
-
-} // namespace
 
 TEST_CASE("roulette traces q/(1-q) bounce rays per sample in a closed furnace", "[grader]") {
     // P(k bounces) = q^k (1 - q): the mean of a geometric count.

@@ -1,19 +1,12 @@
 // A lab's rays per sample against the reference's, and the step of the lab's specification a
 // difference points to.
 #include "catch.h"
+#include "messages.h"
 
 #include "rays_per_sample.h"
 
 using namespace pathlab;
 using namespace pathlab::grader;
-
-namespace {
-
-bool contains(const std::string& text, const std::string& words) {
-    return text.find(words) != std::string::npos;
-}
-
-} // namespace
 
 TEST_CASE("rays per sample from the framework's counts", "[grader]") {
     const RaysPerSample rays = raysPerSample(RayCounters{3000, 1500}, 1000);

@@ -1,6 +1,7 @@
 // The rubric's speed measure per lab and its parameter check: read as written, defaults where a
 // rubric from before them is silent, and a clear error for a nonsensical value.
 #include "catch.h"
+#include "messages.h"
 
 #include "rubric.h"
 
@@ -36,17 +37,8 @@ Rubric load(const nlohmann::json& rubric) {
     return loadRubric(path);
 }
 
-bool contains(const std::string& text, const std::string& words) {
-    return text.find(words) != std::string::npos;
-}
-
 std::string errorOf(const nlohmann::json& rubric) {
-    try {
-        load(rubric);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return messageOf<InputError>([&] { load(rubric); });
 }
 
 } // namespace

@@ -4,9 +4,9 @@ import argparse
 import os
 import sys
 
-LABS = ("branching", "uniform", "importance", "roulette")
-
-failures = []
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+# The tests import these from here.
+from checks import LABS, check, exit_code, failures, finish  # noqa: E402,F401
 
 
 def arguments(*options, source=True):
@@ -29,25 +29,6 @@ def arguments(*options, source=True):
 def grader(args):
     """The grader executable of the build under test."""
     return os.path.join(args.build, "grader")
-
-
-def check(condition, what):
-    """Says PASS or FAIL with `what`; a failure makes the test fail at the end (exit_code)."""
-    print(("PASS " if condition else "FAIL ") + what, flush=True)
-    if not condition:
-        failures.append(what)
-
-
-def exit_code():
-    """1 if a check failed (after saying how many), else 0."""
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        return 1
-    return 0
-
-
-def finish():
-    sys.exit(exit_code())
 
 
 def write(path, text):

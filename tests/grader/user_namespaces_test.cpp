@@ -3,6 +3,7 @@
 #include "user_namespaces.h"
 
 #include "catch.h"
+#include "messages.h"
 #include "test_support.h"
 
 #include <filesystem>
@@ -18,10 +19,6 @@ std::string procSysWith(const std::string& name, const std::string& value) {
     fs::create_directories((folder / name).parent_path());
     std::ofstream(folder / name) << value << "\n";
     return folder.string();
-}
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
 }
 
 } // namespace

@@ -29,7 +29,6 @@ seeds, 2 timed runs and a lenient speed threshold, written over grader/rubric.js
 unpacked autograder as an instructor would edit it: this test checks how the autograder is put
 together, not the grader's statistics or this machine's timings.
 """
-import argparse
 import json
 import math
 import os
@@ -41,14 +40,12 @@ import tempfile
 import time
 import zipfile
 
-parser = argparse.ArgumentParser()
-parser.add_argument("--source", required=True, help="the instructor's kit")
-parser.add_argument("--keep", action="store_true", help="keep the scratch folder")
-args = parser.parse_args()
-KIT = os.path.abspath(args.source)
-LABS = ("branching", "uniform", "importance", "roulette")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from checks import LABS, check, exit_code, failures, package_test_arguments  # noqa: E402
+
+args = package_test_arguments()
+KIT = args.source
 CHECKS = ("correctness", "noise", "speed")
-failures = []
 
 # Gradescope's results.json (gradescope-autograders.readthedocs.io, "Autograder Specifications").
 RESULT_KEYS = {"score", "execution_time", "output", "output_format", "test_output_format",
@@ -58,11 +55,6 @@ TEST_KEYS = {"score", "max_score", "status", "name", "name_format", "number", "o
              "output_format", "tags", "visibility", "extra_data"}
 VISIBILITIES = {"hidden", "after_due_date", "after_published", "visible"}
 
-
-def check(condition, what):
-    print(("PASS " if condition else "FAIL ") + what, flush=True)
-    if not condition:
-        failures.append(what)
 
 
 def tail(text, lines=30):
@@ -332,8 +324,7 @@ def main():
         else:
             shutil.rmtree(scratch, ignore_errors=True)
     print(f"gradescope test: {json.dumps(summary)}")
-    print(f"gradescope test: {len(failures)} failure(s) in {time.monotonic() - start:.0f} s")
-    return 1 if failures else 0
+    return exit_code("gradescope test: ", time.monotonic() - start)
 
 
 if __name__ == "__main__":

@@ -32,13 +32,10 @@ import subprocess
 import sys
 import tempfile
 
-failures = []
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from checks import check, exit_code  # noqa: E402
 
 
-def check(condition, what):
-    print(("PASS " if condition else "FAIL ") + what, flush=True)
-    if not condition:
-        failures.append(what)
 
 
 FENCE = re.compile(r"^```(\w*)\n(.*?)^```", re.M | re.S)
@@ -338,8 +335,7 @@ def main():
         check_commands(source, build, handouts + [readme], scratch)
     check_todos(source, handouts)
     check_rubric_numbers(source, readme)
-    print(f"{len(failures)} failed" if failures else "all passed")
-    return 1 if failures else 0
+    return exit_code()
 
 
 if __name__ == "__main__":

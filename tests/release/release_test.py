@@ -30,7 +30,6 @@ Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
    report` writes lab-report.md with every figure filled in.
 5. The targets that need the solutions say so in one line and exit non-zero (`make bench`).
 """
-import argparse
 import glob
 import os
 import re
@@ -41,20 +40,13 @@ import tarfile
 import tempfile
 import time
 
-parser = argparse.ArgumentParser()
-parser.add_argument("--source", required=True, help="the instructor's kit")
-parser.add_argument("--keep", action="store_true", help="keep the scratch folder")
-args = parser.parse_args()
-KIT = os.path.abspath(args.source)
-LABS = ("branching", "uniform", "importance", "roulette")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from checks import LABS, check, exit_code, failures, package_test_arguments  # noqa: E402
+
+args = package_test_arguments()
+KIT = args.source
 SHORTEST_FINGERPRINT = 26  # characters, whitespace normalised
-failures = []
 
-
-def check(condition, what):
-    print(("PASS " if condition else "FAIL ") + what, flush=True)
-    if not condition:
-        failures.append(what)
 
 
 def normalised(text):
@@ -349,8 +341,7 @@ def main():
             print(f"kept {scratch}")
         else:
             shutil.rmtree(scratch, ignore_errors=True)
-    print(f"release test: {len(failures)} failure(s) in {time.monotonic() - start:.0f} s")
-    return 1 if failures else 0
+    return exit_code("release test: ", time.monotonic() - start)
 
 
 if __name__ == "__main__":

@@ -2,26 +2,20 @@
 // format's definition (header "PF\nW H\nscale\n", 32-bit floats, rows bottom-up, the scale's sign
 // giving the byte order), and broken files refused with the file named.
 #include "catch.h"
+#include "messages.h"
 #include "test_support.h"
 
 #include "pathlab/image_io.h"
 #include "pathlab/input_error.h"
+#include "pathlab/whole_file.h"
 
 #include <cstdint>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 
 using namespace pathlab;
 
 namespace {
-
-std::string bytesOf(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 void writeBytes(const std::string& path, const std::string& bytes) {
     std::ofstream(path, std::ios::binary) << bytes;
@@ -38,12 +32,7 @@ std::string floatBytes(float v, bool bigEndian) {
 }
 
 std::string errorReading(const std::string& path) {
-    try {
-        readImage(path);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return messageOf<InputError>([&] { readImage(path); });
 }
 
 } // namespace
@@ -56,7 +45,7 @@ TEST_CASE("a PFM is written as the format defines it: bottom row first, little-e
     std::string expected = "PF\n2 2\n-1.0\n";
     for (float v : {3.f, 4.f, 1.f, 2.f})
         for (int c = 0; c < 3; ++c) expected += floatBytes(v, false);
-    CHECK(bytesOf(dir + "/w.pfm") == expected);
+    CHECK(readFile(dir + "/w.pfm") == expected);
 }
 
 TEST_CASE("a PFM is read in either byte order, in colour or grey", "[render][images]") {

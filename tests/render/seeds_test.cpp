@@ -3,21 +3,9 @@
 #include "catch.h"
 #include "test_support.h"
 
-#include <fstream>
-#include <sstream>
+#include "pathlab/whole_file.h"
 
 using namespace pathlab;
-
-namespace {
-
-std::string bytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-} // namespace
 
 TEST_CASE("--seeds renders each seed as its own run would", "[render][solutions]") {
     const std::string folder = test::temporaryFolder("seeds");
@@ -31,12 +19,12 @@ TEST_CASE("--seeds renders each seed as its own run would", "[render][solutions]
         REQUIRE(
             test::runViewer(scene + " --seed " + std::to_string(seed) + " -o " + one).exitStatus ==
             0);
-        const std::string image = bytes(folder + "/many-" + std::to_string(seed) + ".pfm");
+        const std::string image = readFile(folder + "/many-" + std::to_string(seed) + ".pfm");
         CHECK(!image.empty());
-        CHECK(image == bytes(one));
-        CHECK(bytes(folder + "/many-" + std::to_string(seed) + ".json")
+        CHECK(image == readFile(one));
+        CHECK(readFile(folder + "/many-" + std::to_string(seed) + ".json")
                   .find("\"seed\": " + std::to_string(seed)) != std::string::npos);
     }
     // Different seeds, different images.
-    CHECK(bytes(folder + "/many-40.pfm") != bytes(folder + "/many-41.pfm"));
+    CHECK(readFile(folder + "/many-40.pfm") != readFile(folder + "/many-41.pfm"));
 }

@@ -21,30 +21,15 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+from virtual_display import start_xvfb  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from checks import check, exit_code  # noqa: E402
+
 VIEWER, MODELS = sys.argv[1], sys.argv[2]
 SCENE = os.path.join(MODELS, "cornell_box_VI2_Specular.ecs")
-failures = []
 
-
-def check(condition, what):
-    print(("PASS " if condition else "FAIL ") + what, flush=True)
-    if not condition:
-        failures.append(what)
-
-
-def start_xvfb():
-    """An X server on a free display number, which Xvfb reports on the pipe."""
-    read, write = os.pipe()
-    server = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", "800x600x24",
-                               "-nolisten", "tcp"], pass_fds=[write], stderr=subprocess.DEVNULL)
-    os.close(write)
-    number = b""
-    while not number.endswith(b"\n"):
-        chunk = os.read(read, 16)
-        if not chunk:
-            raise RuntimeError("Xvfb did not start")
-        number += chunk
-    return server, ":" + number.decode().strip()
 
 
 def image_means(path):
@@ -180,7 +165,7 @@ def no_display_is_explained():
 
 def main():
     no_display_is_explained()
-    server, display = start_xvfb()
+    server, display = start_xvfb("800x600x24")
     try:
         env = dict(os.environ, DISPLAY=display)
         with tempfile.TemporaryDirectory() as tmp:
@@ -190,9 +175,7 @@ def main():
     finally:
         server.terminate()
         server.wait()
-    if failures:
-        print(f"{len(failures)} check(s) failed", flush=True)
-        sys.exit(1)
+    sys.exit(exit_code())
 
 
 if __name__ == "__main__":

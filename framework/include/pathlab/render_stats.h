@@ -69,7 +69,4 @@ void writeRenderStats(const std::string& path, const RenderStats& stats);
 /// missing or of the wrong type.
 RenderStats readRenderStats(const std::string& path);
 
-/// Writes `text` to `path` through a temporary file in the same folder and a rename.
-void writeFileAtomically(const std::string& path, const std::string& text);
-
 } // namespace pathlab

@@ -1,0 +1,56 @@
+"""What PathLab's Python tests share: how a check is reported and counted, the list of labs, and
+the arguments of a test that packages the kit.
+
+A test prints PASS or FAIL for each check and exits non-zero at the end if any failed, so ctest's
+log shows every check, not only the first that failed."""
+import argparse
+import os
+import re
+import sys
+
+KIT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+
+
+def _labs_in_order():
+    """The labs' names from the one list the build, the registry and the viewer read."""
+    with open(os.path.join(KIT, "framework", "include", "pathlab", "lab_list.h")) as f:
+        names = re.findall(r"^\s*PATHLAB_LAB\((\w+),", f.read(), re.M)
+    if not names:
+        raise RuntimeError("lab_list.h names no lab: has PATHLAB_LAB's form changed?")
+    return tuple(names)
+
+
+LABS = _labs_in_order()
+
+failures = []
+
+
+def check(condition, what):
+    """Says PASS or FAIL with `what`; a failure makes the test fail at the end (exit_code)."""
+    print(("PASS " if condition else "FAIL ") + what, flush=True)
+    if not condition:
+        failures.append(what)
+
+
+def exit_code(label="", seconds=None):
+    """1 if a check failed, else 0, after a line saying how many failed (and how long it took,
+    if `seconds` is given)."""
+    took = f" in {seconds:.0f} s" if seconds is not None else ""
+    print(f"{label}{len(failures)} check(s) failed{took}")
+    return 1 if failures else 0
+
+
+def finish():
+    sys.exit(exit_code())
+
+
+def package_test_arguments():
+    """The arguments of a test that packages the kit and tries the package (the student release,
+    the Gradescope autograder): --source, the instructor's kit (made absolute), and --keep, to
+    keep the scratch folder for a look afterwards."""
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--source", required=True, help="the instructor's kit")
+    parser.add_argument("--keep", action="store_true", help="keep the scratch folder")
+    args = parser.parse_args()
+    args.source = os.path.abspath(args.source)
+    return args
