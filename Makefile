@@ -9,7 +9,7 @@ NATIVE ?= ON
 # off by default, so that a newer compiler's new warning does not stop a student's build.
 WARNINGS_AS_ERRORS ?= OFF
 
-.PHONY: run build test test-labs test-slow grade report bench deps clean handouts handouts-html \
+.PHONY: run build test test-labs test-slow grade report bench profile deps clean handouts handouts-html \
         student-release gradescope
 
 # The student release has no solutions/: there the lab tests (ctest label `labs`) check your own
@@ -56,7 +56,7 @@ clean:
 
 # The targets below need the reference solutions: the student release, which has none, says so.
 ifeq ($(wildcard solutions/),)
-test-slow bench handouts student-release gradescope:
+test-slow bench profile handouts student-release gradescope:
 	@echo "make $@: needs the reference solutions (solutions/), which the student release does not have" >&2
 	@exit 2
 else
@@ -71,6 +71,12 @@ test-slow: build
 # Timings are only meaningful on an otherwise idle machine.
 bench: build
 	cd $(BUILD) && ./bench $(BENCH_ARGS)
+
+# Where a sample's time goes: each reference solution at 1 thread under perf, attributed to
+# Embree, each framework function, the lab, libm and the rest (apps/bench/profile_solutions.py;
+# needs perf: apt-get install linux-perf). PROFILE_ARGS="--markdown" for the README's table.
+profile: build
+	python3 apps/bench/profile_solutions.py --build $(BUILD) $(PROFILE_ARGS)
 
 # The handouts' figures, remade from the reference solutions and timed on this machine (6 to 10
 # minutes on 2 cores, more when busy; run it when the machine is otherwise idle), then their

@@ -30,9 +30,10 @@ if [ -d "$kit/solutions" ]; then
         debootstrap                     # ctest -L platforms: the kit on Debian 13, in its own root
     )
     # ctest grader.pages: the grader's pages in a headless browser. Ubuntu has Chromium only as a
-    # snap, not an apt package; there the test skips.
+    # snap, not an apt package; there the test skips. make profile: perf, which Ubuntu ships per
+    # kernel (linux-tools-generic).
     if grep -qx 'ID=debian' /etc/os-release 2>/dev/null; then
-        apt_packages+=(chromium)
+        apt_packages+=(chromium linux-perf)
     fi
 fi
 

@@ -52,6 +52,7 @@ STUDENT_EXCLUDED = (
     "handouts/tools/roulette_sweep.gp",
     "scripts/gradescope/",
     "scripts/package_kit.py",
+    "scripts/virtual_display.py",
     "README.md",
 )
 # The students' README, which the release holds as README.md in place of the kit's.

@@ -10,6 +10,7 @@
 #include "pathlab/triangle_sampling.h"
 
 #include <cmath>
+#include <string>
 #include <utility>
 
 namespace pathlab {
@@ -25,12 +26,17 @@ Sampler PathDriver::samplerFor(uint64_t seed, uint64_t pixelIndex, uint64_t samp
     return Sampler(rng);
 }
 
-Hit PathContext::trace(const Ray& ray) {
+Hit PathContext::trace(const Ray& ray, CallSite caller) {
     // A ray built by a lab: Embree would trace a non-unit direction, with every distance and
     // offset along it scaled, and a NaN one would find nothing. Both come from a step before.
-    PATHLAB_CHECK(std::abs(dot(ray.direction, ray.direction) - 1.0f) < 1e-3f,
-                  "ctx.trace(ray) needs a unit-length ray.direction: normalize() it, and look "
-                  "for a division by zero (a NaN) where the direction was made");
+    // (The message is made only when the check fails.)
+    const float length2 = dot(ray.direction, ray.direction);
+    PATHLAB_CHECK_CALLER(std::abs(length2 - 1.0f) < 1e-3f, caller,
+                         "ctx.trace(ray) needs a unit-length ray.direction, and this one has "
+                         "length " +
+                             std::to_string(std::sqrt(length2)) +
+                             ": normalize() it, and look for a division by zero (a NaN) where "
+                             "the direction was made");
     ++closestHitRays_;
     if (log_) log_->closestHit.push_back(ray);
     if (packet_) {
@@ -41,9 +47,10 @@ Hit PathContext::trace(const Ray& ray) {
     return scene_.intersect(ray);
 }
 
-Color PathContext::directLight(const Hit& hit) {
-    PATHLAB_CHECK(hit.found, "ctx.directLight(hit) needs a surface: call it after `if (!hit)` "
-                             "has returned for a ray that left the scene");
+Color PathContext::directLight(const Hit& hit, CallSite caller) {
+    PATHLAB_CHECK_CALLER(hit.found, caller,
+                         "ctx.directLight(hit) needs a surface: call it after `if (!hit)` has "
+                         "returned for a ray that left the scene");
     const LightSampler& lights = scene_.lights();
     if (isBlack(hit.material.Kd) || lights.empty()) return Color();
 

@@ -175,9 +175,9 @@ headless
   --stats FILE.json      write what was measured: time, samples/s, frame rate, rays, mean
                          radiance, noise, efficiency, the first NaN or infinite sample (with
                          the window: after --frames or at quit, the panel's figures)
-  --seeds K              render K independent images, for seeds S to S+K-1, each to FILE
-                         and FILE.json with -SEED before the extension (one process, one
-                         scene load: how the grader renders its seeds)
+  --seeds K              render K independent images, for seeds S to S+K-1: -o a.pfm writes
+                         a-S.pfm ..., and --stats s.json writes s-S.json ... (one process,
+                         one scene load: how the grader renders its seeds)
 )";
 }
 

@@ -45,6 +45,10 @@ std::string RenderStats::nonfiniteWarning() const {
                       static_cast<unsigned long long>(f.raysTraced));
         text += where;
     }
+    // What a student can do next: the image is made, but it is not right.
+    text += ". A NaN comes from 0/0 or 0*inf in pathTrace, most often a division by a "
+            "probability or a weight that can be 0; the lab tests (make test-labs) and make grade "
+            "name the step when they recognise the bug";
     return text;
 }
 

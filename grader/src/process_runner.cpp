@@ -45,7 +45,9 @@ std::string ProcessOutcome::outputTail(int lines) const {
         const size_t start = output.rfind('\n', end - 1);
         const size_t from = start == std::string::npos ? 0 : start + 1;
         std::string line = output.substr(from, end - from);
-        if (line.size() > 200) line = line.substr(0, 200) + "...";
+        // Long enough for a failed check, which names the lab's line, what to fix and the
+        // framework's check; short enough that a flood of output stays readable.
+        if (line.size() > 600) line = line.substr(0, 600) + "...";
         if (!line.empty()) kept.insert(kept.begin(), line);
         if (start == std::string::npos) break;
         end = start;

@@ -93,13 +93,20 @@ void checkFurnaceValue(const LabRun& run, double expected, const std::string& fo
     }
     const grader::FurnaceObservation own = observe(model.value_or(grader::FurnaceModel{}), run);
     const double mean = own.observed, standardError = own.standardError;
-    const double z = (mean - expected) / std::hypot(standardError, FurnaceErrorFloor * expected);
+    const double allowed = std::hypot(standardError, FurnaceErrorFloor * expected);
+    const double z = (mean - expected) / allowed;
     const double critical = normalCritical(Alpha);
     if (std::fabs(z) < critical && std::fabs(mean - expected) < 0.02 * expected) return;
+    // z is over the standard error and the floor together, so the message shows both: a mirror
+    // furnace, whose samples are all alike, has a standard error of 0.
     std::ostringstream message;
     message << std::setprecision(5) << run.description() << ": observed " << mean << " ± "
             << standardError << " (standard error), expected " << expected << " = " << formula
-            << "; z = " << z << " (a correct lab gives |z| < " << critical << ", within 2%).";
+            << "; z = (observed - expected) / " << allowed << " = " << z
+            << " (the standard error and a floor of " << FurnaceErrorFloor
+            << " of the expected value for the scene's approximations, together; a correct lab "
+               "gives |z| < "
+            << critical << ", within 2%).";
     if (model) message << likelyCauses(run, own);
     FAIL_CHECK(message.str());
 }

@@ -47,6 +47,8 @@ std::string checkMessage(PathTraceFunction pathTrace) {
     return "no check failed";
 }
 
+// The lines of the calls a check must name: the lab's, not the framework's.
+constexpr int BounceLine = __LINE__ + 2;
 Color bounceOffMissedHit(const Ray&, int, PathContext& ctx) {
     return Color(diffuseRay(Hit(), ctx.sampler.get2D()).direction.x);
 }
@@ -55,6 +57,7 @@ Color mirrorOffMissedHit(const Ray& ray, int, PathContext&) {
 }
 Color lightAtMissedHit(const Ray&, int, PathContext& ctx) { return ctx.directLight(Hit()); }
 Color traceAndEmit(const Ray& ray, int, PathContext& ctx) { return ctx.trace(ray).emitted; }
+constexpr int LongRayLine = __LINE__ + 2;
 Color traceLongRay(const Ray& ray, int, PathContext& ctx) {
     return ctx.trace({ray.origin, ray.direction * 2.0f, ray.kind}).emitted;
 }
@@ -71,21 +74,26 @@ Color nanNowAndThen(const Ray& ray, int, PathContext& ctx) {
 
 } // namespace
 
-TEST_CASE("the bounce helpers and directLight refuse a missed hit, naming themselves",
+TEST_CASE("the bounce helpers and directLight refuse a missed hit, naming themselves and the "
+          "lab's line",
           "[render][checks]") {
     const std::string diffuse = checkMessage(bounceOffMissedHit);
     INFO(diffuse);
-    CHECK(mentions(diffuse, "check failed: hit.found"));
-    CHECK(mentions(diffuse, "diffuseRay(hit, u) needs a surface"));
+    const std::string labLine = "checks_test.cpp:" + std::to_string(BounceLine);
+    CHECK(mentions(diffuse, labLine + ": check failed: diffuseRay(hit, u) needs a surface"));
     CHECK(mentions(diffuse, "scattering.cpp:"));
+    CHECK(mentions(diffuse, ": hit.found]"));
     CHECK(mentions(checkMessage(mirrorOffMissedHit), "mirrorRay(ray, hit) needs a surface"));
     CHECK(mentions(checkMessage(lightAtMissedHit), "ctx.directLight(hit) needs a surface"));
 }
 
-TEST_CASE("ctx.trace refuses a direction that is not unit length", "[render][checks]") {
+TEST_CASE("ctx.trace refuses a direction that is not unit length, naming the lab's line and "
+          "the length",
+          "[render][checks]") {
     const std::string message = checkMessage(traceLongRay);
     INFO(message);
-    CHECK(mentions(message, "unit-length ray.direction"));
+    CHECK(mentions(message, "checks_test.cpp:" + std::to_string(LongRayLine) + ": check failed"));
+    CHECK(mentions(message, "unit-length ray.direction, and this one has length 2.0"));
     CHECK(mentions(message, "path_context.cpp:"));
 }
 

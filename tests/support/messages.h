@@ -8,8 +8,7 @@ inline bool contains(const std::string& text, const std::string& part) {
 }
 
 /// The message of the `Error` that `call()` throws, or "" if it throws none.
-template <class Error, class Call>
-std::string messageOf(Call&& call) {
+template <class Error, class Call> std::string messageOf(Call&& call) {
     try {
         std::forward<Call>(call)();
     } catch (const Error& e) {

@@ -2,6 +2,8 @@
 /// PATHLAB_CHECK and PATHLAB_DCHECK: a condition that must hold, checked where a bug would
 /// first show, reported with the expression, the file and line, and what to look at.
 
+#include "pathlab/call_site.h"
+
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +21,11 @@ public:
 [[noreturn]] void failCheck(const char* file, int line, const char* expression,
                             const std::string& lookAt);
 
+/// Throws the CheckFailure for a check at file:line of the framework that a lab's call at
+/// `caller` broke: the lab's line comes first, the framework's check last.
+[[noreturn]] void failCheckCalledFrom(CallSite caller, const char* file, int line,
+                                      const char* expression, const std::string& lookAt);
+
 } // namespace pathlab
 
 /// Always checked, in every build: conditions a lab's code can break (a helper given a missed
@@ -26,6 +33,14 @@ public:
 #define PATHLAB_CHECK(condition, lookAt)                                                           \
     do {                                                                                           \
         if (!(condition)) ::pathlab::failCheck(__FILE__, __LINE__, #condition, lookAt);            \
+    } while (false)
+
+/// PATHLAB_CHECK for a function of the student API that was given `caller`: the message starts
+/// with the lab's file and line, where the mistake is.
+#define PATHLAB_CHECK_CALLER(condition, caller, lookAt)                                            \
+    do {                                                                                           \
+        if (!(condition))                                                                          \
+            ::pathlab::failCheckCalledFrom(caller, __FILE__, __LINE__, #condition, lookAt);        \
     } while (false)
 
 /// Checked in debug builds and in the sanitizer builds (PATHLAB_DEBUG_CHECKS=ON): the

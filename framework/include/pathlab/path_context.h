@@ -1,6 +1,7 @@
 #pragma once
 /// Everything pathTrace() may ask of the framework while it follows one path.
 
+#include "pathlab/call_site.h"
 #include "pathlab/color.h"
 #include "pathlab/hit.h"
 #include "pathlab/ray.h"
@@ -21,14 +22,15 @@ struct RayLog;
 class PathContext {
 public:
     /// The closest surface along `ray` (one closest-hit ray through Embree). `ray.direction`
-    /// must be unit length: a check stops the render, naming the line, when it is not.
-    Hit trace(const Ray& ray);
+    /// must be unit length: a check stops the render, naming the line, when it is not. (Leave
+    /// `caller` out: the compiler fills in the line of the call, for that message.)
+    Hit trace(const Ray& ray, CallSite caller = {});
 
     /// Next-event estimation at a diffuse surface: radiance that `hit` reflects back along the
     /// ray that found it, with light arriving straight from a light source (one light sampled by
     /// power, one shadow ray). Black when the material has no Kd. Includes the Kd/π of the
     /// diffuse BRDF, so a lab adds it as it is. `hit` must be a found surface.
-    Color directLight(const Hit& hit);
+    Color directLight(const Hit& hit, CallSite caller = {});
 
     Sampler sampler;          ///< this path's random numbers: get1D(), get2D()
     const int maxDepth;       ///< labs 1–3: no bounce ray is traced from a hit at depth maxDepth

@@ -13,8 +13,7 @@ namespace pathlab {
 /// The exit status of `body()`, which returns one; or, if it throws, the status for what it threw
 /// after printing it: bad input (InputError: a file, an option, a scene) "PROGRAM: message" and 2;
 /// anything else "PROGRAM: error: message" and `failureStatus`.
-template <class Body>
-int runMain(const char* program, Body&& body, int failureStatus = 1) {
+template <class Body> int runMain(const char* program, Body&& body, int failureStatus = 1) {
     try {
         return std::forward<Body>(body)();
     } catch (const InputError& error) {

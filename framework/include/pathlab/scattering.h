@@ -1,6 +1,9 @@
 #pragma once
-/// The three rays a surface can send on: diffuse, mirror and refracted.
+/// The three rays a surface can send on: diffuse, mirror and refracted. Each needs a found
+/// surface; `caller` is filled in by the compiler, so that a missed hit is reported at the
+/// lab's line.
 
+#include "pathlab/call_site.h"
 #include "pathlab/hit.h"
 #include "pathlab/ray.h"
 #include "pathlab/vec3.h"
@@ -10,13 +13,13 @@ namespace pathlab {
 /// A cosine-weighted diffuse bounce from `hit`, on the side the incoming ray came from.
 /// Its contribution is weighted by Kd alone: cos θ / π of the integrand cancels against the
 /// pdf cos θ / π (handout 01).
-Ray diffuseRay(const Hit& hit, Vec2 u);
+Ray diffuseRay(const Hit& hit, Vec2 u, CallSite caller = {});
 
 /// The perfect mirror reflection of `ray` at `hit`.
-Ray mirrorRay(const Ray& ray, const Hit& hit);
+Ray mirrorRay(const Ray& ray, const Hit& hit, CallSite caller = {});
 
 /// The refraction of `ray` into (or out of) the surface at `hit`, using the material's Ni;
 /// under total internal reflection it is the mirror ray instead, so no energy is lost.
-Ray refractionRay(const Ray& ray, const Hit& hit);
+Ray refractionRay(const Ray& ray, const Hit& hit, CallSite caller = {});
 
 } // namespace pathlab
