@@ -18,10 +18,4 @@ Camera::Camera(const CameraSettings& settings, int width, int height) : settings
     invHeight_ = 1.0f / static_cast<float>(height);
 }
 
-Ray Camera::generateRay(float x, float y) const {
-    const float sx = (2.0f * x * invWidth_ - 1.0f) * halfWidth_;
-    const float sy = (1.0f - 2.0f * y * invHeight_) * halfHeight_;
-    return {settings_.position, normalize(forward_ + right_ * sx + up_ * sy), RayKind::Camera};
-}
-
 } // namespace pathlab

@@ -72,6 +72,7 @@ Color PathContext::directLight(const Hit& hit, CallSite caller) {
     // back of an area light, is black.
     const float cosReceiver = dot(hit.normal, toLight);
     if (cosReceiver <= 0) return Color();
+    const float distance = std::sqrt(distance2);
     Color arriving; // incident radiance × (geometry term) / pdf, before the receiver's cosine
     if (light.type == LightSource::Type::Point) {
         arriving = light.intensity / distance2;
@@ -79,7 +80,7 @@ Color PathContext::directLight(const Hit& hit, CallSite caller) {
         // Only the front side emits; cosθ'·area = dot(-toLight/r, areaNormal/2).
         const float frontTimesHalf = -dot(toLight, light.areaNormal) * 0.5f;
         if (frontTimesHalf < 0) return Color();
-        const float cosTimesArea = frontTimesHalf / std::sqrt(distance2);
+        const float cosTimesArea = frontTimesHalf / distance;
         if (cosTimesArea <= 0) return Color();
         arriving = light.Ke * (cosTimesArea / distance2);
     }
@@ -89,7 +90,7 @@ Color PathContext::directLight(const Hit& hit, CallSite caller) {
     if (log_) log_->occlusion.push_back({origin, lightPosition});
     if (scene_.occluded(origin, lightPosition)) return Color();
     return hit.material.Kd * arriving *
-           (InvPi * cosReceiver / std::sqrt(distance2) / pickProbability);
+           (InvPi * cosReceiver / distance / pickProbability);
 }
 
 } // namespace pathlab

@@ -151,12 +151,4 @@ bool RenderScene::occluded(const Vec3& from, const Vec3& to) const {
 
 RTCSceneTy* RenderScene::embreeScene() const { return embree_->scene; }
 
-Vec3 offsetRayOrigin(const Hit& hit, const Vec3& direction) {
-    // Float positions carry a relative error near 1e-7; a step of a few hundred ulps along the
-    // geometric normal clears it at any scene scale.
-    const float epsilon = 2e-5f * (1.0f + maxAbsComponent(hit.position));
-    const float side = dot(direction, hit.geometricNormal) >= 0 ? 1.0f : -1.0f;
-    return hit.position + hit.geometricNormal * (side * epsilon);
-}
-
 } // namespace pathlab

@@ -20,8 +20,14 @@ class Camera {
 public:
     Camera(const CameraSettings& settings, int width, int height);
 
-    /// The ray through image position (x, y) in pixels, (0,0) the top-left corner.
-    Ray generateRay(float x, float y) const;
+    /// The ray through image position (x, y) in pixels, (0,0) the top-left corner. Inline: the
+    /// renderer makes one per sample.
+    Ray generateRay(float x, float y) const {
+        const float sx = (2.0f * x * invWidth_ - 1.0f) * halfWidth_;
+        const float sy = (1.0f - 2.0f * y * invHeight_) * halfHeight_;
+        return {settings_.position, normalize(forward_ + right_ * sx + up_ * sy),
+                RayKind::Camera};
+    }
 
     const CameraSettings& settings() const { return settings_; }
 
