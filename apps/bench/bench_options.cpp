@@ -31,6 +31,23 @@ public:
                              "'");
         return v;
     }
+    /// A comma-separated list of integers from min to max, like 2,4,8.
+    std::vector<int> integers(std::string_view option, int min, int max) {
+        const std::string t = text(option);
+        std::vector<int> values;
+        for (size_t at = 0; at <= t.size();) {
+            const size_t comma = std::min(t.find(',', at), t.size());
+            int v = 0;
+            auto [end, error] = std::from_chars(t.data() + at, t.data() + comma, v);
+            if (error != std::errc() || end != t.data() + comma || v < min || v > max)
+                throw InputError("option " + std::string(option) + " expects integers from " +
+                                 std::to_string(min) + " to " + std::to_string(max) +
+                                 " separated by commas, like 2,4,8, got '" + t + "'");
+            values.push_back(v);
+            at = comma + 1;
+        }
+        return values;
+    }
     float number(std::string_view option, float min, float max) {
         const std::string t = text(option);
         const float v = parseFloat(t).value_or(std::nanf(""));
@@ -83,6 +100,8 @@ BenchOptions parseBenchOptions(int argc, const char* const* argv) {
             o.peerSpp = in.integer(option, 1, 1 << 20);
         else if (option == "--peer-image-spp")
             o.peerImageSpp = in.integer(option, 1, 1 << 20);
+        else if (option == "--peer-path-lengths")
+            o.peerPathLengths = in.integers(option, 1, 64);
         else if (option == "--peer-only")
             o.peerOnly = true;
         else if (option == "--memory-size") {
@@ -123,6 +142,9 @@ Embree's pathtracer (package embree-tools)
                          (default 0.1)
   --peer-spp N           samples per pixel of one timed frame (default 4)
   --peer-image-spp N     samples per pixel of the images whose means are compared (default 16)
+  --peer-path-lengths L,...
+                         Embree's path lengths to compare at, PathLab's importance solution
+                         at max-depth L-1 (default 2,4,8)
   --peer-only            measure only the comparison with Embree's pathtracer
 Memory
   --memory-size W H      size of the progressive render whose peak memory is measured

@@ -24,7 +24,10 @@ struct BenchOptions {
     float peerLightScale = 0.1f; ///< --peer-light-scale: dims the scene's point lights
     int peerSpp = 4;             ///< --peer-spp: samples per pixel of one timed frame
     int peerImageSpp = 16;       ///< --peer-image-spp: of the images whose means are compared
-    bool peerOnly = false;       ///< --peer-only: just the comparison with Embree's tracer
+    /// --peer-path-lengths: Embree's path lengths compared (PathLab's importance solution at
+    /// max-depth one less).
+    std::vector<int> peerPathLengths = {2, 4, 8};
+    bool peerOnly = false; ///< --peer-only: just the comparison with Embree's tracer
 
     // Peak memory of a progressive render, measured in a child process.
     int memoryWidth = 1920, memoryHeight = 1080; ///< --memory-size W H

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <thread>
 
@@ -66,42 +67,47 @@ void printScene(const SceneFigures& s, std::FILE* out) {
     std::fprintf(out, "\n");
 }
 
-void printPeer(const PeerComparison& c, std::FILE* out) {
-    if (!c.measured) {
-        std::fprintf(out, "\nEmbree's pathtracer: %s\n", c.note.c_str());
+/// One line per path length under a header that says what was compared: samples/s of each,
+/// their ratio, and the two images' means, 8-bit as Embree stores them.
+void printPeers(const std::vector<PeerComparison>& peers, std::FILE* out) {
+    const auto measured = std::find_if(peers.begin(), peers.end(),
+                                       [](const PeerComparison& c) { return c.measured; });
+    if (measured == peers.end()) {
+        std::fprintf(out, "\nEmbree's pathtracer: %s\n",
+                     peers.empty() ? "no path length asked for" : peers.front().note.c_str());
         return;
     }
+    const PeerComparison& h = *measured;
     std::fprintf(out,
                  "\nEmbree's pathtracer on %s (point lights x%g), %dx%d, %d spp per frame, "
-                 "%d threads,\n  fastest of %d rounds of %d frames each, taken in turn;\n  path "
-                 "length %d = PathLab's importance solution at max-depth %d\n",
-                 c.scene.c_str(), c.lightScale, c.width, c.height, c.spp, c.threads, c.rounds,
-                 c.frames, c.maxPathLength, c.maxPathLength - 1);
-    std::fprintf(out,
-                 "                            samples/s   mean radiance at %d spp, 8-bit as "
-                 "Embree stores it\n",
-                 c.imageSpp);
-    std::fprintf(out, "    Embree pathtracer     %11s   %.5f %.5f %.5f\n",
-                 millions(c.embreeSamplesPerSecond).c_str(), c.embreeMean.r, c.embreeMean.g,
-                 c.embreeMean.b);
-    std::fprintf(out, "    PathLab importance    %11s   %.5f %.5f %.5f\n",
-                 millions(c.oursSamplesPerSecond).c_str(), c.oursMean.r, c.oursMean.g,
-                 c.oursMean.b);
-    const Color d = c.oursMean - c.embreeMean;
-    if (c.imageSpp > 1) {
-        std::fprintf(out,
-                     "    PathLab / Embree      %10.2fx   difference in standard errors: %.1f "
-                     "%.1f %.1f\n",
-                     c.ratio(), d.r / c.standardError.r, d.g / c.standardError.g,
-                     d.b / c.standardError.b);
-    } else {
-        std::fprintf(out,
-                     "    PathLab / Embree      %10.2fx   (one sample per pixel: no standard "
-                     "error)\n",
-                     c.ratio());
+                 "%d threads,\n  fastest of %d rounds of %d frames each, taken in turn; path "
+                 "length L = PathLab's importance\n  solution at max-depth L-1; mean radiance at "
+                 "%d spp, 8-bit as Embree stores it\n",
+                 h.scene.c_str(), h.lightScale, h.width, h.height, h.spp, h.threads, h.rounds,
+                 h.frames, h.imageSpp);
+    std::fprintf(out, "  path length  Embree samples/s  PathLab samples/s  PathLab / Embree   "
+                      "mean radiance: Embree, PathLab           difference (standard errors)\n");
+    for (const PeerComparison& c : peers) {
+        if (!c.measured) {
+            std::fprintf(out, "  %11d  %s\n", c.maxPathLength, c.note.c_str());
+            continue;
+        }
+        std::fprintf(out, "  %11d  %16s  %17s  %15.2fx   %.5f %.5f %.5f, %.5f %.5f %.5f",
+                     c.maxPathLength, millions(c.embreeSamplesPerSecond).c_str(),
+                     millions(c.oursSamplesPerSecond).c_str(), c.ratio(), c.embreeMean.r,
+                     c.embreeMean.g, c.embreeMean.b, c.oursMean.r, c.oursMean.g, c.oursMean.b);
+        const Color d = c.oursMean - c.embreeMean;
+        if (c.imageSpp > 1)
+            std::fprintf(out, "   %.1f %.1f %.1f\n", d.r / c.standardError.r,
+                         d.g / c.standardError.g, d.b / c.standardError.b);
+        else
+            std::fprintf(out, "   (1 spp: no standard error)\n");
     }
-    std::fprintf(out, "    (PathLab's largest pixel value %.3f: %s)\n", c.oursMaxPixel,
-                 c.oursMaxPixel < 1 ? "nothing clipped" : "CLIPPED, dim the light");
+    float brightest = 0;
+    for (const PeerComparison& c : peers)
+        if (c.measured) brightest = std::max(brightest, c.oursMaxPixel);
+    std::fprintf(out, "  (PathLab's largest pixel value %.3f: %s)\n", brightest,
+                 brightest < 1 ? "nothing clipped" : "CLIPPED, dim the light");
 }
 
 void printMemory(const MemoryFigures& m, std::FILE* out) {
@@ -163,7 +169,8 @@ json sceneJson(const SceneFigures& s) {
 }
 
 json peerJson(const PeerComparison& c) {
-    if (!c.measured) return {{"measured", false}, {"note", c.note}};
+    if (!c.measured)
+        return {{"measured", false}, {"note", c.note}, {"max_path_length", c.maxPathLength}};
     return {{"measured", true},
             {"scene", c.scene},
             {"light_scale", c.lightScale},
@@ -197,17 +204,19 @@ json memoryJson(const MemoryFigures& m) {
 
 void printReport(const BenchReport& report, std::FILE* out) {
     for (const SceneFigures& s : report.scenes) printScene(s, out);
-    printPeer(report.peer, out);
+    printPeers(report.peers, out);
     printMemory(report.memory, out);
 }
 
 std::string reportJson(const BenchReport& report) {
     json scenes = json::array();
     for (const SceneFigures& s : report.scenes) scenes.push_back(sceneJson(s));
+    json peers = json::array();
+    for (const PeerComparison& c : report.peers) peers.push_back(peerJson(c));
     const json document = {{"pathlab_version", PATHLAB_VERSION},
                            {"cores", std::thread::hardware_concurrency()},
                            {"scenes", scenes},
-                           {"embree_pathtracer", peerJson(report.peer)},
+                           {"embree_pathtracer", peers},
                            {"memory", memoryJson(report.memory)}};
     return document.dump(2) + "\n";
 }

@@ -13,7 +13,7 @@ namespace pathlab::bench {
 
 struct BenchReport {
     std::vector<SceneFigures> scenes;
-    PeerComparison peer;
+    std::vector<PeerComparison> peers; ///< one per path length
     MemoryFigures memory;
 };
 

@@ -60,8 +60,10 @@ int runBench(BenchOptions options) {
             report.scenes.push_back(measureScene(scene, settings));
         }
     }
-    std::fprintf(stderr, "bench: Embree's pathtracer ...\n");
-    report.peer = comparePeer(options, threads);
+    for (int pathLength : options.peerPathLengths) {
+        std::fprintf(stderr, "bench: Embree's pathtracer at path length %d ...\n", pathLength);
+        report.peers.push_back(comparePeer(options, threads, pathLength));
+    }
     report.memory.note = "not measured (--peer-only)";
     if (!options.peerOnly) {
         std::fprintf(stderr, "bench: peak memory ...\n");

@@ -30,7 +30,7 @@ Color storedMean(const std::vector<float>& rgb, bool alreadyStored) {
 
 } // namespace
 
-PeerComparison comparePeer(const BenchOptions& options, int threads) {
+PeerComparison comparePeer(const BenchOptions& options, int threads, int pathLength) {
     PeerComparison c;
     c.scene = std::filesystem::path(options.peerScene).stem().string();
     c.width = options.width;
@@ -40,7 +40,7 @@ PeerComparison comparePeer(const BenchOptions& options, int threads) {
     c.rounds = 3;
     c.imageSpp = options.peerImageSpp;
     c.threads = threads;
-    c.maxPathLength = options.parameters.maxDepth + 1;
+    c.maxPathLength = pathLength;
     c.lightScale = options.peerLightScale;
 
     const std::string program = options.pathtracer.empty() ? "" : findProgram(options.pathtracer);
@@ -62,6 +62,7 @@ PeerComparison comparePeer(const BenchOptions& options, int threads) {
     const Camera camera(ours.scene().camera.value_or(ours.scene().framingCamera()), c.width,
                         c.height);
     LabParameters parameters = options.parameters;
+    parameters.maxDepth = pathLength - 1;
     const RenderJob job{
         ours,       camera,  findPathTrace(Lab::Importance, Implementation::Solution),
         parameters, c.width, c.height};

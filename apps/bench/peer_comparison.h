@@ -27,9 +27,10 @@ struct PeerComparison {
     }
 };
 
-/// Times Embree's pathtracer and PathLab's importance solution on the peer scene of `options`
-/// with equal size, samples per pixel, path length and threads, and compares their images'
-/// means. Not measured (with a note) when the pathtracer or its scene is not installed.
-PeerComparison comparePeer(const BenchOptions& options, int threads);
+/// Times Embree's pathtracer at `pathLength` and PathLab's importance solution at max-depth
+/// pathLength - 1 on the peer scene of `options`, with equal size, samples per pixel and
+/// threads, and compares their images' means. Not measured (with a note) when the pathtracer or
+/// its scene is not installed.
+PeerComparison comparePeer(const BenchOptions& options, int threads, int pathLength);
 
 } // namespace pathlab::bench

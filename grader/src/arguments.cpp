@@ -6,6 +6,8 @@
 #include "pathlab/this_process.h"
 
 #include <filesystem>
+#include <functional>
+#include <map>
 
 namespace pathlab::grader {
 
@@ -120,94 +122,92 @@ Arguments parseArguments(int argc, char** argv) {
                              "`make grade` grades your labs");
     }
     bool scenesGiven = false;
-    auto value = [&](int& i) -> std::string {
-        if (i + 1 >= argc) throw InputError(std::string("option ") + argv[i] + " needs a value");
-        return argv[++i];
+    // Options by what they take: a flag, a text (a path, a time, a name), or a value to check.
+    const std::map<std::string, bool Arguments::*> flags = {
+        {"--reveal-hidden", &Arguments::revealHidden},
+        {"--only-hidden", &Arguments::onlyHidden},
+        {"--keep-stale", &Arguments::keepStale},
+        {"--only-figures", &Arguments::onlyFigures},
+        {"--force", &Arguments::force},
+    };
+    const std::map<std::string, std::string Arguments::*> texts = {
+        {"--viewer", &Arguments::viewer},
+        {"--solution-viewer", &Arguments::solutionViewer},
+        {"--deadline", &Arguments::deadline},
+        {"--times", &Arguments::times},
+        {"--rubric", &Arguments::rubric},
+        {"--references", &Arguments::references},
+        {"--only-scene", &Arguments::onlyScene},
+        {"--json", &Arguments::json},
+        {"--junit", &Arguments::junit},
+        {"--gradescope", &Arguments::gradescope},
+        {"--html", &Arguments::html},
+        {"--report", &Arguments::report},
+        {"--out", &Arguments::out},
+        {"--kit", &Arguments::kit},
+        {"--reference-cache", &Arguments::referenceCache},
+        {"--timing-lock", &Arguments::timingLock},
+    };
+    using Checked = std::function<void(const std::string& option, const std::string& value)>;
+    const std::map<std::string, Checked> checked = {
+        {"--lab",
+         [&](const std::string&, const std::string& name) {
+             const auto lab = labFromName(name);
+             if (!lab)
+                 throw InputError("option --lab expects one of " + labNames(", ") + ", got '" +
+                                  name + "'");
+             a.labs = {*lab};
+         }},
+        {"--scenes",
+         [&](const std::string&, const std::string& folder) {
+             a.scenesDir = folder;
+             scenesGiven = true;
+         }},
+        {"--only",
+         [&](const std::string&, const std::string& ids) {
+             if (ids.find_first_not_of(", ") == std::string::npos)
+                 throw InputError("option --only expects submission ids, like alice or alice,bob");
+             for (size_t at = 0; at <= ids.size();) {
+                 const size_t comma = std::min(ids.find(',', at), ids.size());
+                 if (comma > at) a.only.push_back(ids.substr(at, comma - at));
+                 at = comma + 1;
+             }
+         }},
+        {"--seed", [&](const std::string& o,
+                       const std::string& v) { a.seed = static_cast<uint64_t>(number(o, v, 0)); }},
+        {"--threads", [&](const std::string& o,
+                          const std::string& v) { a.threads = static_cast<int>(number(o, v, 0)); }},
+        {"--jobs", [&](const std::string& o,
+                       const std::string& v) { a.jobs = static_cast<int>(number(o, v, 1)); }},
+        {"--shard",
+         [&](const std::string& o, const std::string& text) {
+             const size_t slash = text.find('/');
+             if (slash == std::string::npos)
+                 throw InputError("option --shard expects K/N, got '" + text + "'");
+             a.shard = static_cast<int>(number(o, text.substr(0, slash), 0));
+             a.shards = static_cast<int>(number(o, text.substr(slash + 1), 1));
+             if (a.shard >= a.shards)
+                 throw InputError("option --shard: K must be below N in K/N, got '" + text + "'");
+         }},
+        {"--timing-cpus",
+         [&](const std::string& o, const std::string& v) { a.timingCpus = cpuList(o, v); }},
+        {"--work-cpus",
+         [&](const std::string& o, const std::string& v) { a.workCpus = cpuList(o, v); }},
     };
     for (int i = first; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg == "--lab") {
-            const std::string name = value(i);
-            const auto lab = labFromName(name);
-            if (!lab)
-                throw InputError(
-                    "option --lab expects branching, uniform, importance or roulette, got '" +
-                    name + "'");
-            a.labs = {*lab};
-        } else if (arg == "--viewer")
-            a.viewer = value(i);
-        else if (arg == "--solution-viewer")
-            a.solutionViewer = value(i);
-        else if (arg == "--scenes")
-            a.scenesDir = value(i), scenesGiven = true;
-        else if (arg == "--reveal-hidden")
-            a.revealHidden = true;
-        else if (arg == "--only-hidden")
-            a.onlyHidden = true;
-        else if (arg == "--only") {
-            const std::string ids = value(i);
-            if (ids.find_first_not_of(", ") == std::string::npos)
-                throw InputError("option --only expects submission ids, like alice or alice,bob");
-            for (size_t at = 0; at <= ids.size();) {
-                const size_t comma = std::min(ids.find(',', at), ids.size());
-                if (comma > at) a.only.push_back(ids.substr(at, comma - at));
-                at = comma + 1;
-            }
-        } else if (arg == "--keep-stale")
-            a.keepStale = true;
-        else if (arg == "--deadline")
-            a.deadline = value(i);
-        else if (arg == "--times")
-            a.times = value(i);
-        else if (arg == "--rubric")
-            a.rubric = value(i);
-        else if (arg == "--references")
-            a.references = value(i);
-        else if (arg == "--seed")
-            a.seed = static_cast<uint64_t>(number(arg, value(i), 0));
-        else if (arg == "--threads")
-            a.threads = static_cast<int>(number(arg, value(i), 0));
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) throw InputError("option " + arg + " needs a value");
+            return argv[++i];
+        };
+        if (const auto flag = flags.find(arg); flag != flags.end())
+            a.*(flag->second) = true;
+        else if (const auto text = texts.find(arg); text != texts.end())
+            a.*(text->second) = value();
+        else if (const auto check = checked.find(arg); check != checked.end())
+            check->second(arg, value());
         else if (arg == "--no-speed")
             a.speed = false;
-        else if (arg == "--only-figures")
-            a.onlyFigures = true;
-        else if (arg == "--only-scene")
-            a.onlyScene = value(i);
-        else if (arg == "--json")
-            a.json = value(i);
-        else if (arg == "--junit")
-            a.junit = value(i);
-        else if (arg == "--gradescope")
-            a.gradescope = value(i);
-        else if (arg == "--html")
-            a.html = value(i);
-        else if (arg == "--report")
-            a.report = value(i);
-        else if (arg == "--out")
-            a.out = value(i);
-        else if (arg == "--jobs")
-            a.jobs = static_cast<int>(number(arg, value(i), 1));
-        else if (arg == "--force")
-            a.force = true;
-        else if (arg == "--shard") {
-            const std::string text = value(i);
-            const size_t slash = text.find('/');
-            if (slash == std::string::npos)
-                throw InputError("option --shard expects K/N, got '" + text + "'");
-            a.shard = static_cast<int>(number(arg, text.substr(0, slash), 0));
-            a.shards = static_cast<int>(number(arg, text.substr(slash + 1), 1));
-            if (a.shard >= a.shards)
-                throw InputError("option --shard: K must be below N in K/N, got '" + text + "'");
-        } else if (arg == "--kit")
-            a.kit = value(i);
-        else if (arg == "--reference-cache")
-            a.referenceCache = value(i);
-        else if (arg == "--timing-lock")
-            a.timingLock = value(i);
-        else if (arg == "--timing-cpus")
-            a.timingCpus = cpuList(arg, value(i));
-        else if (arg == "--work-cpus")
-            a.workCpus = cpuList(arg, value(i));
         else if (arg == "--help" || arg == "-h")
             a.command = "help";
         else if (!arg.empty() && arg[0] == '-')
