@@ -89,8 +89,7 @@ Color PathContext::directLight(const Hit& hit, CallSite caller) {
     const Vec3 origin = offsetRayOrigin(hit, toLight);
     if (log_) log_->occlusion.push_back({origin, lightPosition});
     if (scene_.occluded(origin, lightPosition)) return Color();
-    return hit.material.Kd * arriving *
-           (InvPi * cosReceiver / distance / pickProbability);
+    return hit.material.Kd * arriving * (InvPi * cosReceiver / distance / pickProbability);
 }
 
 } // namespace pathlab

@@ -25,8 +25,7 @@ public:
     Ray generateRay(float x, float y) const {
         const float sx = (2.0f * x * invWidth_ - 1.0f) * halfWidth_;
         const float sy = (1.0f - 2.0f * y * invHeight_) * halfHeight_;
-        return {settings_.position, normalize(forward_ + right_ * sx + up_ * sy),
-                RayKind::Camera};
+        return {settings_.position, normalize(forward_ + right_ * sx + up_ * sy), RayKind::Camera};
     }
 
     const CameraSettings& settings() const { return settings_; }
