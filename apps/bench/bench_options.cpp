@@ -104,6 +104,8 @@ BenchOptions parseBenchOptions(int argc, const char* const* argv) {
             o.peerPathLengths = in.integers(option, 1, 64);
         else if (option == "--peer-only")
             o.peerOnly = true;
+        else if (option == "--first-frame-runs")
+            o.firstFrameRuns = in.integer(option, 0, 100);
         else if (option == "--memory-size") {
             o.memoryWidth = in.integer(option, 1, 16384);
             o.memoryHeight = in.integer(option, 1, 16384);
@@ -146,6 +148,10 @@ Embree's pathtracer (package embree-tools)
                          Embree's path lengths to compare at, PathLab's importance solution
                          at max-depth L-1 (default 2,4,8)
   --peer-only            measure only the comparison with Embree's pathtracer
+The viewer's first frame
+  --first-frame-runs N   starts of the viewer's window under xvfb-run, timed from the
+                         program's start to its first frame and its first image on screen;
+                         the median counts (default 3; 0 skips them)
 Memory
   --memory-size W H      size of the progressive render whose peak memory is measured
                          (default 1920 1080)

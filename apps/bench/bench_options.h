@@ -29,6 +29,8 @@ struct BenchOptions {
     std::vector<int> peerPathLengths = {2, 4, 8};
     bool peerOnly = false; ///< --peer-only: just the comparison with Embree's tracer
 
+    int firstFrameRuns = 3; ///< --first-frame-runs N: viewer starts under Xvfb (0 skips them)
+
     // Peak memory of a progressive render, measured in a child process.
     int memoryWidth = 1920, memoryHeight = 1080; ///< --memory-size W H
     int memoryFrames = 8;                        ///< --memory-frames N (0 skips the measurement)

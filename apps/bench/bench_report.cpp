@@ -121,6 +121,18 @@ void printMemory(const MemoryFigures& m, std::FILE* out) {
                  m.width, m.height, m.frames, m.peakMiB);
 }
 
+void printFirstFrame(const FirstFrameLatency& f, std::FILE* out) {
+    if (!f.measured) {
+        std::fprintf(out, "\nThe viewer's first frame: %s\n", f.note.c_str());
+        return;
+    }
+    std::fprintf(
+        out,
+        "\nThe viewer's window under Xvfb, %dx%d, importance solution, median of %d "
+        "starts:\n  start to first frame %.0f ms, start to first image on screen %.0f ms\n",
+        f.width, f.height, f.runs, f.firstFrameMs, f.firstImageMs);
+}
+
 json rgb(const Color& c) { return json::array({c.r, c.g, c.b}); }
 
 json rawJson(const TraversalTimes& t) {
@@ -191,6 +203,16 @@ json peerJson(const PeerComparison& c) {
             {"ours_max_pixel", c.oursMaxPixel}};
 }
 
+json firstFrameJson(const FirstFrameLatency& f) {
+    if (!f.measured) return {{"measured", false}, {"note", f.note}};
+    return {{"measured", true},
+            {"runs", f.runs},
+            {"width", f.width},
+            {"height", f.height},
+            {"first_frame_ms", f.firstFrameMs},
+            {"first_image_ms", f.firstImageMs}};
+}
+
 json memoryJson(const MemoryFigures& m) {
     if (!m.measured) return {{"measured", false}, {"note", m.note}};
     return {{"measured", true},
@@ -205,6 +227,7 @@ json memoryJson(const MemoryFigures& m) {
 void printReport(const BenchReport& report, std::FILE* out) {
     for (const SceneFigures& s : report.scenes) printScene(s, out);
     printPeers(report.peers, out);
+    printFirstFrame(report.firstFrame, out);
     printMemory(report.memory, out);
 }
 
@@ -217,6 +240,7 @@ std::string reportJson(const BenchReport& report) {
                            {"cores", std::thread::hardware_concurrency()},
                            {"scenes", scenes},
                            {"embree_pathtracer", peers},
+                           {"first_frame", firstFrameJson(report.firstFrame)},
                            {"memory", memoryJson(report.memory)}};
     return document.dump(2) + "\n";
 }

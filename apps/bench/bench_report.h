@@ -1,6 +1,7 @@
 #pragma once
 /// The benchmark's figures as tables for people and as JSON for tracking them over time.
 
+#include "first_frame.h"
 #include "memory_probe.h"
 #include "peer_comparison.h"
 #include "scene_measurement.h"
@@ -14,6 +15,7 @@ namespace pathlab::bench {
 struct BenchReport {
     std::vector<SceneFigures> scenes;
     std::vector<PeerComparison> peers; ///< one per path length
+    FirstFrameLatency firstFrame;
     MemoryFigures memory;
 };
 

@@ -3,6 +3,7 @@
 #include "bench_options.h"
 #include "bench_report.h"
 #include "bench_scene.h"
+#include "first_frame.h"
 #include "memory_probe.h"
 #include "peer_comparison.h"
 #include "scene_measurement.h"
@@ -65,6 +66,14 @@ int runBench(BenchOptions options) {
         report.peers.push_back(comparePeer(options, threads, pathLength));
     }
     report.memory.note = "not measured (--peer-only)";
+    report.firstFrame.note = "not measured (--peer-only)";
+    if (!options.peerOnly && options.firstFrameRuns == 0)
+        report.firstFrame.note = "skipped (--first-frame-runs 0)";
+    else if (!options.peerOnly) {
+        std::fprintf(stderr, "bench: the viewer's first frame under Xvfb ...\n");
+        report.firstFrame = measureFirstFrame((thisProgram().parent_path() / "viewer").string(),
+                                              scenes.front(), options.firstFrameRuns);
+    }
     if (!options.peerOnly) {
         std::fprintf(stderr, "bench: peak memory ...\n");
         report.memory = measurePeakMemory(thisProgram(), scenes.front(), options);

@@ -19,6 +19,7 @@
 #include <imgui_impl_opengl2.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -44,6 +45,16 @@ const char* viewModeName(ViewMode mode) {
 std::string glfwProblem;
 
 double perSecond(double seconds) { return seconds > 0 ? 1.0 / seconds : 0.0; }
+
+/// When the program started, near enough: static initialisation runs as it is loaded. The
+/// first-frame latencies (--print-frame-rate, and the bench) are measured from here.
+const auto programStart = std::chrono::steady_clock::now();
+
+double millisecondsSinceStart() {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+                                                     programStart)
+        .count();
+}
 
 /// --print-frame-rate: one line per finished frame, with the figures the panel shows, labelled.
 /// "; the first at pixel (x, y), sample n", or nothing.
@@ -263,6 +274,11 @@ private:
 
     void onNewFrame() {
         const ViewSettings& s = frame_.settings;
+        if (windowOptions_.printFrameRate && !firstFrameSeen_) {
+            std::printf("first frame: %.1f ms after start\n", millisecondsSinceStart());
+            std::fflush(stdout);
+        }
+        firstFrameSeen_ = true;
         uploadImage();
         if (windowOptions_.frames > 0 && frame_.number >= windowOptions_.frames && s == settings_) {
             if (!windowOptions_.screenshot.empty()) screenshot(windowOptions_.screenshot);
@@ -319,6 +335,12 @@ private:
             done_ = true;
         }
         glfwSwapBuffers(window_);
+        if (windowOptions_.printFrameRate && hasImage_ && !firstImageShown_) {
+            glFinish(); // the image is on screen, not only queued
+            std::printf("first image on screen: %.1f ms after start\n", millisecondsSinceStart());
+            std::fflush(stdout);
+        }
+        firstImageShown_ = firstImageShown_ || hasImage_;
     }
 
     void captureWindow(int width, int height) {
@@ -429,6 +451,7 @@ private:
     unsigned texture_ = 0;
     bool inputSeen_ = true; // the first loop draws the panel before any frame
     bool hasImage_ = false, showHelp_ = false, finishing_ = false, done_ = false, dragging_ = false;
+    bool firstFrameSeen_ = false, firstImageShown_ = false; ///< for --print-frame-rate
     ViewMode mode_ = ViewMode::Image;
     float medianDifference_ = 0;
     double lastX_ = 0, lastY_ = 0;

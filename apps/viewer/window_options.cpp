@@ -34,7 +34,8 @@ const char* windowOptionsHelp() {
     return R"(window
   --spp-per-frame N      samples per pixel added each frame (default 1)
   --print-frame-rate     print the panel's figures every frame: median frame rate, spp,
-                         rays/s, noise, efficiency
+                         rays/s, noise, efficiency; and when the first frame arrived and the
+                         first image was on screen, in ms after the program started
   --frames N --screenshot FILE
                          run N frames, save the image, quit
   --capture-window FILE.png

@@ -53,7 +53,8 @@ def smoke(bench):
         report, table = run_bench(bench, [
             "--size", "24", "16", "--spp", "1", "--passes", "1", "--threads", "2",
             "--peer-spp", "1", "--peer-image-spp", "2",
-            "--memory-size", "32", "32", "--memory-frames", "2"], folder)
+            "--memory-size", "32", "32", "--memory-frames", "2", "--first-frame-runs", "1"],
+            folder)
 
     scenes = report["scenes"]
     if not scenes:
@@ -88,6 +89,17 @@ def smoke(bench):
         sys.exit(f"path lengths compared: {[p['max_path_length'] for p in peers]}")
     for peer in peers:
         check_peer(peer, table)
+
+    first = report["first_frame"]
+    if first["measured"]:
+        positive(first["first_frame_ms"], "start to first frame")
+        positive(first["first_image_ms"], "start to first image on screen")
+        if first["first_image_ms"] < first["first_frame_ms"]:
+            sys.exit(f"the first image was on screen before the first frame arrived: {first}")
+        if "start to first image on screen" not in table:
+            sys.exit(f"the table has no first-frame latency:\n{table}")
+    elif not first["note"]:
+        sys.exit("the first-frame latency was not measured and says not why")
 
     memory = report["memory"]
     if not memory["measured"]:
