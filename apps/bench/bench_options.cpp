@@ -5,6 +5,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <functional>
+#include <map>
 #include <string_view>
 
 namespace pathlab::bench {
@@ -69,55 +71,47 @@ private:
 BenchOptions parseBenchOptions(int argc, const char* const* argv) {
     BenchOptions o;
     Arguments in(argc, argv);
+    // Each option reads its values (if any) from `in`; `name` is how it was spelled.
+    using Reader = std::function<void(std::string_view name)>;
+    const std::map<std::string_view, Reader> readers = {
+        {"--scene", [&](auto name) { o.scenes.push_back(in.text(name)); }},
+        {"--size",
+         [&](auto name) {
+             o.width = in.integer(name, 1, 16384);
+             o.height = in.integer(name, 1, 16384);
+         }},
+        {"--spp", [&](auto name) { o.spp = in.integer(name, 1, 1 << 20); }},
+        {"--passes", [&](auto name) { o.passes = in.integer(name, 1, 1000); }},
+        {"--threads", [&](auto name) { o.threads = in.integer(name, 1, 1024); }},
+        {"--max-depth", [&](auto name) { o.parameters.maxDepth = in.integer(name, 0, 1000); }},
+        {"--continue-prob", [&](auto name) { o.parameters.continueProb = in.number(name, 0, 1); }},
+        {"--json", [&](auto name) { o.jsonFile = in.text(name); }},
+        {"--pathtracer", [&](auto name) { o.pathtracer = in.text(name); }},
+        {"--no-pathtracer", [&](auto) { o.pathtracer.clear(); }},
+        {"--peer-scene", [&](auto name) { o.peerScene = in.text(name); }},
+        {"--peer-light-scale", [&](auto name) { o.peerLightScale = in.number(name, 0, 1e6f); }},
+        {"--peer-spp", [&](auto name) { o.peerSpp = in.integer(name, 1, 1 << 20); }},
+        {"--peer-image-spp", [&](auto name) { o.peerImageSpp = in.integer(name, 1, 1 << 20); }},
+        {"--peer-path-lengths", [&](auto name) { o.peerPathLengths = in.integers(name, 1, 64); }},
+        {"--peer-only", [&](auto) { o.peerOnly = true; }},
+        {"--first-frame-runs", [&](auto name) { o.firstFrameRuns = in.integer(name, 0, 100); }},
+        {"--memory-size",
+         [&](auto name) {
+             o.memoryWidth = in.integer(name, 1, 16384);
+             o.memoryHeight = in.integer(name, 1, 16384);
+         }},
+        {"--memory-frames", [&](auto name) { o.memoryFrames = in.integer(name, 0, 1 << 20); }},
+        {"--memory-probe", [&](auto) { o.memoryProbe = true; }},
+        {"--help", [&](auto) { o.help = true; }},
+        {"-h", [&](auto) { o.help = true; }},
+    };
     while (!in.done()) {
         const std::string_view option = in.take();
-        if (option == "--scene")
-            o.scenes.push_back(in.text(option));
-        else if (option == "--size") {
-            o.width = in.integer(option, 1, 16384);
-            o.height = in.integer(option, 1, 16384);
-        } else if (option == "--spp")
-            o.spp = in.integer(option, 1, 1 << 20);
-        else if (option == "--passes")
-            o.passes = in.integer(option, 1, 1000);
-        else if (option == "--threads")
-            o.threads = in.integer(option, 1, 1024);
-        else if (option == "--max-depth")
-            o.parameters.maxDepth = in.integer(option, 0, 1000);
-        else if (option == "--continue-prob")
-            o.parameters.continueProb = in.number(option, 0, 1);
-        else if (option == "--json")
-            o.jsonFile = in.text(option);
-        else if (option == "--pathtracer")
-            o.pathtracer = in.text(option);
-        else if (option == "--no-pathtracer")
-            o.pathtracer.clear();
-        else if (option == "--peer-scene")
-            o.peerScene = in.text(option);
-        else if (option == "--peer-light-scale")
-            o.peerLightScale = in.number(option, 0, 1e6f);
-        else if (option == "--peer-spp")
-            o.peerSpp = in.integer(option, 1, 1 << 20);
-        else if (option == "--peer-image-spp")
-            o.peerImageSpp = in.integer(option, 1, 1 << 20);
-        else if (option == "--peer-path-lengths")
-            o.peerPathLengths = in.integers(option, 1, 64);
-        else if (option == "--peer-only")
-            o.peerOnly = true;
-        else if (option == "--first-frame-runs")
-            o.firstFrameRuns = in.integer(option, 0, 100);
-        else if (option == "--memory-size") {
-            o.memoryWidth = in.integer(option, 1, 16384);
-            o.memoryHeight = in.integer(option, 1, 16384);
-        } else if (option == "--memory-frames")
-            o.memoryFrames = in.integer(option, 0, 1 << 20);
-        else if (option == "--memory-probe")
-            o.memoryProbe = true;
-        else if (option == "--help" || option == "-h")
-            o.help = true;
-        else
+        const auto reader = readers.find(option);
+        if (reader == readers.end())
             throw InputError("unknown option '" + std::string(option) +
                              "' (bench --help lists them)");
+        reader->second(option);
     }
     return o;
 }
