@@ -15,6 +15,19 @@
 
 namespace pathlab {
 
+namespace {
+
+const char* rayKindName(RayKind kind) {
+    switch (kind) {
+    case RayKind::Camera: return "camera";
+    case RayKind::Diffuse: return "diffuse";
+    case RayKind::Specular: return "specular";
+    }
+    return "unknown";
+}
+
+} // namespace
+
 PathContext::PathContext(const RenderScene& scene, const LabParameters& parameters)
     : sampler(PathDriver::samplerFor(0, 0, 0)), maxDepth(parameters.maxDepth),
       continueProb(parameters.continueProb), scene_(scene) {}
@@ -29,14 +42,17 @@ Sampler PathDriver::samplerFor(uint64_t seed, uint64_t pixelIndex, uint64_t samp
 Hit PathContext::trace(const Ray& ray, CallSite caller) {
     // A ray built by a lab: Embree would trace a non-unit direction, with every distance and
     // offset along it scaled, and a NaN one would find nothing. Both come from a step before.
-    // (The message is made only when the check fails.)
+    // The check names the line of this trace() call, but the ray was usually made further up:
+    // where pathTrace was called with it. The message says so, with the ray's kind to find it
+    // by. (The message is made only when the check fails.)
     const float length2 = dot(ray.direction, ray.direction);
     PATHLAB_CHECK_CALLER(std::abs(length2 - 1.0f) < 1e-3f, caller,
-                         "ctx.trace(ray) needs a unit-length ray.direction, and this one has "
-                         "length " +
+                         "ctx.trace(ray) needs a unit-length ray.direction, and this " +
+                             std::string(rayKindName(ray.kind)) + " ray's has length " +
                              std::to_string(std::sqrt(length2)) +
-                             ": normalize() it, and look for a division by zero (a NaN) where "
-                             "the direction was made");
+                             ": where this ray was made (for a bounce, before the call of "
+                             "pathTrace that received it), normalize() its direction, and look "
+                             "for a division by zero (a NaN)");
     ++closestHitRays_;
     if (log_) log_->closestHit.push_back(ray);
     if (packet_) {

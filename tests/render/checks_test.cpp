@@ -93,7 +93,8 @@ TEST_CASE("ctx.trace refuses a direction that is not unit length, naming the lab
     const std::string message = checkMessage(traceLongRay);
     INFO(message);
     CHECK(mentions(message, "checks_test.cpp:" + std::to_string(LongRayLine) + ": check failed"));
-    CHECK(mentions(message, "unit-length ray.direction, and this one has length 2.0"));
+    CHECK(mentions(message, "unit-length ray.direction, and this camera ray's has length 2.0"));
+    CHECK(mentions(message, "before the call of pathTrace that received it"));
     CHECK(mentions(message, "path_context.cpp:"));
 }
 
