@@ -19,6 +19,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from checks import check, exit_code  # noqa: E402
+
 SKIPPED = 77  # the test's SKIP_RETURN_CODE (tests/CMakeLists.txt)
 
 # What the documented lab below may use: every part lab.h's comment lists.
@@ -113,34 +116,26 @@ def main():
     parser.add_argument("--build", required=True)
     args = parser.parse_args()
     command, directory = lab_compile_command(args.build)
-    failures = []
 
     status, output = compile_lab(command, directory, DOCUMENTED_LAB)
-    print(f"{'PASS' if status == 0 else 'FAIL'}: a lab using every documented part compiles")
-    if status != 0:
-        failures.append("the documented lab does not compile:\n" + output)
+    check(status == 0, "a lab using every documented part compiles" +
+          ("" if status == 0 else "; the compiler said:\n" + output))
 
     for what, statement, mentions in FORBIDDEN:
         status, output = compile_lab(command, directory, with_statement(statement))
         refused = status != 0 and re.search(mentions, output) is not None
-        print(f"{'PASS' if refused else 'FAIL'}: a lab cannot {what}")
-        if not refused:
-            failures.append(f"a lab could {what} ({statement!r}); the compiler said:\n{output[-800:]}")
+        check(refused, f"a lab cannot {what}" +
+              ("" if refused else f" ({statement!r} compiled; the compiler said:\n"
+                                  f"{output[-800:]})"))
 
     status, output = compile_lab(command, directory, DOCUMENTED_LAB, extra=["-H"])
     seen = {os.path.basename(line.lstrip(". ").strip()) for line in output.splitlines()
             if line.startswith(".") and "/pathlab/" in line}
     extra_headers, missing = sorted(seen - DOCUMENTED_HEADERS), sorted(DOCUMENTED_HEADERS - seen)
     ok = status == 0 and not extra_headers and not missing
-    print(f"{'PASS' if ok else 'FAIL'}: lab.h brings in exactly the documented headers "
-          f"({len(seen)} of pathlab/)")
-    if not ok:
-        failures.append(f"headers a lab sees through lab.h: not documented {extra_headers}, "
-                        f"documented but gone {missing}")
-
-    for failure in failures:
-        print("\n" + failure)
-    return 1 if failures else 0
+    check(ok, f"lab.h brings in exactly the documented headers ({len(seen)} of pathlab/)" +
+          ("" if ok else f": not documented {extra_headers}, documented but gone {missing}"))
+    return exit_code()
 
 
 if __name__ == "__main__":
