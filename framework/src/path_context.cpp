@@ -51,8 +51,10 @@ Hit PathContext::trace(const Ray& ray, CallSite caller) {
                              std::string(rayKindName(ray.kind)) + " ray's has length " +
                              std::to_string(std::sqrt(length2)) +
                              ": where this ray was made (for a bounce, before the call of "
-                             "pathTrace that received it), normalize() its direction, and look "
-                             "for a division by zero (a NaN)");
+                             "pathTrace that received it), " +
+                             (std::isfinite(length2)
+                                  ? "normalize() its direction"
+                                  : "look for a division by zero that made it NaN"));
     ++closestHitRays_;
     if (log_) log_->closestHit.push_back(ray);
     if (packet_) {

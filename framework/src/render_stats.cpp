@@ -47,8 +47,8 @@ std::string RenderStats::nonfiniteWarning() const {
     }
     // What a student can do next: the image is made, but it is not right.
     text += ". A NaN comes from 0/0 or 0*inf in pathTrace, most often a division by a "
-            "probability or a weight that can be 0; the lab tests (make test-labs) and make grade "
-            "name the step when they recognise the bug";
+            "probability or a weight that can be 0: look at the divisions of the step you wrote "
+            "last (the lab tests and make grade name a step only for the bugs they know)";
     return text;
 }
 
