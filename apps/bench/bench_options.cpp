@@ -37,16 +37,14 @@ public:
     std::vector<int> integers(std::string_view option, int min, int max) {
         const std::string t = text(option);
         std::vector<int> values;
-        for (size_t at = 0; at <= t.size();) {
-            const size_t comma = std::min(t.find(',', at), t.size());
+        for (std::string_view piece : splitAt(t, ',')) {
             int v = 0;
-            auto [end, error] = std::from_chars(t.data() + at, t.data() + comma, v);
-            if (error != std::errc() || end != t.data() + comma || v < min || v > max)
+            auto [end, error] = std::from_chars(piece.data(), piece.data() + piece.size(), v);
+            if (error != std::errc() || end != piece.data() + piece.size() || v < min || v > max)
                 throw InputError("option " + std::string(option) + " expects integers from " +
                                  std::to_string(min) + " to " + std::to_string(max) +
                                  " separated by commas, like 2,4,8, got '" + t + "'");
             values.push_back(v);
-            at = comma + 1;
         }
         return values;
     }

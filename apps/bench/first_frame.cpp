@@ -27,6 +27,10 @@ FirstFrameLatency measureFirstFrame(const std::string& viewer, const BenchScene&
     FirstFrameLatency f;
     f.runs = runs;
     f.width = 512, f.height = 512; // the window's default size
+    if (runs == 0) {
+        f.note = "skipped (--first-frame-runs 0)";
+        return f;
+    }
     const std::string xvfbRun = findProgram("xvfb-run");
     if (xvfbRun.empty()) {
         f.note = "not measured: xvfb-run was not found (Debian package xvfb)";

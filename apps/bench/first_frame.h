@@ -20,7 +20,7 @@ struct FirstFrameLatency {
 
 /// Starts `viewer` (the importance solution on `scene`, at the window's default size) under
 /// xvfb-run, `runs` times, and reads the latencies it prints with --print-frame-rate. Not
-/// measured (with a note) without xvfb-run.
+/// measured (with a note) without xvfb-run, or when `runs` is 0.
 FirstFrameLatency measureFirstFrame(const std::string& viewer, const BenchScene& scene, int runs);
 
 } // namespace pathlab::bench

@@ -15,7 +15,6 @@
 #include "pathlab/whole_file.h"
 
 #include <cstdio>
-#include <exception>
 #include <filesystem>
 #include <thread>
 
@@ -67,14 +66,10 @@ int runBench(BenchOptions options) {
     }
     report.memory.note = "not measured (--peer-only)";
     report.firstFrame.note = "not measured (--peer-only)";
-    if (!options.peerOnly && options.firstFrameRuns == 0)
-        report.firstFrame.note = "skipped (--first-frame-runs 0)";
-    else if (!options.peerOnly) {
+    if (!options.peerOnly) {
         std::fprintf(stderr, "bench: the viewer's first frame under Xvfb ...\n");
         report.firstFrame = measureFirstFrame((thisProgram().parent_path() / "viewer").string(),
                                               scenes.front(), options.firstFrameRuns);
-    }
-    if (!options.peerOnly) {
         std::fprintf(stderr, "bench: peak memory ...\n");
         report.memory = measurePeakMemory(thisProgram(), scenes.front(), options);
     }

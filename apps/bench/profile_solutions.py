@@ -125,24 +125,22 @@ def sort_key(item):
     return (group, -share)
 
 
-def table(results, markdown):
-    """One column per solution, one line per category, and each group's total."""
-    names = set()
-    for shares, _, _ in results.values():
-        names |= set(shares)
-    lines = sorted(((n, max(r[0].get(n, 0) for r in results.values())) for n in names),
-                   key=sort_key)
-    labs = list(results)
-    rows = [["ns per sample"] + [f"{results[l][1]:.0f}" for l in labs]]
+def table(shares, ns_per_sample, markdown):
+    """One column per solution (`shares[lab]`: category -> share), one line per category, and
+    each group's total."""
+    labs = list(shares)
+    names = set().union(*(set(s) for s in shares.values()))
+    lines = sorted(((n, max(shares[l].get(n, 0) for l in labs)) for n in names), key=sort_key)
+    rows = [["ns per sample"] + [f"{ns_per_sample[l]:.0f}" for l in labs]]
     for group in ORDER:
         members = [n for n, _ in lines if n.startswith(group)]
         if not members:
             continue
         for name in members:
-            rows.append([name] + [f"{100 * results[l][0].get(name, 0):.1f}%" for l in labs])
+            rows.append([name] + [f"{100 * shares[l].get(name, 0):.1f}%" for l in labs])
         if len(members) > 1:
             rows.append([f"{group}, all"] +
-                        [f"{100 * sum(results[l][0].get(n, 0) for n in members):.1f}%"
+                        [f"{100 * sum(shares[l].get(n, 0) for n in members):.1f}%"
                          for l in labs])
     header = ["share of render time"] + labs
     if markdown:
@@ -168,19 +166,16 @@ def main():
         sys.exit("profile: needs perf (Debian: apt-get install linux-perf; Ubuntu: "
                  "linux-tools-generic)")
     viewer = os.path.join(os.path.abspath(args.build), "viewer")
-    shares, results = {}, {}
+    shares, ns_per_sample = {}, {}
     with tempfile.TemporaryDirectory(prefix="pathlab-profile-") as work:
         for lab in LABS:
-            shares[lab], ns, spp = breakdown(viewer, args.scene, lab, args.seconds, args.size,
-                                             work)
-            results[lab] = (None, ns, spp)
+            shares[lab], ns_per_sample[lab], spp = breakdown(viewer, args.scene, lab,
+                                                             args.seconds, args.size, work)
             print(f"profiled {lab}: {spp} spp at {args.size}x{args.size}, 1 thread",
                   file=sys.stderr, flush=True)
-    for lab, lines in grouped(shares).items():
-        results[lab] = (lines, results[lab][1], results[lab][2])
     print(f"{os.path.basename(args.scene)}: each solution at 1 thread, {args.size}x{args.size}; "
           f"perf at {FREQUENCY} Hz, the render alone (N spp minus 1 spp)")
-    print(table(results, args.markdown))
+    print(table(grouped(shares), ns_per_sample, args.markdown))
 
 
 if __name__ == "__main__":

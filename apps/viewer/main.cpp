@@ -10,7 +10,6 @@
 #include "window_options.h"
 
 #include <cstdio>
-#include <exception>
 #include <filesystem>
 
 namespace {

@@ -1,5 +1,6 @@
 #include "pathlab/parse_number.h"
 
+#include <algorithm>
 #include <cmath>
 #include <locale>
 #include <sstream>
@@ -29,6 +30,16 @@ std::optional<float> parseFloat(std::string_view text) {
 #endif
     if (!std::isfinite(value)) return std::nullopt;
     return value;
+}
+
+std::vector<std::string_view> splitAt(std::string_view text, char separator) {
+    std::vector<std::string_view> pieces;
+    for (size_t at = 0;;) {
+        const size_t end = std::min(text.find(separator, at), text.size());
+        pieces.push_back(text.substr(at, end - at));
+        if (end == text.size()) return pieces;
+        at = end + 1;
+    }
 }
 
 } // namespace pathlab

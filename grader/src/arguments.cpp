@@ -3,6 +3,7 @@
 #include "grading_scenes.h"
 
 #include "pathlab/input_error.h"
+#include "pathlab/parse_number.h"
 #include "pathlab/this_process.h"
 
 #include <filesystem>
@@ -69,16 +70,13 @@ namespace {
 
 std::vector<int> cpuList(const std::string& option, const std::string& text) {
     std::vector<int> cpus;
-    size_t at = 0;
-    while (at <= text.size()) {
-        const size_t comma = std::min(text.find(',', at), text.size());
+    for (std::string_view piece : splitAt(text, ',')) {
         try {
-            cpus.push_back(std::stoi(text.substr(at, comma - at)));
+            cpus.push_back(std::stoi(std::string(piece)));
         } catch (const std::exception&) {
             throw InputError("option " + option + " expects core numbers like 0 or 1,2, got '" +
                              text + "'");
         }
-        at = comma + 1;
     }
     return cpus;
 }
@@ -167,11 +165,8 @@ Arguments parseArguments(int argc, char** argv) {
          [&](const std::string&, const std::string& ids) {
              if (ids.find_first_not_of(", ") == std::string::npos)
                  throw InputError("option --only expects submission ids, like alice or alice,bob");
-             for (size_t at = 0; at <= ids.size();) {
-                 const size_t comma = std::min(ids.find(',', at), ids.size());
-                 if (comma > at) a.only.push_back(ids.substr(at, comma - at));
-                 at = comma + 1;
-             }
+             for (std::string_view id : splitAt(ids, ','))
+                 if (!id.empty()) a.only.emplace_back(id);
          }},
         {"--seed", [&](const std::string& o,
                        const std::string& v) { a.seed = static_cast<uint64_t>(number(o, v, 0)); }},
