@@ -35,6 +35,15 @@ else()
     set(PATHLAB_NO_FP_CONTRACTION "")
 endif()
 
+# Math functions that never set errno (-fno-math-errno): GCC and clang then inline std::sqrt with
+# no branch around it. MSVC's sqrt does not set errno in the first place.
+check_cxx_compiler_flag(-fno-math-errno PATHLAB_HAS_NO_MATH_ERRNO)
+if(PATHLAB_HAS_NO_MATH_ERRNO)
+    set(PATHLAB_NO_MATH_ERRNO -fno-math-errno)
+else()
+    set(PATHLAB_NO_MATH_ERRNO "")
+endif()
+
 # pathlab_strict_warnings(TARGET...): warnings are errors in these targets when
 # PATHLAB_WARNINGS_AS_ERRORS is on: every target compiled from PathLab's own code (the
 # framework and its image plug-in, the labs, the viewer, the grader, the benchmark, the tests),

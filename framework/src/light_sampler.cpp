@@ -50,6 +50,7 @@ LightSampler::LightSampler(const Scene& scene) {
     std::vector<uint32_t> small, large;
     for (size_t i = 0; i < n; ++i) {
         pmf_[i] = static_cast<float>(power[i] / total);
+        lights_[i].inversePmf = static_cast<float>(total / power[i]);
         scaled[i] = power[i] / total * static_cast<double>(n);
         alias_[i] = static_cast<uint32_t>(i);
         (scaled[i] < 1.0 ? small : large).push_back(static_cast<uint32_t>(i));

@@ -90,24 +90,26 @@ Color PathContext::directLight(const Hit& hit, CallSite caller) {
     // back of an area light, is black.
     const float cosReceiver = dot(hit.normal, toLight);
     if (cosReceiver <= 0) return Color();
-    const float distance = std::sqrt(distance2);
+    // One division for the distances, then products.
+    const float inverseDistance = 1.0f / std::sqrt(distance2);
+    const float inverseDistance2 = inverseDistance * inverseDistance;
     Color arriving; // incident radiance × (geometry term) / pdf, before the receiver's cosine
     if (light.type == LightSource::Type::Point) {
-        arriving = light.intensity / distance2;
+        arriving = light.intensity * inverseDistance2;
     } else {
         // Only the front side emits; cosθ'·area = dot(-toLight/r, areaNormal/2).
         const float frontTimesHalf = -dot(toLight, light.areaNormal) * 0.5f;
         if (frontTimesHalf < 0) return Color();
-        const float cosTimesArea = frontTimesHalf / distance;
+        const float cosTimesArea = frontTimesHalf * inverseDistance;
         if (cosTimesArea <= 0) return Color();
-        arriving = light.Ke * (cosTimesArea / distance2);
+        arriving = light.Ke * (cosTimesArea * inverseDistance2);
     }
 
     ++shadowRays_;
     const Vec3 origin = offsetRayOrigin(hit, toLight);
     if (log_) log_->occlusion.push_back({origin, lightPosition});
     if (scene_.occluded(origin, lightPosition)) return Color();
-    return hit.material.Kd * arriving * (InvPi * cosReceiver / distance / pickProbability);
+    return hit.material.Kd * arriving * (InvPi * cosReceiver * inverseDistance * light.inversePmf);
 }
 
 } // namespace pathlab

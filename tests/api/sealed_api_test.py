@@ -66,7 +66,7 @@ FORBIDDEN = [
 DOCUMENTED_HEADERS = {
     "lab.h", "lab_list.h", "call_site.h", "color.h", "constants.h", "cosine_hemisphere.h", "hit.h",
     "material.h", "orthonormal_basis.h", "path_context.h", "pcg32.h", "ray.h", "sampler.h",
-    "scattering.h", "todo.h", "vec3.h",
+    "scattering.h", "small_angle_sin_cos.h", "todo.h", "vec3.h",
 }
 
 

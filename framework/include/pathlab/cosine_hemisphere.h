@@ -3,6 +3,7 @@
 
 #include "pathlab/constants.h"
 #include "pathlab/orthonormal_basis.h"
+#include "pathlab/small_angle_sin_cos.h"
 #include "pathlab/vec3.h"
 
 #include <algorithm>
@@ -15,20 +16,20 @@ namespace pathlab {
 /// a diffuse bounce carries the weight Kd and no π.
 inline Vec3 sampleCosineHemisphere(const Vec3& normal, Vec2 u) {
     // Concentric mapping of the square onto the disk (Shirley & Chiu), which keeps strata compact.
+    // The angle is π/4·t with |t| <= 1 in the wedges around x (φ) and around y (π/2 - φ, whose
+    // cosine and sine are φ's sine and cosine).
     const float sx = 2.0f * u.x - 1.0f;
     const float sy = 2.0f * u.y - 1.0f;
-    float r = 0, phi = 0;
-    if (sx != 0 || sy != 0) {
-        if (std::fabs(sx) > std::fabs(sy)) {
-            r = sx;
-            phi = (Pi / 4) * (sy / sx);
-        } else {
-            r = sy;
-            phi = (Pi / 2) - (Pi / 4) * (sx / sy);
-        }
+    float dx = 0, dy = 0;
+    if (std::fabs(sx) > std::fabs(sy)) {
+        const SinCos phi = sinCosSmallAngle((Pi / 4) * (sy / sx));
+        dx = sx * phi.cos;
+        dy = sx * phi.sin;
+    } else if (sy != 0) {
+        const SinCos phi = sinCosSmallAngle((Pi / 4) * (sx / sy));
+        dx = sy * phi.sin;
+        dy = sy * phi.cos;
     }
-    const float dx = r * std::cos(phi);
-    const float dy = r * std::sin(phi);
     const float dz = std::sqrt(std::max(0.0f, 1.0f - dx * dx - dy * dy));
     return OrthonormalBasis(normal).toWorld({dx, dy, dz});
 }

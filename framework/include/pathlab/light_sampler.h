@@ -21,6 +21,9 @@ struct LightSource {
     Vec3 a, b, c;       ///< a triangle's vertices, counter-clockwise
     Vec3 areaNormal;    ///< a triangle's cross(b - a, c - a): twice its area, out of its front
     Color Ke;           ///< a triangle's emitted radiance
+    /// 1 / the probability LightSampler::pick() returns this light: next-event estimation's
+    /// weight, so that a shadow ray multiplies rather than divides.
+    float inversePmf = 0;
 };
 
 /// Walker's alias method over the lights' powers: one table lookup and one comparison per pick.
