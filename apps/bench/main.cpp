@@ -49,7 +49,7 @@ int runBench(BenchOptions options) {
     const int threads = options.threads > 0
                             ? options.threads
                             : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    if (!options.jsonFile.empty()) writeFileAtomically(options.jsonFile, "{}\n"); // fail early
+    if (!options.jsonFile.empty()) checkWritable(options.jsonFile);
 
     BenchReport report;
     if (!options.peerOnly) {
@@ -61,16 +61,18 @@ int runBench(BenchOptions options) {
         }
     }
     for (int pathLength : options.peerPathLengths) {
-        std::fprintf(stderr, "bench: Embree's pathtracer at path length %d ...\n", pathLength);
+        if (!options.pathtracer.empty())
+            std::fprintf(stderr, "bench: Embree's pathtracer at path length %d ...\n", pathLength);
         report.peers.push_back(comparePeer(options, threads, pathLength));
     }
     report.memory.note = "not measured (--peer-only)";
     report.firstFrame.note = "not measured (--peer-only)";
     if (!options.peerOnly) {
-        std::fprintf(stderr, "bench: the viewer's first frame under Xvfb ...\n");
+        if (options.firstFrameRuns > 0)
+            std::fprintf(stderr, "bench: the viewer's first frame under Xvfb ...\n");
         report.firstFrame = measureFirstFrame((thisProgram().parent_path() / "viewer").string(),
                                               scenes.front(), options.firstFrameRuns);
-        std::fprintf(stderr, "bench: peak memory ...\n");
+        if (options.memoryFrames > 0) std::fprintf(stderr, "bench: peak memory ...\n");
         report.memory = measurePeakMemory(thisProgram(), scenes.front(), options);
     }
     printReport(report, stdout);

@@ -17,12 +17,30 @@ std::string readFile(const std::string& path) {
     return bytes.str();
 }
 
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Where `target` is written before the rename: beside it, so the rename stays in one file
+/// system. The process id keeps two processes writing one file from sharing a temporary.
+fs::path temporaryFor(const fs::path& target) {
+    return target.parent_path() /
+           ("." + target.filename().string() + ".tmp" + std::to_string(processId()));
+}
+
+} // namespace
+
+void checkWritable(const std::string& path) {
+    const fs::path temporary = temporaryFor(path);
+    const bool created = std::ofstream(temporary, std::ios::binary).good();
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    if (!created) throw InputError(path + ": cannot write the file (is its folder there?)");
+}
+
 void writeFileAtomically(const std::string& path, const std::string& text) {
-    namespace fs = std::filesystem;
     const fs::path target(path);
-    // The process id keeps two processes writing one file from sharing a temporary.
-    const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".tmp" +
-                                                       std::to_string(processId()));
+    const fs::path temporary = temporaryFor(target);
     {
         std::ofstream out(temporary, std::ios::binary);
         out << text;

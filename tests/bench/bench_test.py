@@ -12,6 +12,7 @@ how fast anything is.
 import json
 import math
 import os
+import signal
 import subprocess
 import sys
 import tempfile
@@ -105,7 +106,41 @@ def smoke(bench):
     if not memory["measured"]:
         sys.exit(f"peak memory not measured: {memory.get('note')}")
     positive(memory["peak_mib"], "peak memory")
-    print(f"bench ran; {len(scenes)} scene(s); JSON complete")
+    keeps_earlier_json_on_failure(bench)
+    print(f"bench ran; {len(scenes)} scene(s); JSON complete; a failed run keeps the earlier JSON")
+
+
+def keeps_earlier_json_on_failure(bench):
+    """A run that stops before its end, by bad input or interrupted while it measures, leaves the
+    JSON of an earlier run as it was, and no temporary file."""
+    with tempfile.TemporaryDirectory() as folder:
+        out = os.path.join(folder, "bench.json")
+        earlier = '{"scenes": []}\n'
+        with open(out, "w") as f:
+            f.write(earlier)
+
+        def unchanged(after):
+            with open(out) as f:
+                if f.read() != earlier:
+                    sys.exit(f"bench {after} replaced the JSON of an earlier run")
+            if os.listdir(folder) != ["bench.json"]:
+                sys.exit(f"bench {after} left files behind: {os.listdir(folder)}")
+
+        missing = os.path.join(folder, "missing.ecs")
+        result = subprocess.run([bench, "--scene", missing, "--json", out], capture_output=True,
+                                text=True, timeout=60)
+        if result.returncode != 2 or "missing.ecs" not in result.stderr:
+            sys.exit(f"bench on a missing scene: exit {result.returncode}, {result.stderr!r}")
+        unchanged("on a missing scene")
+
+        running = subprocess.Popen([bench, "--json", out], stdout=subprocess.DEVNULL,
+                                   stderr=subprocess.PIPE, text=True)
+        line = running.stderr.readline()  # "bench: measuring ...": past the start, into the work
+        running.send_signal(signal.SIGINT)
+        running.communicate(timeout=60)
+        if not line.startswith("bench: measuring"):
+            sys.exit(f"bench began with {line!r}, not with a scene")
+        unchanged("interrupted while it measured")
 
 
 def check_peer(peer, table):

@@ -15,4 +15,9 @@ std::string readFile(const std::string& path);
 /// naming the file if it cannot be written.
 void writeFileAtomically(const std::string& path, const std::string& text);
 
+/// Throws InputError naming the file unless writeFileAtomically(path, ...) could write it now,
+/// leaving a file already at `path` as it is: for a program that writes its result after
+/// minutes of work, to stop before them.
+void checkWritable(const std::string& path);
+
 } // namespace pathlab
