@@ -10,8 +10,8 @@ struct SinCos {
 /// sin x and cos x for |x| <= π/4, within a few ulp of the exact values: their Taylor series to
 /// x⁹ and x⁸, whose first terms left out are below 2e-9 and 2.5e-8 there (an ulp of 0.7 is 6e-8).
 /// Inline rather than a call to the C library's sincosf, which costs a call per diffuse bounce, and
-/// whose last bits differ between libraries, so that an image is the same bit for bit on every
-/// platform.
+/// whose last bits differ between libraries: one reason fewer for images to differ between
+/// platforms.
 inline SinCos sinCosSmallAngle(float x) {
     const float x2 = x * x;
     const float sinSeries =
