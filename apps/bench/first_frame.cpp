@@ -3,6 +3,7 @@
 #include "pathlab/child_process.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <vector>
 
@@ -36,6 +37,7 @@ FirstFrameLatency measureFirstFrame(const std::string& viewer, const BenchScene&
         f.note = "not measured: xvfb-run was not found (Debian package xvfb)";
         return f;
     }
+    std::fprintf(stderr, "bench: the viewer's first frame under Xvfb ...\n");
     std::vector<double> frames, images;
     // -a: a free display number; --frames 2: the second frame ends the run, after the first
     // image has been on screen.

@@ -61,18 +61,13 @@ int runBench(BenchOptions options) {
         }
     }
     for (int pathLength : options.peerPathLengths) {
-        if (!options.pathtracer.empty())
-            std::fprintf(stderr, "bench: Embree's pathtracer at path length %d ...\n", pathLength);
         report.peers.push_back(comparePeer(options, threads, pathLength));
     }
     report.memory.note = "not measured (--peer-only)";
     report.firstFrame.note = "not measured (--peer-only)";
     if (!options.peerOnly) {
-        if (options.firstFrameRuns > 0)
-            std::fprintf(stderr, "bench: the viewer's first frame under Xvfb ...\n");
         report.firstFrame = measureFirstFrame((thisProgram().parent_path() / "viewer").string(),
                                               scenes.front(), options.firstFrameRuns);
-        if (options.memoryFrames > 0) std::fprintf(stderr, "bench: peak memory ...\n");
         report.memory = measurePeakMemory(thisProgram(), scenes.front(), options);
     }
     printReport(report, stdout);

@@ -40,6 +40,7 @@ MemoryFigures measurePeakMemory(const std::string& self, const BenchScene& scene
         m.note = "skipped (--memory-frames 0)";
         return m;
     }
+    std::fprintf(stderr, "bench: peak memory ...\n");
     std::vector<std::string> argv = {self,
                                      "--memory-probe",
                                      "--memory-size",

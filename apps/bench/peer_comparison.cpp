@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <unistd.h>
 
@@ -55,6 +56,8 @@ PeerComparison comparePeer(const BenchOptions& options, int threads, int pathLen
         return c;
     }
 
+    // Said here, past the reasons to skip: the progress line names only what is measured.
+    std::fprintf(stderr, "bench: Embree's pathtracer at path length %d ...\n", pathLength);
     const BenchScene scene = peerSceneFromFile(options.peerScene, options.peerLightScale);
     const PathtracerJob embree{program, scene, c.width, c.height, c.maxPathLength, threads};
 
