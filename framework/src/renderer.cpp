@@ -168,7 +168,7 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
                                   // through TBB's, which may be another (the clang + libc++
                                   // build), it would arrive as an unknown object.
                                   try {
-                                      renderTile(tile);
+                                      renderTile(reverseTiles_ ? tilesX * tilesY - 1 - tile : tile);
                                   } catch (...) {
                                       failure.keep(std::current_exception());
                                   }

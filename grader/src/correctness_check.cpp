@@ -5,9 +5,11 @@
 #include "hypothesis_tests.h"
 #include "path_length.h"
 #include "rays_per_sample.h"
+#include "reproducibility_check.h"
 #include "seed_variance.h"
 
 #include "pathlab/input_error.h"
+#include "pathlab/todo.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,7 +23,8 @@ struct SceneRuns {
     std::vector<std::vector<double>> regionValues; ///< [statistic][seed]
     std::vector<std::vector<float>> images;        ///< one per seed
     RaysPerSample rays;                            ///< over all seeds (the lab's own counts)
-    std::string failure, failureKind;              ///< see RenderResult
+    bool stepsOpen = false; ///< the lab reported a TODO step not written yet (pathlab/todo.h)
+    std::string failure, failureKind; ///< see RenderResult
 
     /// The mean of the seeds' images, for the reports' pictures.
     std::vector<float> meanImage() const {
@@ -59,6 +62,7 @@ SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab l
         runs.failureKind = result.failureKind;
         return runs;
     }
+    runs.stepsOpen = result.process.output.find(TodoNotDoneWords) != std::string::npos;
     RayCounters rays;
     for (const RenderedImage& rendered : result.images) {
         rays += rendered.rays;
@@ -112,6 +116,9 @@ struct Attempt {
     RunFailure failure;
     double noise = -1; ///< see CorrectnessOutcome
     std::vector<LabGrade::Pictures> pictures;
+    /// The first seed's image of the noise scene (or of the first scene), rendered again by the
+    /// reproducibility check.
+    SeedImage firstImage;
 };
 
 /// One attempt of the correctness check over all scenes. `noise`: the figure of an earlier
@@ -126,6 +133,7 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
     std::vector<Comparison> comparisons;
     std::vector<double> allP;
     std::vector<PathLengthObservation> pathLengths; // lab 4 in the diffuse furnaces
+    bool stepsOpen = false;
     for (const GradingScene& scene : setup.scenes) {
         const SceneRuns runs = renderSeeds(setup, scene, lab, seedBase);
         if (!runs.failure.empty()) {
@@ -134,8 +142,11 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
                                runs.failureKind};
             return attempt;
         }
+        stepsOpen = stepsOpen || runs.stepsOpen;
         if (scene.reference.scene == r.noiseScene || attempt.noise < 0)
             attempt.noise = trimmedSampleVariance(runs.images, r.forLab(lab).correctnessSpp);
+        if (scene.reference.scene == r.noiseScene || !attempt.firstImage.scene)
+            attempt.firstImage = {&scene, seedBase, setup.threads, runs.images.front()};
         if (lab == Lab::Roulette && scene.furnace && scene.furnace->walls == FurnaceWalls::Diffuse)
             pathLengths.push_back({scene.furnace->continueProb, runs.rays.bounce});
         comparisons.push_back(compare(runs, scene.reference.forLab(lab), r.seeds));
@@ -250,7 +261,7 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
                                 "hidden scene has (a material, a light or a path the public scenes "
                                 "lack)");
     if (furnaceRejected) {
-        const std::vector<std::string> causes = likelyFurnaceCauses(lab, furnaces);
+        const std::vector<std::string> causes = likelyFurnaceCauses(lab, furnaces, stepsOpen);
         if (!causes.empty()) {
             details.push_back("likely cause: " + causes.front());
             // The furnaces' diagnosis is the most specific: it wins. Its name is the cause up to
@@ -293,7 +304,12 @@ CorrectnessOutcome checkCorrectness(const GraderSetup& setup, Lab lab) {
         }
         attempt = std::move(retry);
     }
-    check.passed = attempt.passed;
+    // The same seed must give the same image: a certain finding, where the statistics' causes
+    // are only likely, so it comes first and fails the check on its own.
+    Reproducibility reproducibility;
+    if (attempt.failure.empty() && attempt.firstImage.scene)
+        reproducibility = checkReproducibility(setup, lab, attempt.firstImage);
+    check.passed = attempt.passed && reproducibility.reproducible;
     outcome.noise = attempt.noise;
     outcome.pictures = std::move(attempt.pictures);
     check.score = check.passed ? check.maxScore : 0;
@@ -303,7 +319,16 @@ CorrectnessOutcome checkCorrectness(const GraderSetup& setup, Lab lab) {
             : "the unbiased image";
     std::vector<std::string>& details = attempt.details;
     const RunFailure& failure = attempt.failure;
-    if (check.passed) {
+    if (!reproducibility.reproducible) {
+        details.insert(details.begin(), reproducibility.details.begin(),
+                       reproducibility.details.end());
+        check.summary = (attempt.passed ? "mean radiance matches " + expected +
+                                              ", but the same seed gives different images"
+                                        : "mean radiance differs from " + expected +
+                                              " (twice, on fresh seeds), and the same seed gives "
+                                              "different images");
+        check.diagnosis = NotReproducibleDiagnosis;
+    } else if (check.passed) {
         check.summary = "mean radiance matches " + expected + parameterCheckText(setup, lab);
     } else if (!failure.empty()) {
         outcome.rendersFinished = false;

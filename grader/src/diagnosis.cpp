@@ -17,7 +17,7 @@ double furnaceValue(Lab lab, const FurnaceModel& m, const FurnaceBehaviour& b) {
     const double roulette =
         lab == Lab::Roulette ? std::pow(m.continueProb, 1 - b.rouletteDivisions) : 1;
     const int limit = b.fixedDepth >= 0 ? b.fixedDepth : m.maxDepth;
-    const int lastDepth = isDepthLimited(lab) ? limit + b.depthShift : 100000;
+    const int lastDepth = isDepthLimited(lab) || b.depthLimitKept ? limit + b.depthShift : 100000;
     // The expected weight of the paths that reach depth d by a camera, diffuse or specular ray.
     double camera = 1, diffuse = 0, specular = 0, value = 0;
     for (int d = 0; d <= lastDepth; ++d) {
@@ -40,10 +40,10 @@ struct Candidate {
 
 /// The known bugs of this lab (diagnosis_table.h), each with the behaviour that gives its
 /// furnace values; `depths`: the maxDepths the furnaces were rendered at.
-std::vector<Candidate> candidates(Lab lab, const std::vector<int>& depths) {
+std::vector<Candidate> candidates(Lab lab, const std::vector<int>& depths, bool stepsOpen) {
     std::vector<Candidate> list;
     for (const KnownBug& bug : knownBugs()) {
-        if (!(bug.labs & labBit(lab))) continue;
+        if (!(bug.labs & labBit(lab)) || !bug.fits(stepsOpen)) continue;
         FurnaceBehaviour b;
         bug.behave(b);
         if (!bug.perObservedDepth) {
@@ -96,14 +96,14 @@ std::string furnaceFormula(Lab lab, const FurnaceModel& m) {
     return text;
 }
 
-std::vector<std::string> likelyFurnaceCauses(Lab lab,
-                                             const std::vector<FurnaceObservation>& observations) {
+std::vector<std::string>
+likelyFurnaceCauses(Lab lab, const std::vector<FurnaceObservation>& observations, bool stepsOpen) {
     std::vector<std::pair<double, std::string>> matches; // (misfit, cause)
     std::vector<int> depths;
     for (const FurnaceObservation& o : observations)
         if (std::find(depths.begin(), depths.end(), o.model.maxDepth) == depths.end())
             depths.push_back(o.model.maxDepth);
-    for (const Candidate& c : candidates(lab, depths)) {
+    for (const Candidate& c : candidates(lab, depths, stepsOpen)) {
         bool explainsAll = true, tellsApart = false;
         double misfit = 0;
         for (const FurnaceObservation& o : observations) {

@@ -48,9 +48,10 @@ struct FurnaceObservation {
 /// lab, best first, each as a sentence for the student that names the lab's step
 /// ("... (TODO lab3.1)"); empty when none does. One furnace alone may leave several: in the
 /// mirror furnace a lab without emission after specular bounces and one without any bounce both
-/// give Le; the diffuse furnace tells them apart.
-std::vector<std::string> likelyFurnaceCauses(Lab lab,
-                                             const std::vector<FurnaceObservation>& observations);
+/// give Le; the diffuse furnace tells them apart. `stepsOpen`: whether the lab still reports a
+/// TODO step when it runs (a sentence about open steps fits only such a lab).
+std::vector<std::string>
+likelyFurnaceCauses(Lab lab, const std::vector<FurnaceObservation>& observations, bool stepsOpen);
 
 /// Why a lab's image holds NaN or infinite values, as far as the lab tells, naming its step.
 std::string likelyNonfiniteCause(Lab lab);

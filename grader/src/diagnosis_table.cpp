@@ -13,7 +13,7 @@ constexpr double Pi = 3.14159265358979;
 /// black, so they have no near-black stop.
 const std::array<ByLab<int>, 7> StepNumbers = {{
     {1, 1, 1, 1}, // Emission
-    {2, 2, 2, 0}, // DepthLimit
+    {2, 2, 2, 2}, // DepthLimit (lab 4's step 2 replaces it with roulette)
     {3, 3, 3, 2}, // FirstBounce
     {3, 4, 4, 4}, // DiffuseWeight
     {5, 4, 4, 3}, // Refraction
@@ -54,7 +54,17 @@ const std::vector<KnownBug>& knownBugs() {
          "the lab renders direct light only (its steps from {step} on are "
          "still open)",
          LabStep::FirstBounce, EveryLab,
-         [](FurnaceBehaviour& b) { b.diffuseWeight = b.mirrorWeight = 0; }},
+         [](FurnaceBehaviour& b) { b.diffuseWeight = b.mirrorWeight = 0; }, false,
+         WrittenSteps::SomeOpen},
+        // The same values from a lab whose steps are all written: what it does, not the stub.
+        {"bounces add nothing",
+         "the lab renders direct light only, although no step is left open: no bounce is traced, "
+         "or each adds 0. Is a probability or a weight 0 where it should not be? In C++ 1 / 3 "
+         "divides integers and is 0 (write 1.0f / 3); a pick that compares u with 0 never "
+         "picks (from {step} on)",
+         LabStep::FirstBounce, EveryLab,
+         [](FurnaceBehaviour& b) { b.diffuseWeight = b.mirrorWeight = 0; }, false,
+         WrittenSteps::AllDone},
         {"emission after a specular bounce missing",
          "a ray that left a mirror or a refraction "
          "(RayKind::Specular) must add hit.emitted, since next-event estimation never finds a "
@@ -103,6 +113,13 @@ const std::vector<KnownBug>& knownBugs() {
         {"divided by 1/3 instead of the chosen component's probability", "",
          LabStep::ProbabilityDivision, labBit(Lab::Importance),
          [](FurnaceBehaviour& b) { b.diffuseWeight = b.mirrorWeight = 3; }},
+        // Lab 3's depth test kept above lab 4's roulette: unbiased up to maxDepth, so the
+        // furnaces read the depth-limited values of labs 1-3.
+        {"a depth limit is still there",
+         "lab 4 ends paths only by roulette; a test of depth against ctx.maxDepth, kept from lab "
+         "3, cuts every path at maxDepth and darkens the image",
+         LabStep::DepthLimit, labBit(Lab::Roulette),
+         [](FurnaceBehaviour& b) { b.depthLimitKept = true; }},
         {"Russian-roulette weight missing", "a continued path must be divided by continueProb",
          LabStep::ProbabilityDivision, labBit(Lab::Roulette),
          [](FurnaceBehaviour& b) { b.rouletteDivisions = 0; }},

@@ -43,7 +43,17 @@ struct FurnaceBehaviour {
     bool emissionAfterSpecular = true;
     int depthShift = 0;  ///< labs 1-3: bounces beyond (or short of) maxDepth
     int fixedDepth = -1; ///< labs 1-3: a depth limit of its own, whatever maxDepth is (-1: none)
-    int rouletteDivisions = 1; ///< lab 4: how often a continued path is divided by continueProb
+    int rouletteDivisions = 1;   ///< lab 4: how often a continued path is divided by continueProb
+    bool depthLimitKept = false; ///< lab 4: paths also end at maxDepth, as in labs 1-3
+};
+
+/// Which labs a known bug's sentence fits by the steps they have written: the stub's TODO
+/// markers report themselves when they run (pathlab/todo.h), and a sentence about open steps
+/// would mislead a student who has written them all.
+enum class WrittenSteps {
+    Any,
+    SomeOpen, ///< the lab still reports a TODO step
+    AllDone,  ///< the lab reports none
 };
 
 /// A bug students make, recognised by the values it gives in the furnaces.
@@ -59,6 +69,12 @@ struct KnownBug {
     void (*behave)(FurnaceBehaviour&);
     /// One candidate per maxDepth the furnaces were rendered at, each rendering at that one.
     bool perObservedDepth = false;
+    WrittenSteps written = WrittenSteps::Any;
+
+    /// Whether the sentence fits a lab that does (or does not) still report open steps.
+    bool fits(bool stepsOpen) const {
+        return written == WrittenSteps::Any || stepsOpen == (written == WrittenSteps::SomeOpen);
+    }
 };
 
 /// Every known bug, best first where several explain the same values.

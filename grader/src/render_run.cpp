@@ -43,6 +43,7 @@ std::vector<std::string> viewerArguments(const RenderRequest& r, const std::stri
     if (!r.runner->sandboxed() && r.runner->implementation == Implementation::Solution)
         argv.push_back("--solution");
     if (r.threads > 0) argv.insert(argv.end(), {"--threads", std::to_string(r.threads)});
+    if (r.reverseTiles) argv.push_back("--reverse-tiles");
     return argv;
 }
 

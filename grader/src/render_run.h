@@ -48,7 +48,8 @@ struct RenderRequest {
     uint64_t seed = 0;
     int seeds = 1; ///< images for seeds seed .. seed+seeds-1, in one process
     int threads = 0;
-    std::string scratch; ///< a folder for the images and stats
+    std::string scratch;       ///< a folder for the images and stats
+    bool reverseTiles = false; ///< the viewer's --reverse-tiles
 };
 
 /// One seed's image, and where the viewer's --stats for it are. Those come from the lab's own

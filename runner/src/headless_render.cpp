@@ -18,6 +18,7 @@ HeadlessResult renderHeadless(const RenderOptions& options, const RenderScene& s
     const Camera camera(scene.scene().camera.value_or(scene.scene().framingCamera()), options.width,
                         options.height);
     Renderer renderer(scene, options.threads);
+    renderer.setReverseTiles(options.reverseTiles);
     HeadlessResult result{AccumulationBuffer(options.width, options.height), {}};
 
     const auto start = std::chrono::steady_clock::now();

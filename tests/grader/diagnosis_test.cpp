@@ -15,9 +15,11 @@ namespace {
 const FurnaceModel diffuse{FurnaceWalls::Diffuse, 0.5, 3, 0.8};
 const FurnaceModel mirror{FurnaceWalls::Mirror, 0.5, 3, 0.8};
 
-/// The first (likeliest) cause, or "" when there is none.
-std::string likeliest(Lab lab, const std::vector<FurnaceObservation>& observations) {
-    const std::vector<std::string> causes = likelyFurnaceCauses(lab, observations);
+/// The first (likeliest) cause, or "" when there is none, for a lab that still reports open
+/// TODO steps (`stepsOpen`) or not.
+std::string likeliest(Lab lab, const std::vector<FurnaceObservation>& observations,
+                      bool stepsOpen = true) {
+    const std::vector<std::string> causes = likelyFurnaceCauses(lab, observations, stepsOpen);
     return causes.empty() ? "" : causes.front();
 }
 
@@ -49,7 +51,7 @@ TEST_CASE("the furnace models of the scenes in models/", "[grader]") {
 }
 
 TEST_CASE("the diffuse furnace names known bugs with the lab's step", "[grader]") {
-    CHECK(likelyFurnaceCauses(Lab::Uniform, {{diffuse, 1.9375, 0.002}}).empty());
+    CHECK(likelyFurnaceCauses(Lab::Uniform, {{diffuse, 1.9375, 0.002}}, true).empty());
     // Forgetting the 1/3: each bounce weighs a/3, so 1.5 + 0.5/6 + 0.5/36 + 0.5/216.
     CHECK(contains(likeliest(Lab::Uniform, {{diffuse, 1.5995, 0.002}}),
                    "pick probability 1/3 (TODO lab2.4)"));
@@ -83,12 +85,14 @@ TEST_CASE("the furnace at two maxDepths names a lab that ignores ctx.maxDepth", 
     // A correct lab at both depths: nothing; one furnace alone cannot tell this cause.
     CHECK(likelyFurnaceCauses(Lab::Branching,
                               {{diffuse, 1.9375, 0.0005},
-                               {deeper, correctFurnaceValue(Lab::Branching, deeper), 0.0005}})
+                               {deeper, correctFurnaceValue(Lab::Branching, deeper), 0.0005}},
+                              true)
               .empty());
-    for (const std::string& cause : likelyFurnaceCauses(Lab::Branching, {{diffuse, 1.9, 0.0005}}))
+    for (const std::string& cause :
+         likelyFurnaceCauses(Lab::Branching, {{diffuse, 1.9, 0.0005}}, true))
         CHECK_FALSE(contains(cause, "ctx.maxDepth ignored"));
     // Lab 4 has no depth limit to ignore.
-    for (const std::string& cause : likelyFurnaceCauses(Lab::Roulette, ignoring))
+    for (const std::string& cause : likelyFurnaceCauses(Lab::Roulette, ignoring, true))
         CHECK_FALSE(contains(cause, "ctx.maxDepth ignored"));
 }
 
@@ -105,14 +109,14 @@ TEST_CASE("the mirror furnace names missing emission after specular bounces", "[
     // Alone, the mirror furnace cannot tell that bug from a lab without bounces, which also
     // shows Le; the diffuse furnace can (1 + a for the stub).
     const std::vector<std::string> alone =
-        likelyFurnaceCauses(Lab::Branching, {{mirror, 1.0, 0.0}});
+        likelyFurnaceCauses(Lab::Branching, {{mirror, 1.0, 0.0}}, true);
     REQUIRE(alone.size() == 2);
     const std::string stub = likeliest(Lab::Branching, {{diffuse, 1.5, 0.002}, {mirror, 1.0, 0.0}});
     CHECK(contains(stub, "direct light only"));
     // A bug the mirror furnace cannot see is still found when it accepts the lab.
     CHECK(contains(likeliest(Lab::Branching, {{diffuse, 2.8125, 0.002}, {mirror, 1.875, 0.0}}),
                    "emission counted twice"));
-    CHECK(likelyFurnaceCauses(Lab::Branching, {{mirror, 1.875, 0.0}}).empty());
+    CHECK(likelyFurnaceCauses(Lab::Branching, {{mirror, 1.875, 0.0}}, true).empty());
 }
 
 TEST_CASE("NaN and refraction causes name the lab's step", "[grader]") {
@@ -128,4 +132,30 @@ TEST_CASE("NaN and refraction causes name the lab's step", "[grader]") {
     CHECK(contains(likelyDirectionCause(Lab::Roulette), "(TODO lab4.4)"));
     CHECK(contains(likelyRefractionCause(Lab::Uniform), "(TODO lab2.4)"));
     CHECK(contains(likelyRefractionCause(Lab::Roulette), "(TODO lab4.3)"));
+}
+
+TEST_CASE("a lab 4 that kept lab 3's depth test is named", "[grader]") {
+    // Roulette above a depth test is unbiased up to maxDepth: the depth-limited series, at the
+    // rubric's maxDepth 3 and at the parameter check's 5: (1 - a^(D+2))/(1 - a).
+    const FurnaceModel parameterCheck{FurnaceWalls::Diffuse, 0.5, 5, 0.5};
+    const std::vector<FurnaceObservation> kept = {{diffuse, 1.9375, 0.002},
+                                                  {parameterCheck, 1.984375, 0.002}};
+    const std::string cause = likeliest(Lab::Roulette, kept);
+    CHECK(contains(cause, "a depth limit is still there: lab 4 ends paths only by roulette"));
+    CHECK(contains(cause, "(TODO lab4.2)"));
+    // Labs 1-3 have a depth limit to keep: the same values are right for them.
+    CHECK(likelyFurnaceCauses(Lab::Importance, kept, false).empty());
+}
+
+TEST_CASE("a lab whose steps are all written is told what it does, not what the stub did",
+          "[grader]") {
+    // Direct light only: 1 + a in the diffuse furnace, Le in the mirror furnace.
+    const std::vector<FurnaceObservation> directOnly = {{diffuse, 1.5, 0.002}, {mirror, 1.0, 0.0}};
+    const std::string stub = likeliest(Lab::Uniform, directOnly, true);
+    CHECK(contains(stub, "still open"));
+    const std::string written = likeliest(Lab::Uniform, directOnly, false);
+    CHECK(contains(written, "direct light only, although no step is left open"));
+    CHECK(contains(written, "1 / 3 divides integers"));
+    CHECK_FALSE(contains(written, "still open"));
+    CHECK(contains(written, "(from TODO lab2.3 on)"));
 }

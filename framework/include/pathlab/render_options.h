@@ -32,6 +32,9 @@ struct RenderOptions {
     LabParameters parameters;                                ///< --max-depth, --continue-prob
     uint64_t seed = 0;                                       ///< --seed
     int threads = 0;                                         ///< --threads; 0 = all cores
+    /// --reverse-tiles: the last tile first. The image stays the same for a lab that takes its
+    /// random numbers from ctx.sampler alone; the grader's reproducibility check relies on that.
+    bool reverseTiles = false;
 
     // Headless output
     std::string outputImage; ///< -o

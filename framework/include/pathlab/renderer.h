@@ -48,6 +48,10 @@ public:
         firstNonfinite_.reset();
     }
     int threads() const { return threads_; }
+    /// Renders the tiles from the last to the first (or back in order). Each sample's random
+    /// numbers come from its own stream, so the image does not change; a lab that draws random
+    /// numbers of its own, or keeps state between samples, renders another image.
+    void setReverseTiles(bool reverse) { reverseTiles_ = reverse; }
 
     static constexpr int TileSize = 16; ///< pixels per tile side
 
@@ -58,6 +62,7 @@ private:
     std::unique_ptr<Arena> arena_;
     RayCounters counters_;
     std::optional<NonfiniteSample> firstNonfinite_;
+    bool reverseTiles_ = false;
 };
 
 } // namespace pathlab
