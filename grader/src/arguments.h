@@ -24,6 +24,7 @@ struct Arguments {
     uint64_t seed = 1;
     int threads = 0;
     bool speed = true;
+    bool raceCheck = true; ///< submission, batch: the race check (race_check.h), where it can run
     bool onlyFigures = false; ///< make-references: only lab_figures.json
     std::string onlyScene;    ///< make-references: only this rubric scene's reference
     bool onlyHidden = false;  ///< make-references: only the hidden scenes' (into the cache)

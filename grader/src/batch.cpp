@@ -124,6 +124,7 @@ std::vector<std::string> sharedOptions(const Arguments& a) {
                                         "--scenes",     a.scenesDir.empty() ? "none" : a.scenesDir};
     if (a.revealHidden) options.push_back("--reveal-hidden");
     if (!a.speed) options.push_back("--no-speed");
+    if (!a.raceCheck) options.push_back("--no-race-check");
     return options;
 }
 
@@ -255,6 +256,11 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
     g.threads = a.workCpus.empty() ? a.threads : static_cast<int>(a.workCpus.size());
     g.seedBase = a.seed;
     g.measureSpeed = a.speed;
+    if (a.raceCheck) {
+        g.raceCheck = raceCheckRuntime(g.build, {a.workCpus, sandboxUserForThisProcess()});
+        if (!g.raceCheck.available())
+            std::fprintf(stderr, "race check skipped: %s\n", g.raceCheck.unavailable.c_str());
+    }
     // The time limits, scaled to this machine's speed now: the solutions' start-up timed as it
     // was when the references were made (outside the sandbox, on every core).
     GraderSetup probe;
@@ -361,9 +367,23 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
     const LabBuild build = labBuildOfThisGrader();
     const std::string kit = out + "/.kit";
     const std::string referenceCache = out + "/.references";
+    // Said once for the batch; a grading told --no-race-check does not try again.
+    bool raceCheck = a.raceCheck && !todo.empty();
+    if (raceCheck) {
+        const RaceCheckRuntime runtime =
+            raceCheckRuntime(build, {workCpus, sandboxUserForThisProcess()});
+        raceCheck = runtime.available();
+        std::fprintf(stderr, "race check: %s\n",
+                     raceCheck
+                         ? "each lab compiled with ThreadSanitizer and rendered with 2 threads"
+                         : ("skipped, no lab fails for it: " + runtime.unavailable).c_str());
+        log << timestamp()
+            << " race check: " << (raceCheck ? "on" : "skipped: " + runtime.unavailable) << "\n";
+    }
     const std::vector<std::string> childBase = [&] {
         std::vector<std::string> argv = {thisProgram().string(), "submission"};
-        const std::vector<std::string> shared = sharedOptions(a);
+        std::vector<std::string> shared = sharedOptions(a);
+        if (a.raceCheck && !raceCheck) shared.push_back("--no-race-check");
         argv.insert(argv.end(), shared.begin(), shared.end());
         argv.insert(argv.end(),
                     {"--kit", kit, "--timing-lock", timingLockFor(timingCpus), "--timing-cpus",

@@ -2,6 +2,7 @@
 
 #include "correctness_check.h"
 #include "noise_check.h"
+#include "race_verdict.h"
 #include "speed_check.h"
 
 namespace pathlab::grader {
@@ -45,6 +46,9 @@ LabGrade gradeLab(const GraderSetup& setup, Lab lab, StartUpTimes& startUps) {
     LabGrade grade;
     grade.lab = lab;
     CorrectnessOutcome correctness = checkCorrectness(setup, lab);
+    // A lab that crashed or hung has failed already; the race check would only do it again.
+    if (setup.raceCheck && correctness.rendersFinished)
+        addRaceVerdict(setup.raceCheck(lab), correctness.check);
     const bool correct = correctness.check.passed;
     grade.checks.push_back(correctness.check);
     grade.pictures = std::move(correctness.pictures);

@@ -4,6 +4,7 @@
 #include "check_kind.h"
 #include "diagnosis.h"
 #include "expectation.h"
+#include "race_report.h"
 #include "rays_per_sample.h"
 #include "render_run.h"
 #include "rubric.h"
@@ -11,6 +12,7 @@
 
 #include "pathlab/lab_parameters.h"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -101,6 +103,9 @@ struct GraderSetup {
     /// from the stored figures (lab_figures.json, by lab; 0 where none).
     bool timeWithoutSolutions = false;
     ByLab<double> storedSolutionSamplesPerSecond;
+    /// The race check of a submitted lab (race_check.h), made once its correctness renders
+    /// finished; its finding enters the correctness verdict (race_verdict.h). Empty: none.
+    std::function<RaceFinding(Lab)> raceCheck;
 };
 
 /// `startUps`: the grading's start-up measurements, shared by the labs it grades.

@@ -55,14 +55,17 @@ std::string compileFailure(const SandboxOutcome& o, const std::string& what) {
     return "";
 }
 
-/// Compiles `source` (a host path) as the labs of `implementation` into `object`.
+/// Compiles `source` (a host path) as the labs of `implementation` into `object`, with the
+/// build's flags and `extraFlags`.
 std::string compileObject(const LabBuild& build, const std::string& source,
                           const std::string& implementation, const std::string& object,
-                          const SandboxPolicy& policy) {
+                          const SandboxPolicy& policy,
+                          const std::vector<std::string>& extraFlags = {}) {
     const std::string name = fs::path(source).filename().string();
     SandboxRun run;
     run.command = {build.compiler};
     run.command.insert(run.command.end(), build.flags.begin(), build.flags.end());
+    run.command.insert(run.command.end(), extraFlags.begin(), extraFlags.end());
     run.command.insert(run.command.end(),
                        {"-DPATHLAB_IMPL=" + implementation, "-I/pathlab/include"});
     // The table alone sees the runner's headers; a lab file sees the student API (lab.h).
@@ -86,11 +89,13 @@ std::string compileObject(const LabBuild& build, const std::string& source,
     return "";
 }
 
-/// Links `objects` into the shared library `library`.
+/// Links `objects` into the shared library `library`, with `extraFlags`.
 std::string linkLibrary(const LabBuild& build, const std::vector<std::string>& objects,
-                        const std::string& library, const SandboxPolicy& policy) {
+                        const std::string& library, const SandboxPolicy& policy,
+                        const std::vector<std::string>& extraFlags = {}) {
     SandboxRun run;
     run.command = {build.compiler, "-shared", "-o", "labs.so"};
+    run.command.insert(run.command.end(), extraFlags.begin(), extraFlags.end());
     for (size_t i = 0; i < objects.size(); ++i) {
         const std::string inside = "/objects/" + std::to_string(i) + ".o";
         run.files.push_back({objects[i], inside});
@@ -127,10 +132,16 @@ LabBuild loadLabBuild(const std::string& path) {
     if (!in) throw InputError(path + ": missing (it is written when PathLab is configured)");
     try {
         const nlohmann::json j = nlohmann::json::parse(in);
-        return {j.at("compiler"),  j.at("flags").get<std::vector<std::string>>(),
-                j.at("include"),   j.at("runner_include"),
-                j.at("lab_table"), j.at("stubs"),
-                j.at("solutions"), j.at("viewer")};
+        return {j.at("compiler"),
+                j.at("flags").get<std::vector<std::string>>(),
+                j.at("include"),
+                j.at("runner_include"),
+                j.at("lab_table"),
+                j.at("stubs"),
+                j.at("solutions"),
+                j.at("viewer"),
+                j.value("race_check_viewer", ""),
+                j.value("race_check_flags", std::vector<std::string>{})};
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ": " + e.what());
     }
@@ -198,6 +209,18 @@ LabKit buildLabKit(const LabBuild& build, const std::string& folder, const Sandb
     return kit;
 }
 
+namespace {
+
+/// The parts of lab `lab`'s library: its object, the table, and the stubs for the other labs.
+std::vector<std::string> libraryParts(const LabKit& kit, Lab lab, const std::string& object) {
+    std::vector<std::string> parts = {object, kit.tableObject};
+    for (Lab other : AllLabs)
+        if (other != lab) parts.push_back(kit.stubObjects[other]);
+    return parts;
+}
+
+} // namespace
+
 SubmissionLibrary buildSubmissionLibrary(const LabBuild& build, const LabKit& kit,
                                          const std::string& sources, const std::string& folder,
                                          const SandboxPolicy& policy) {
@@ -214,14 +237,25 @@ SubmissionLibrary buildSubmissionLibrary(const LabBuild& build, const LabKit& ki
     for (Lab lab : AllLabs) {
         if (result.labs[lab].status != LabCompilation::Status::Compiled) continue;
         // This lab's object; the stubs, which load and run nothing, for the others.
-        std::vector<std::string> parts = {objectOf(lab), kit.tableObject};
-        for (Lab other : AllLabs)
-            if (other != lab) parts.push_back(kit.stubObjects[other]);
         const std::string library = folder + "/labs-" + std::string(labName(lab)) + ".so";
-        result.problem[lab] = linkLibrary(build, parts, library, policy);
+        result.problem[lab] =
+            linkLibrary(build, libraryParts(kit, lab, objectOf(lab)), library, policy);
         if (result.problem[lab].empty()) result.library[lab] = library;
     }
     return result;
+}
+
+std::string buildRaceCheckLibrary(const LabBuild& build, const LabKit& kit, Lab lab,
+                                  const std::string& sources, const std::string& folder,
+                                  const SandboxPolicy& policy, std::string& library) {
+    const std::string stem = folder + "/" + std::string(labName(lab)) + "-tsan";
+    std::string failure = compileObject(build, sources + "/" + labFile(lab), "student", stem + ".o",
+                                        policy, build.raceCheckFlags);
+    if (failure.empty())
+        failure = linkLibrary(build, libraryParts(kit, lab, stem + ".o"), stem + ".so", policy,
+                              build.raceCheckFlags);
+    if (failure.empty()) library = stem + ".so";
+    return failure;
 }
 
 } // namespace pathlab::grader

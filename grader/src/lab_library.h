@@ -24,6 +24,10 @@ struct LabBuild {
     std::string stubs;         ///< labs/: the stubs stand in for a lab that is missing or broken
     std::string solutions;     ///< solutions/
     std::string viewer;        ///< the submission viewer
+    /// The race check's (race_check.h): the submission viewer linked with ThreadSanitizer ("" in
+    /// a build without it), and the flags a lab is compiled and linked with for it.
+    std::string raceCheckViewer;
+    std::vector<std::string> raceCheckFlags;
 };
 
 /// Reads the build description beside the grader; throws InputError if it is missing.
@@ -66,5 +70,12 @@ struct SubmissionLibrary {
 SubmissionLibrary buildSubmissionLibrary(const LabBuild& build, const LabKit& kit,
                                          const std::string& sources, const std::string& folder,
                                          const SandboxPolicy& policy);
+
+/// Compiles lab `lab`'s file in `sources` again, instrumented with `build.raceCheckFlags`, and
+/// links it as buildSubmissionLibrary does into `folder`/labs-LAB-tsan.so, whose path it puts in
+/// `library`. Returns why it could not, or "".
+std::string buildRaceCheckLibrary(const LabBuild& build, const LabKit& kit, Lab lab,
+                                  const std::string& sources, const std::string& folder,
+                                  const SandboxPolicy& policy, std::string& library);
 
 } // namespace pathlab::grader

@@ -3,11 +3,9 @@
 #include "check_support.h"
 #include "hypothesis_tests.h"
 #include "rays_per_sample.h"
+#include "timing_lock.h"
 
 #include <algorithm>
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
 
 namespace pathlab::grader {
 
@@ -26,28 +24,6 @@ LabRunner timedRunner(const LabRunner& runner, const TimingPolicy& timing) {
     if (!timing.cpus.empty()) (timed.sandboxed() ? timed.sandbox.cpus : timed.cpus) = timing.cpus;
     return timed;
 }
-
-/// Holds an exclusive lock on a file while it lives (none for an empty path), so that the timed
-/// series of concurrent gradings take turns.
-class TimingLock {
-public:
-    explicit TimingLock(const std::string& path) {
-        if (path.empty()) return;
-        // Shared by every batch on the machine, whoever runs it: a lock file another user made is
-        // still locked through a read-only descriptor.
-        fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
-        if (fd_ < 0) fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-        if (fd_ >= 0) ::flock(fd_, LOCK_EX);
-    }
-    ~TimingLock() {
-        if (fd_ >= 0) ::close(fd_); // closing releases the lock
-    }
-    TimingLock(const TimingLock&) = delete;
-    TimingLock& operator=(const TimingLock&) = delete;
-
-private:
-    int fd_ = -1;
-};
 
 /// The fixed cost of a run (start-up, loading, building Embree's BVH), measured by rendering one
 /// pixel of `lab`, so that samples/s counts rendering alone and cannot be reported by the lab

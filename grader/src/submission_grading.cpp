@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 
 namespace pathlab::grader {
@@ -70,6 +71,24 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
         setup.threads = grader.threads;
         setup.measureSpeed = grader.measureSpeed;
         setup.runSeconds = grader.runSeconds;
+        if (grader.raceCheck.available()) {
+            RaceCheckRun races;
+            races.build = grader.build;
+            races.kit = grader.kit;
+            races.runtime = grader.raceCheck;
+            races.sources = sources;
+            races.folder = build;
+            races.policy = policy;
+            races.timingCpus = grader.timing.cpus;
+            races.timingLock = grader.timing.lockFile;
+            races.seed = grader.seedBase;
+            setup.raceCheck = [races, id = outcome.id](Lab lab) {
+                const RaceFinding finding = checkRaces(races, lab);
+                std::fprintf(stderr, "%s: %s: race check, %.1f s\n", id.c_str(),
+                             std::string(labName(lab)).c_str(), finding.seconds);
+                return finding;
+            };
+        }
         StartUpTimes startUps;        // this submission's: its labs' libraries are its own
         std::string broken, unlinked; // names of the labs that do not compile, do not link
         for (Lab lab : AllLabs) {

@@ -4,6 +4,7 @@
 
 #include "grading.h"
 #include "lab_library.h"
+#include "race_check.h"
 #include "reports.h"
 #include "submission_intake.h"
 
@@ -25,6 +26,8 @@ struct SubmissionGrader {
     bool measureSpeed = true;
     double runSeconds = 0;  ///< each render's time limit (GraderSetup::runSeconds)
     std::string scenesHash; ///< grading_scenes.h: recorded in result.json with the rubric's hash
+    /// The race check (race_check.h); when unavailable, no lab is checked, none failed for it.
+    RaceCheckRuntime raceCheck;
 };
 
 struct SubmissionOutcome {

@@ -102,6 +102,10 @@ def make_class(root, outside, port):
     write(os.path.join(subs, "one_broken", "uniform.cpp"), '#include "pathlab/lab.h"\nthis is not C++;\n')
     expected["one_broken"] = ({"branching": 10, "uniform": 0}, "does not compile: uniform", "does not compile")
     write(os.path.join(subs, "nothing", "README.txt"), "I will hand it in later\n")
+    # Races between render threads that leave the image as it is, which only the race check sees.
+    for lab, text in racy_labs().items():
+        write(os.path.join(subs, "racy", lab + ".cpp"), text)
+    expected["racy"] = ({"uniform": 0, "importance": 0}, "graded", "data race between render threads")
     expected["nothing"] = ({}, "no lab files found", "not submitted")
 
     # Hostile.
@@ -138,6 +142,53 @@ def make_class(root, outside, port):
         z.write(os.path.join(SOLUTIONS, "branching.cpp"), "branching.cpp")
     expected["zip_slip_and_bomb"] = ({"branching": 10}, "graded", "mean radiance matches")
     return subs, expected
+
+
+# The reference solutions with shared state their images never use: a global counter, and a
+# function-local static that every thread reads and writes. The line of each race, as feedback
+# names it, is the line holding the marker comment.
+RACES = {
+    "uniform": ("Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {\n",
+                "int samplesTraced = 0;\n\n", "    ++samplesTraced; // RACE\n", "samplesTraced"),
+    "importance": ("Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {\n", "",
+                   "    static int deepest = 0;\n    if (depth > deepest) deepest = depth; // RACE\n",
+                   "deepest"),
+}
+
+
+def racy_labs():
+    """{lab: source}: each lab of RACES, made from its reference solution."""
+    labs = {}
+    for lab, (signature, before, after, _) in RACES.items():
+        text = open(os.path.join(SOLUTIONS, lab + ".cpp")).read()
+        check(signature in text, f"solutions/{lab}.cpp has the line the racy lab is made at")
+        labs[lab] = text.replace(signature, before + signature + after)
+    return labs
+
+
+def race_lines(labs):
+    """{lab: 'labs/LAB.cpp:N: data race between render threads on `VARIABLE`'}, as feedback says."""
+    lines = {}
+    for lab, text in labs.items():
+        number = next(i for i, line in enumerate(text.splitlines(), 1) if "// RACE" in line)
+        lines[lab] = f"labs/{lab}.cpp:{number}: data race between render threads on `{RACES[lab][3]}`"
+    return lines
+
+
+def races_found(out):
+    """The race check's verdicts: the racy labs' lines named in feedback.json, and no race in the
+    correct submission's labs."""
+    feedback = json.load(open(os.path.join(out, "submissions", "racy", "feedback.json")))
+    details = {lab["lab"]: " ".join(c["details"][0] if c["details"] else "" for c in lab["checks"]
+                                    if c["name"] == "correctness") for lab in feedback["labs"]}
+    for lab, line in race_lines(racy_labs()).items():
+        check(details.get(lab, "").startswith(line), f"racy {lab}: feedback.json names the race: {line}"
+              + ("" if details.get(lab, "").startswith(line) else f" (got: {details.get(lab)})"))
+    correct = json.load(open(os.path.join(out, "submissions", "correct", "feedback.json")))
+    clean = [lab["lab"] for lab in correct["labs"] for c in lab["checks"] if c["name"] == "correctness"
+             and any(d.startswith("no data race between render threads") for d in c["details"])]
+    check(sorted(clean) == sorted(LABS), "the reference solutions: the race check ran on each lab and "
+          f"found no race (said for {sorted(clean)})")
 
 
 def test_rubric(root):
@@ -224,6 +275,7 @@ def main():
         check(run.returncode == 0, "grader batch finishes with status 0 whatever the submissions did")
         print(f"batch of {len(expected)} submissions with --jobs 2: {seconds:.0f} s", flush=True)
         rows = verdicts(out, expected)
+        races_found(out)
 
         # The hostile submissions had no effect outside their sandboxes.
         check(os.listdir(outside) == [], "nothing was written outside the sandboxes' scratch folders")

@@ -1,0 +1,35 @@
+#pragma once
+/// The lock that keeps the timed runs of concurrent gradings (grader batch's jobs, batches on one
+/// machine) from running at once on the timing core: the frame-rate check's series, and the race
+/// check's render, which needs two cores.
+
+#include <fcntl.h>
+#include <string>
+#include <sys/file.h>
+#include <unistd.h>
+
+namespace pathlab::grader {
+
+/// Holds an exclusive lock on a file while it lives (none for an empty path), so that the timed
+/// series of concurrent gradings take turns.
+class TimingLock {
+public:
+    explicit TimingLock(const std::string& path) {
+        if (path.empty()) return;
+        // Shared by every batch on the machine, whoever runs it: a lock file another user made is
+        // still locked through a read-only descriptor.
+        fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+        if (fd_ < 0) fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+        if (fd_ >= 0) ::flock(fd_, LOCK_EX);
+    }
+    ~TimingLock() {
+        if (fd_ >= 0) ::close(fd_); // closing releases the lock
+    }
+    TimingLock(const TimingLock&) = delete;
+    TimingLock& operator=(const TimingLock&) = delete;
+
+private:
+    int fd_ = -1;
+};
+
+} // namespace pathlab::grader
