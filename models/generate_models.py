@@ -285,13 +285,46 @@ def refraction_check():
     return n
 
 
+# mixed_surfaces' two-component materials. Pick probability of the diffuse component by
+# strength = reduceMax | channel sum or average | luminance (Rec. 709):
+#   glossy (red Kd + teal Ks):      0.64 | 0.535 | 0.41
+#   translucent (red Kd + cyan Kt): 0.615 | 0.505 | 0.44
+GLOSSY_KD, GLOSSY_KS = (0.8, 0.1, 0.02), (0.05, 0.45, 0.3)
+TRANSLUCENT_KD, TRANSLUCENT_KT = (0.8, 0.2, 0.02), (0.05, 0.5, 0.45)
+
+
+def diffuse_pick_probabilities(kd, other):
+    """The diffuse component's pick probability beside `other` by each strength: reduceMax,
+    channel sum (the average gives the same), luminance."""
+    strengths = (max, sum, lambda k: 0.2126 * k[0] + 0.7152 * k[1] + 0.0722 * k[2])
+    return [s(kd) / (s(kd) + s(other)) for s in strengths]
+
+
+def check_colours_tell_strengths_apart(name, kd, other):
+    """A lab that picks by one strength and divides by another's probability is off by their
+    ratio: at least 8% apart, so the grader sees it."""
+    p = diffuse_pick_probabilities(kd, other)
+    for i in range(3):
+        for j in range(i):
+            assert abs(p[i] / p[j] - 1) > 0.08, f"{name}: strengths give alike probabilities {p}"
+    # Each channel's reflectance mostly from one component: red diffuse, green and blue not.
+    assert kd[0] > 4 * other[0] and other[1] > 2 * kd[1] and other[2] > 2 * kd[2], name
+
+
 def mixed_surfaces():
     """A room whose surfaces mix a diffuse component with a mirror (Kd+Ks) or a transparent one
-    (Kd+Kt) of the same strength, lit by one lamp that faces one wall: what a diffuse bounce
-    brings back depends strongly on its direction, so a lab that draws diffuse directions from
-    part of the hemisphere only (a random number reused from the component pick, one number for
-    both coordinates, the wrong side of a surface hit from behind) gets the wrong mean, which the
-    furnaces, alike in every direction, cannot show."""
+    (Kd+Kt), lit by one lamp that faces one wall: what a diffuse bounce brings back depends
+    strongly on its direction, so a lab that draws diffuse directions from part of the hemisphere
+    only (a random number reused from the component pick, one number for both coordinates, the
+    wrong side of a surface hit from behind) gets the wrong mean, which the furnaces, alike in
+    every direction, cannot show.
+
+    The two components differ in colour: a red diffuse one beside a teal mirror or a cyan glass
+    whose greens and blues are strong. Their strengths by the largest channel (reduceMax), the
+    channel sum or average, and the luminance give clearly different pick probabilities (see
+    GLOSSY_KD), and each channel's light comes mostly from one component: a lab that picks
+    with one strength and divides by another's probability makes the red channel too dark and
+    the blue too bright, or the reverse, which no grey material could show."""
     mesh = Mesh()
     # A box x in [-1, 1], y in [0, 2], z in [0, 2], open at z = 0 where the camera looks in, so
     # light arrives from the back more than from the front. Seen from the camera (at z < 0
@@ -315,10 +348,12 @@ def mixed_surfaces():
     for name, material, centre, radius in spheres:
         mesh.sphere(mesh.group(name, material), centre, radius, 16, 8, outward=True, smooth=True)
     check(mesh, "mixed_surfaces")
+    check_colours_tell_strengths_apart("glossy", GLOSSY_KD, GLOSSY_KS)
+    check_colours_tell_strengths_apart("translucent", TRANSLUCENT_KD, TRANSLUCENT_KT)
     n = mesh.write(os.path.join(HERE, "mixed_surfaces.obj"), "mixed_surfaces.mtl")
     write_mtl(os.path.join(HERE, "mixed_surfaces.mtl"), [
-        ("glossy", [("Kd", (0.45, 0.45, 0.45)), ("Ks", (0.45, 0.45, 0.45))]),
-        ("translucent", [("Kd", (0.45, 0.45, 0.45)), ("Kt", (0.45, 0.45, 0.45)), ("Ni", 1.5)]),
+        ("glossy", [("Kd", GLOSSY_KD), ("Ks", GLOSSY_KS)]),
+        ("translucent", [("Kd", TRANSLUCENT_KD), ("Kt", TRANSLUCENT_KT), ("Ni", 1.5)]),
         ("bright", [("Kd", (0.8, 0.8, 0.8))]),
         ("dark", [("Kd", (0.25, 0.25, 0.25))]),
         ("lamp", [("Kd", (0.5, 0.5, 0.5)), ("Ke", (6.0, 6.0, 6.0))]),

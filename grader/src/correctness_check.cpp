@@ -211,6 +211,7 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
                                     (sceneRejected[s] ? HiddenSceneDiffers : HiddenSceneMatches));
         } else if (sceneRejected[s]) {
             std::string line = scene.name + ": observed/expected";
+            std::vector<ChannelInterval> intervals;
             for (int ch = 0; ch < 3; ++ch) {
                 const double ratio = c.observed[ch].mean / e.mean[ch];
                 const double half = critical *
@@ -218,6 +219,7 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
                                     e.mean[ch];
                 line += std::string(" ") + channel[ch] + " " + fixed(ratio, 3) + " [" +
                         fixed(ratio - half, 3) + ", " + fixed(ratio + half, 3) + "]";
+                intervals.push_back({ratio - half, ratio + half});
             }
             details.push_back(line);
             std::string tiles;
@@ -237,9 +239,19 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
                                   " tiles differ (column,row from the top left):" + tiles);
             if (scene.reference.scene == "mixed_surfaces" && !furnaceRejected &&
                 !refractionRejected) {
-                const std::string cause = likelyDirectionCause(lab);
-                details.push_back("likely cause: " + cause);
-                if (diagnosis.empty()) diagnosis = cause.substr(0, cause.find(':'));
+                // Channels off in opposite ways point to the pick's probabilities, channels off
+                // alike to the diffuse directions (channelsOffOppositeWays). Lab 1 picks nothing:
+                // it is told only what differs.
+                const bool opposite = channelsOffOppositeWays(intervals);
+                const std::string cause =
+                    opposite ? likelyPickDivideCause(lab) : likelyDirectionCause(lab);
+                if (!cause.empty()) {
+                    details.push_back("likely cause: " + cause);
+                    if (diagnosis.empty()) diagnosis = cause.substr(0, cause.find(':'));
+                } else if (opposite) {
+                    details.push_back(scene.name +
+                                      ": some colour channels are too bright and others too dark");
+                }
             }
             if (scene.reference.scene == "refraction_check" && !furnaceRejected) {
                 const std::string cause = likelyRefractionCause(lab);

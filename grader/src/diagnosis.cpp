@@ -136,6 +136,16 @@ std::string likelyDirectionCause(Lab lab) { return hintFor(HintTopic::DiffuseDir
 
 std::string likelyRefractionCause(Lab lab) { return hintFor(HintTopic::Refraction, lab); }
 
+bool channelsOffOppositeWays(const std::vector<ChannelInterval>& channels) {
+    const bool tooBright = std::any_of(channels.begin(), channels.end(),
+                                       [](const ChannelInterval& c) { return c.low > 1; });
+    const bool tooDark = std::any_of(channels.begin(), channels.end(),
+                                     [](const ChannelInterval& c) { return c.high < 1; });
+    return tooBright && tooDark;
+}
+
+std::string likelyPickDivideCause(Lab lab) { return hintFor(HintTopic::PickDivideMismatch, lab); }
+
 double furnaceValueWithBug(Lab lab, const FurnaceModel& model, const KnownBug& bug, int depth) {
     FurnaceBehaviour b;
     bug.behave(b);

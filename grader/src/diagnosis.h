@@ -60,6 +60,24 @@ std::string likelyNonfiniteCause(Lab lab);
 /// accept the lab: a diffuse direction drawn from part of the hemisphere, naming the step.
 std::string likelyDirectionCause(Lab lab);
 
+/// One colour channel's observed/expected over a whole image: its confidence interval.
+struct ChannelInterval {
+    double low = 1, high = 1;
+};
+
+/// Whether one channel is surely too bright (its interval above 1) and another surely too dark.
+/// On models/mixed_surfaces, whose two-component materials are red diffuse beside a teal mirror
+/// or cyan glass, each channel's light comes mostly through one component: a lab that divides by
+/// another probability than the one it picked with weighs one component too much and the other
+/// too little, so red and blue go opposite ways, while a wrong diffuse direction changes the
+/// light every channel gathers diffusely the same way.
+bool channelsOffOppositeWays(const std::vector<ChannelInterval>& channels);
+
+/// What mixed_surfaces' channels off in opposite ways mean, when the furnaces and the refraction
+/// check accept the lab: the probability divided by is not the one picked with, naming the step;
+/// empty for lab 1, which picks nothing.
+std::string likelyPickDivideCause(Lab lab);
+
 /// What a wrong view through a glass sphere means, when the furnaces (which hold no glass)
 /// accept the lab, naming its step.
 std::string likelyRefractionCause(Lab lab);

@@ -153,6 +153,20 @@ const std::vector<Hint>& hints() {
          "coordinates), or the direction drawn around a normal that does not face the incoming "
          "ray? diffuseRay(hit, ctx.sampler.get2D()) with a fresh get2D() after the pick",
          LabStep::DiffuseWeight},
+        {HintTopic::PickDivideMismatch, labBit(Lab::Uniform),
+         "pick and division disagree: the probability you divide by must be the one you picked "
+         "with, 1/3 for each of the three components; on mixed_surfaces, whose red diffuse "
+         "components sit beside teal mirrors and cyan glass, a lab that divides by any other "
+         "number makes some colour channels too bright and others too dark",
+         LabStep::ProbabilityDivision},
+        {HintTopic::PickDivideMismatch, labBit(Lab::Importance) | labBit(Lab::Roulette),
+         "pick and division disagree: the probability you divide by must be the one you picked "
+         "with; on mixed_surfaces, whose red diffuse components sit beside teal mirrors and cyan "
+         "glass, strengths by luminance, channel sum or average give other probabilities than "
+         "by reduceMax, so a lab that picks by one and divides by the other's probability makes "
+         "some colour channels too bright and others too dark; compute the strengths once and "
+         "use them for both",
+         LabStep::ProbabilityDivision},
         {HintTopic::Refraction, EveryLab,
          "the view through the glass sphere is wrong: the Kt component must trace "
          "refractionRay(ray, hit), which bends the ray by Ni and turns into a mirror ray under "

@@ -87,9 +87,14 @@ std::string bugSentence(const KnownBug& bug, Lab lab, int depth = -1);
 /// What a hint explains, where the furnaces say nothing.
 enum class HintTopic {
     NonfiniteRadiance, ///< NaN or infinite values in the image
-    DiffuseDirection,  ///< mixed_surfaces wrong, the furnaces and the refraction check right
-    Refraction,        ///< the view through the glass sphere wrong, the furnaces right
-    TooNoisy,          ///< the noise check failed
+    /// mixed_surfaces wrong, not its channels off in opposite ways; the furnaces and the
+    /// refraction check right
+    DiffuseDirection,
+    /// mixed_surfaces wrong with some colour channel too bright and another too dark, the
+    /// furnaces and the refraction check right; labs 2-4 only (lab 1 picks nothing)
+    PickDivideMismatch,
+    Refraction, ///< the view through the glass sphere wrong, the furnaces right
+    TooNoisy,   ///< the noise check failed
 };
 
 struct Hint {

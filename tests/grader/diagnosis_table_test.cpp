@@ -110,4 +110,7 @@ TEST_CASE("every lab has a hint on every topic", "[grader]") {
     for (HintTopic topic : {HintTopic::NonfiniteRadiance, HintTopic::DiffuseDirection,
                             HintTopic::Refraction, HintTopic::TooNoisy})
         for (Lab lab : AllLabs) CHECK_FALSE(hintFor(topic, lab).empty());
+    // Lab 1 picks no component, so it has no pick to disagree with its division.
+    for (Lab lab : AllLabs)
+        CHECK(hintFor(HintTopic::PickDivideMismatch, lab).empty() == (lab == Lab::Branching));
 }

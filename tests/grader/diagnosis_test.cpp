@@ -159,3 +159,23 @@ TEST_CASE("a lab whose steps are all written is told what it does, not what the 
     CHECK_FALSE(contains(written, "still open"));
     CHECK(contains(written, "(from TODO lab2.3 on)"));
 }
+
+TEST_CASE("mixed_surfaces' channels off in opposite ways point to the pick, alike to the "
+          "directions",
+          "[grader]") {
+    // A pick by luminance, a division by reduceMax: red too dark, blue too bright.
+    CHECK(channelsOffOppositeWays({{0.80, 0.84}, {1.05, 1.09}, {1.20, 1.26}}));
+    CHECK(channelsOffOppositeWays({{1.10, 1.14}, {0.97, 1.01}, {0.80, 0.86}}));
+    // A diffuse direction from part of the hemisphere: every channel too dark, or too bright,
+    // by different amounts.
+    CHECK_FALSE(channelsOffOppositeWays({{0.70, 0.74}, {0.85, 0.89}, {0.90, 0.96}}));
+    CHECK_FALSE(channelsOffOppositeWays({{1.20, 1.26}, {1.05, 1.09}, {0.98, 1.03}}));
+    // A channel whose interval holds 1 is not off either way.
+    CHECK_FALSE(channelsOffOppositeWays({{0.90, 1.02}, {1.05, 1.09}, {1.1, 1.2}}));
+    CHECK(contains(likelyPickDivideCause(Lab::Importance),
+                   "the probability you divide by must be the one you picked with"));
+    CHECK(contains(likelyPickDivideCause(Lab::Importance), "(TODO lab3.4)"));
+    CHECK(contains(likelyPickDivideCause(Lab::Uniform), "(TODO lab2.4)"));
+    CHECK(contains(likelyPickDivideCause(Lab::Roulette), "(TODO lab4.4)"));
+    CHECK(likelyPickDivideCause(Lab::Branching).empty());
+}

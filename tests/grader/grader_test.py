@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The grader against known answers: the reference solutions submitted as a student's labs
 pass every check; the lab stubs fail with a diagnosis; every mutant in mutants.json fails by
-the intended check with the intended words; the report formats are well formed.
+the intended check with the intended words (or passes it: a lab that differs from the solutions
+without a bug, or one graded under a rubric of its own); the report formats are well formed.
 
 --slow adds the mutants that need the frame-rate check and a false-fail validation: 200
 gradings of the solutions' correctness and noise with distinct seeds, which should all pass
@@ -118,8 +119,8 @@ def rubric_with(tmp, name, base, changes):
 
 
 def mutants(tmp, slow):
-    """Each entry of mutants.json: the check that `fails` (or, with a rubric of its own,
-    `passes`) and the words the feedback must contain (`says`: one string or several). An entry
+    """Each entry of mutants.json: the check that `fails` (or `passes`: a correct lab unlike the
+    solutions, or one under a rubric of its own) and the words the feedback must contain (`says`: one string or several). An entry
     may grade another entry's lab (`mutant`) under a changed rubric (`rubric`)."""
     table = json.load(open(os.path.join(args.source, "tests", "grader", "mutants.json")))["mutants"]
     rubric = fast_rubric(tmp)

@@ -1,6 +1,6 @@
 // Mutant 'roulette_reused_pick_number': one random pair for both the component pick and the
 // diffuse direction (pick with uv.x, then diffuseRay(hit, uv)), so a diffuse bounce only ever
-// has u.x < Kd/(Kd+Ks+Kt): half of the hemisphere on a surface with Kd = Ks.
+// has u.x < its pick probability (0.64 on mixed_surfaces' walls): part of the hemisphere only.
 // A plausible student bug; the grader must fail it on mixed_surfaces (the furnaces cannot see it).
 // Lab 4: Russian roulette instead of a depth limit (handouts/04-russian-roulette.md).
 #include "pathlab/lab.h"
