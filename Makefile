@@ -9,25 +9,39 @@ NATIVE ?= ON
 # off by default, so that a newer compiler's new warning does not stop a student's build.
 WARNINGS_AS_ERRORS ?= OFF
 
-.PHONY: run build test test-labs test-slow grade report bench profile deps clean handouts handouts-html \
+.PHONY: run configure build test test-labs test-slow grade report bench profile deps clean handouts handouts-html \
         student-release gradescope
 
 # The student release has no solutions/: there the lab tests (ctest label `labs`) check your own
 # labs/, which fail until you finish them, so `make test` leaves them to `make test-labs`.
 TEST_EXCLUDED = slow$(if $(wildcard solutions/),,|labs)
 
+# The packages, installed by scripts/install-deps.sh: `make deps` always asks it; the other
+# targets only on the first build of a folder (or when the script changed), through a stamp.
+DEPS_STAMP = $(BUILD)/.deps-installed
+
 deps:
 	@scripts/install-deps.sh
+	@mkdir -p $(BUILD) && touch $(DEPS_STAMP)
 
-build: deps
+$(DEPS_STAMP): scripts/install-deps.sh
+	@scripts/install-deps.sh
+	@mkdir -p $(BUILD) && touch $@
+
+# The build folder configured; a target then builds what it needs (`build`: everything).
+configure: $(DEPS_STAMP)
 	@cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DPATHLAB_NATIVE=$(NATIVE) \
 	      -DPATHLAB_WARNINGS_AS_ERRORS=$(WARNINGS_AS_ERRORS) > /dev/null
+
+build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
 # The Cornell box, in a window where there is a display, otherwise headless into an image file:
 # the reference solution of lab 3 in the kit; your labs/ (lab 1, or LAB=uniform and so on) in
-# the student release.
-run: build
+# the student release. It builds the viewer and the labs alone: the first image comes before the
+# grader, the tests and the mutants are built (by the targets that need them).
+run: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target viewer
 	@scripts/run-default-scene.sh $(BUILD) $(LAB)
 
 test: build
@@ -38,13 +52,18 @@ test: build
 test-labs: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L labs
 
+# What `make grade` runs: the grader and the viewer around labs/, which renders for it.
+GRADER_TARGETS = grader viewer
+
 # Grade the labs in labs/ (all four; LAB=uniform for one).
-grade: build
+grade: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target $(GRADER_TARGETS)
 	cd $(BUILD) && ./grader $(if $(LAB),--lab $(LAB))
 
 # Grade them and write lab-report.md: your notebook's figures (frame rate, noise, efficiency) and
 # the ratios between labs, beside the reference solutions'.
-report: build
+report: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target $(GRADER_TARGETS)
 	cd $(BUILD) && ./grader --report $(CURDIR)/lab-report.md
 
 # Only the HTML pages (self-contained, in $(BUILD)/handouts/), from the figures as they are.
