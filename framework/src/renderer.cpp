@@ -132,6 +132,7 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
                     nonfinite.note({sample.pixel % width, sample.pixel / width, sample.sampleIndex,
                                     driver.rayCounters().intersect - raysBefore, radiance});
             }
+            progress_.add(static_cast<uint64_t>(packet.count));
             packet.count = 0;
             pending.clear();
         };
@@ -154,6 +155,14 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
         intersect.fetch_add(driver.rayCounters().intersect, std::memory_order_relaxed);
         occluded.fetch_add(driver.rayCounters().occluded, std::memory_order_relaxed);
     };
+
+    // Ended whichever way the pass ends, a lab's exception included.
+    const struct PassUnderWay {
+        RenderProgress& progress;
+        ~PassUnderWay() { progress.passEnds(); }
+    } underWay{progress_};
+    progress_.passStarts(static_cast<uint64_t>(width) * static_cast<uint64_t>(height) *
+                         static_cast<uint64_t>(spp));
 
     releaseTo(&passStarts);
     arena_->arena.execute([&] {

@@ -5,6 +5,7 @@
 #include "pathlab/lab_parameters.h"
 #include "pathlab/lab_registry.h"
 #include "pathlab/option_reader.h"
+#include "pathlab/render_watchdog.h"
 #include "pathlab/scene.h"
 
 #include <cstdint>
@@ -32,6 +33,9 @@ struct RenderOptions {
     LabParameters parameters;                                ///< --max-depth, --continue-prob
     uint64_t seed = 0;                                       ///< --seed
     int threads = 0;                                         ///< --threads; 0 = all cores
+    /// --watchdog: a render whose lab finishes no sample for this long ends (RenderWatchdog);
+    /// 0 = never.
+    double watchdogSeconds = RenderWatchdog::DefaultSeconds;
 
     // Headless output
     std::string outputImage; ///< -o

@@ -8,6 +8,7 @@
 #include "pathlab/nonfinite_sample.h"
 #include "pathlab/ray_counters.h"
 #include "pathlab/ray_log.h"
+#include "pathlab/render_progress.h"
 #include "pathlab/render_scene.h"
 
 #include <atomic>
@@ -48,6 +49,8 @@ public:
         firstNonfinite_.reset();
     }
     int threads() const { return threads_; }
+    /// How far the passes have got, for another thread to read while one runs.
+    const RenderProgress& progress() const { return progress_; }
 
     static constexpr int TileSize = 16; ///< pixels per tile side
 
@@ -58,6 +61,7 @@ private:
     std::unique_ptr<Arena> arena_;
     RayCounters counters_;
     std::optional<NonfiniteSample> firstNonfinite_;
+    RenderProgress progress_;
 };
 
 } // namespace pathlab
