@@ -7,10 +7,11 @@
 
 namespace pathlab {
 
-/// Counts kept by Renderer::renderPass as it goes. Samples are added once per camera packet
-/// (never per ray) with relaxed atomics, so a render that nobody watches pays next to nothing;
-/// a reader sees the counts late by a packet at most, which is all a watchdog or a progress line
-/// needs.
+/// Counts kept by Renderer::renderPass as it goes. Each tile adds its finished samples a few
+/// hundred at a time (whole camera packets, never per ray) with relaxed atomics, so a render
+/// that nobody watches pays next to nothing; a reader sees the counts late by that much per
+/// worker, a fraction of a millisecond of a correct lab's work, which is all a watchdog or a
+/// progress line needs.
 class RenderProgress {
 public:
     /// Samples finished by all passes so far, over the renderer's life.
