@@ -39,9 +39,8 @@ ProgressiveRenderer::ProgressiveRenderer(const RenderScene& scene, int threads,
                                          const ViewSettings& settings,
                                          std::function<void(const Frame&)> onFrame, int frameLimit,
                                          double watchdogSeconds)
-    : scene_(scene), renderer_(scene, threads), onFrame_(std::move(onFrame)),
-      frameLimit_(frameLimit), settings_(settings),
-      watchdog_(renderer_.progress(), watchdogSeconds, [this] {
+    : renderer_(scene, threads), onFrame_(std::move(onFrame)), frameLimit_(frameLimit),
+      settings_(settings), watchdog_(renderer_.progress(), watchdogSeconds, [this] {
           return WatchedLab{passLab_.load(), passImplementation_.load()};
       }) {
     thread_ = std::thread([this] {

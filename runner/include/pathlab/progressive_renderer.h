@@ -80,7 +80,6 @@ public:
 private:
     void run();
 
-    const RenderScene& scene_;
     Renderer renderer_; ///< used by the render thread alone, but for its progress
     const std::function<void(const Frame&)> onFrame_;
     const int frameLimit_;
