@@ -59,11 +59,14 @@ fi
 image=$lab.png
 echo "make run: no display, so rendering $what headless, $spp samples per pixel"
 problems=$(mktemp)
-./viewer -c "$scene" --lab "$lab" "${whose[@]}" --spp "$spp" -o "$image" 2> "$problems"
+report=$(mktemp)
+./viewer -c "$scene" --lab "$lab" "${whose[@]}" --spp "$spp" -o "$image" > "$report" 2> "$problems"
 status=$?
-# The TODO warnings are summed up above; anything else the viewer says is shown as it is.
+# The TODO warnings are summed up above; anything else the viewer says is shown as it is, and
+# before its report of the render, as the viewer orders them: a NaN warning comes first.
 grep -v "TODO(lab[0-9.]*) is not done yet" "$problems" >&2
-rm -f "$problems"
+cat "$report"
+rm -f "$problems" "$report"
 [ $status -eq 0 ] || exit $status
 echo "make run: the image is $(pwd)/$image"
 other=uniform

@@ -11,6 +11,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 namespace {
 
@@ -40,6 +41,17 @@ std::string withSeed(const std::string& path, uint64_t seed) {
         .string();
 }
 
+/// "noise 0.0123, efficiency 4.56"; with NaN or infinite samples, which are left out of the
+/// image, the two describe a different image from the lab's and are not given as figures.
+std::string noiseFigures(const RenderStats& s) {
+    if (s.nonfinitePixels > 0)
+        return "noise and efficiency not meaningful: NaN or infinite samples (see the warning)";
+    char text[96];
+    std::snprintf(text, sizeof text, "noise %.4f, efficiency %s", s.noise,
+                  s.efficiencyText().c_str());
+    return text;
+}
+
 int renderToFile(const RenderOptions& options) {
     const RenderScene scene(loadScene(options));
     for (int k = 0; k < options.seedCount; ++k) {
@@ -50,16 +62,19 @@ int renderToFile(const RenderOptions& options) {
             if (!options.statsFile.empty()) one.statsFile = withSeed(options.statsFile, one.seed);
         }
         HeadlessResult result = renderHeadless(one, scene);
+        // A lab's NaN is what a student must hear of first: the warning comes before the figures.
+        if (result.stats.nonfinitePixels > 0)
+            std::fprintf(stderr, "%s\n", result.stats.nonfiniteWarning().c_str());
         writeImage(one.outputImage, one.width, one.height, result.image.meanImage());
         if (!one.statsFile.empty()) writeRenderStats(one.statsFile, result.stats);
         const RenderStats& s = result.stats;
         std::printf("wrote %s: %s, lab %s (%s), %dx%d, %d spp in %.3f s\n"
                     "  %.3g samples/s = %.3g frames/s at %dx%d (1 spp per frame), %.3g rays/s; "
-                    "noise %.4f, efficiency %s\n",
+                    "%s\n",
                     one.outputImage.c_str(), s.scene.c_str(), s.lab.c_str(), s.impl.c_str(),
                     s.width, s.height, s.spp, s.seconds, s.samplesPerSecond(), s.framesPerSecond,
-                    s.width, s.height, s.raysPerSecond(), s.noise, s.efficiencyText().c_str());
-        if (s.nonfinitePixels > 0) std::fprintf(stderr, "%s\n", s.nonfiniteWarning().c_str());
+                    s.width, s.height, s.raysPerSecond(), noiseFigures(s).c_str());
+        std::fflush(stdout);
     }
     return 0;
 }

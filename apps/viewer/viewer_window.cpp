@@ -127,8 +127,9 @@ public:
             reference_ = readImage(windowOptions.referenceImage);
         std::function<void(const Frame&)> print;
         if (windowOptions.printFrameRate) print = printFrameLine;
-        renderer_ = std::make_unique<ProgressiveRenderer>(scene, options.threads, settings_, print,
-                                                          windowOptions.frames);
+        renderer_ =
+            std::make_unique<ProgressiveRenderer>(scene, options.threads, settings_, print,
+                                                  windowOptions.frames, options.watchdogSeconds);
         glGenTextures(1, &texture_);
     }
 

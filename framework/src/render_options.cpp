@@ -8,6 +8,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <filesystem>
 #include <functional>
@@ -112,6 +113,15 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
          }},
         {"threads", [&](const Token& t) { o.threads = in.positive(t, "a thread count", 1024); }},
         {"reverse-tiles", [&](const Token&) { o.reverseTiles = true; }},
+        {"watchdog",
+         [&](const Token& t) {
+             const float seconds = in.number(t, "a number of seconds");
+             if (!(seconds >= 0 && seconds <= 86400))
+                 OptionReader::fail(t, "option " + t.text +
+                                           " expects seconds from 0 (never) to 86400, got " +
+                                           in.current().text);
+             o.watchdogSeconds = seconds;
+         }},
         {"o", [&](const Token& t) { o.outputImage = in.value(t, "an image file name").text; }},
         {"spp", [&](const Token& t) { o.spp = in.positive(t, "samples per pixel", 1 << 24); }},
         {"stats", [&](const Token& t) { o.statsFile = in.value(t, "a .json file name").text; }},
@@ -153,6 +163,8 @@ Scene loadScene(const RenderOptions& options) {
 }
 
 std::string renderOptionsHelp() {
+    char defaultWatchdog[16];
+    std::snprintf(defaultWatchdog, sizeof defaultWatchdog, "%g", RenderWatchdog::DefaultSeconds);
     return std::string(R"(scene
   -c FILE.ecs            read options from an Embree scene script (paths relative to it)
   -i FILE.obj            add an OBJ mesh (and the .mtl files it names)
@@ -171,6 +183,10 @@ estimator
   --threads N            worker threads (default: all cores)
   --reverse-tiles        render the tiles last to first: the same image when the lab takes
                          every random number from ctx.sampler (how the grader checks that)
+  --watchdog SECONDS     a render whose lab finishes no sample for SECONDS (an endless loop?)
+                         ends with a line naming the lab and exit status 1; 0 = never
+                         (default )" +
+           defaultWatchdog + R"( s)
 headless
   -o FILE                render --spp samples per pixel and write FILE (.exr .pfm .hdr: linear
                          radiance; .png: sRGB, clamped), no window

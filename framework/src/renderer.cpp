@@ -13,6 +13,7 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #if defined(__SANITIZE_THREAD__)
@@ -56,6 +57,10 @@ void acquireFrom([[maybe_unused]] const void* handOff) {
     __tsan_acquire(const_cast<void*>(handOff));
 #endif
 }
+
+/// Samples a tile finishes before it adds them to the renderer's progress: a fraction of a
+/// millisecond of a correct lab's work, far below what a watchdog or a progress line can tell.
+constexpr uint64_t PublishedSamples = 256;
 
 /// A sample whose camera ray waits in a packet: its pixel, and its random numbers just after
 /// the pixel jitter, where pathTrace takes them up.
@@ -118,6 +123,7 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
         // camera ray's hit waiting in the context. Samples keep their order within a pixel, so
         // every pixel's sums add up exactly as one by one.
         CameraPacket packet;
+        uint64_t unpublished = 0; // samples finished but not yet added to progress_
         std::vector<PendingSample> pending;
         pending.reserve(CameraPacket::Size);
         const auto tracePending = [&] {
@@ -132,6 +138,10 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
                     nonfinite.note({sample.pixel % width, sample.pixel / width, sample.sampleIndex,
                                     driver.rayCounters().intersect - raysBefore, radiance});
             }
+            // Published a few hundred samples at a time: the counter is shared by every worker,
+            // and its cache line passed between cores after every packet would cost a little.
+            unpublished += static_cast<uint64_t>(packet.count);
+            if (unpublished >= PublishedSamples) progress_.add(std::exchange(unpublished, 0));
             packet.count = 0;
             pending.clear();
         };
@@ -150,10 +160,19 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
             }
         }
         if (packet.count > 0) tracePending();
+        progress_.add(unpublished);
         // Counted per tile in the context, summed here once: nothing shared per ray.
         intersect.fetch_add(driver.rayCounters().intersect, std::memory_order_relaxed);
         occluded.fetch_add(driver.rayCounters().occluded, std::memory_order_relaxed);
     };
+
+    // Ended whichever way the pass ends, a lab's exception included.
+    const struct PassUnderWay {
+        RenderProgress& progress;
+        ~PassUnderWay() { progress.passEnds(); }
+    } underWay{progress_};
+    progress_.passStarts(static_cast<uint64_t>(width) * static_cast<uint64_t>(height) *
+                         static_cast<uint64_t>(spp));
 
     releaseTo(&passStarts);
     arena_->arena.execute([&] {

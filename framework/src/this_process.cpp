@@ -1,9 +1,14 @@
 #include "pathlab/this_process.h"
 
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <stdexcept>
+#include <string>
 #include <system_error>
 
 #if defined(_WIN32)
+#include <io.h>
 #include <windows.h>
 #else
 #include <dlfcn.h>
@@ -11,6 +16,7 @@
 #endif
 #if defined(__APPLE__)
 #include <mach-o/dyld.h>
+#include <sys/sysctl.h>
 #endif
 
 namespace pathlab {
@@ -65,6 +71,32 @@ void* findLibrarySymbol(const fs::path& library, const char* symbol, std::string
     void* address = ::dlsym(handle, symbol);
     if (!address) why = std::string("no ") + symbol + " in it";
     return address;
+#endif
+}
+
+bool standardErrorIsTerminal() {
+#if defined(_WIN32)
+    return ::_isatty(::_fileno(stderr)) != 0;
+#else
+    return ::isatty(STDERR_FILENO) != 0;
+#endif
+}
+
+bool debuggerAttached() {
+#if defined(_WIN32)
+    return ::IsDebuggerPresent() != 0;
+#elif defined(__APPLE__)
+    int query[] = {CTL_KERN, KERN_PROC, KERN_PROC_PID, ::getpid()};
+    struct kinfo_proc info = {};
+    size_t size = sizeof info;
+    if (::sysctl(query, 4, &info, &size, nullptr, 0) != 0) return false;
+    return (info.kp_proc.p_flag & P_TRACED) != 0;
+#else
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("TracerPid:", 0) == 0)
+            return std::strtol(line.c_str() + 10, nullptr, 10) != 0;
+    return false;
 #endif
 }
 

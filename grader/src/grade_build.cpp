@@ -4,11 +4,11 @@
 #include "expectation.h"
 #include "grading_scenes.h"
 #include "lab_figures.h"
-#include "progress_bar.h"
 #include "reports.h"
 #include "time_limit.h"
 
 #include "pathlab/input_error.h"
+#include "pathlab/progress_bar.h"
 #include "pathlab/render_stats.h"
 #include "pathlab/whole_file.h"
 

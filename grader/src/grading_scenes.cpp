@@ -2,10 +2,10 @@
 
 #include "content_hash.h"
 #include "correctness_check.h"
-#include "progress_bar.h"
 #include "scene_files.h"
 
 #include "pathlab/input_error.h"
+#include "pathlab/progress_bar.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -40,6 +40,10 @@ std::vector<std::string> viewerArguments(const RenderRequest& r, const std::stri
                                      image,
                                      "--stats",
                                      stats};
+    // The grader's own time limit stops a lab that never returns, and says so (time_limit.h),
+    // whatever limit an instructor sets: the viewer's watchdog, which would fire first under a
+    // limit longer than its own, is off.
+    argv.insert(argv.end(), {"--watchdog", "0"});
     if (!r.runner->sandboxed() && r.runner->implementation == Implementation::Solution)
         argv.push_back("--solution");
     if (r.threads > 0) argv.insert(argv.end(), {"--threads", std::to_string(r.threads)});

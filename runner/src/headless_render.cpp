@@ -3,9 +3,12 @@
 #include "pathlab/camera.h"
 #include "pathlab/render_scene.h"
 #include "pathlab/lab_tables.h"
+#include "pathlab/render_progress_line.h"
+#include "pathlab/render_watchdog.h"
 #include "pathlab/renderer.h"
 
 #include <chrono>
+#include <optional>
 
 namespace pathlab {
 
@@ -21,9 +24,20 @@ HeadlessResult renderHeadless(const RenderOptions& options, const RenderScene& s
     renderer.setReverseTiles(options.reverseTiles);
     HeadlessResult result{AccumulationBuffer(options.width, options.height), {}};
 
+    const WatchedLab watched{options.lab, options.implementation};
+    const RenderWatchdog watchdog(renderer.progress(), options.watchdogSeconds,
+                                  [watched] { return watched; });
     const auto start = std::chrono::steady_clock::now();
-    renderer.renderPass(result.image, camera, findPathTrace(options.lab, options.implementation),
-                        options.parameters, options.seed, options.spp);
+    {
+        // A render into a file (viewer -o) shows its progress; the lab tests' renders, which
+        // write none, leave the test runner's output alone.
+        std::optional<RenderProgressLine> progressLine;
+        if (!options.outputImage.empty())
+            progressLine.emplace(renderer.progress(), options.outputImage);
+        renderer.renderPass(result.image, camera,
+                            findPathTrace(options.lab, options.implementation), options.parameters,
+                            options.seed, options.spp);
+    }
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
 
     result.stats = renderStats(

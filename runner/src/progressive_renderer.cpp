@@ -3,8 +3,6 @@
 #include "pathlab/frame_rate.h"
 #include "pathlab/lab_tables.h"
 
-#include "pathlab/renderer.h"
-
 #include <chrono>
 
 namespace pathlab {
@@ -39,9 +37,12 @@ void resetBuffer(AccumulationBuffer& buffer, int width, int height) {
 
 ProgressiveRenderer::ProgressiveRenderer(const RenderScene& scene, int threads,
                                          const ViewSettings& settings,
-                                         std::function<void(const Frame&)> onFrame, int frameLimit)
-    : scene_(scene), threads_(threads), onFrame_(std::move(onFrame)), frameLimit_(frameLimit),
-      settings_(settings) {
+                                         std::function<void(const Frame&)> onFrame, int frameLimit,
+                                         double watchdogSeconds)
+    : renderer_(scene, threads), onFrame_(std::move(onFrame)), frameLimit_(frameLimit),
+      settings_(settings), watchdog_(renderer_.progress(), watchdogSeconds, [this] {
+          return WatchedLab{passLab_.load(), passImplementation_.load()};
+      }) {
     thread_ = std::thread([this] {
         // A lab's broken check (pathlab/check.h) or any other error ends the rendering, not the
         // program: the window reports it (failure()) and closes.
@@ -95,7 +96,6 @@ bool ProgressiveRenderer::takeFrame(Frame& frame, uint64_t& generation) {
 }
 
 void ProgressiveRenderer::run() {
-    Renderer renderer(scene_, threads_);
     uint64_t generation = 0;
     ViewSettings settings;
     AccumulationBuffer buffers[2] = {AccumulationBuffer(1, 1), AccumulationBuffer(1, 1)};
@@ -135,18 +135,20 @@ void ProgressiveRenderer::run() {
                                                       ? Implementation::Solution
                                                       : Implementation::Student);
         const Camera camera(settings.camera, settings.width, settings.height);
-        renderer.resetCounts(); // this pass's rays and non-finite samples alone
+        passLab_ = settings.lab;
+        passImplementation_ = impl;
+        renderer_.resetCounts(); // this pass's rays and non-finite samples alone
         const auto start = std::chrono::steady_clock::now();
-        const bool finished =
-            renderer.renderPass(buffers[which], camera, findPathTrace(settings.lab, impl),
-                                settings.parameters, settings.seed, settings.sppPerFrame, &cancel_);
+        const bool finished = renderer_.renderPass(
+            buffers[which], camera, findPathTrace(settings.lab, impl), settings.parameters,
+            settings.seed, settings.sppPerFrame, &cancel_);
         const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
         if (!finished) continue; // restarted mid-pass: the partial pass is thrown away
         seconds[which] += elapsed.count();
-        const RayCounters traced = renderer.rayCounters();
+        const RayCounters traced = renderer_.rayCounters();
         if (which == 0) {
             rays += traced;
-            const std::optional<NonfiniteSample>& passFirst = renderer.firstNonfinite();
+            const std::optional<NonfiniteSample>& passFirst = renderer_.firstNonfinite();
             if (passFirst && (!firstNonfinite || passFirst->before(*firstNonfinite)))
                 firstNonfinite = passFirst;
             frameRate.add(elapsed.count());
@@ -163,7 +165,7 @@ void ProgressiveRenderer::run() {
         frame.raysPerSecond = static_cast<double>(traced.total()) / elapsed.count();
         frame.stats = renderStats(
             {"", settings.lab, settings.implementation, settings.parameters, settings.seed},
-            buffers[0], renderer.threads(), seconds[0], rays, firstNonfinite);
+            buffers[0], renderer_.threads(), seconds[0], rays, firstNonfinite);
         if (onFrame_) onFrame_(frame);
         std::lock_guard<std::mutex> lock(mutex_);
         if (generation == generation_) {

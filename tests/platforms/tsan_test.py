@@ -8,8 +8,10 @@ What it proves, in a build folder of its own beside the kit's (CMakePresets.json
     the noise-figure tests, which render millions of samples through the same code: under TSan
     (several times slower) they would take CI minutes to prove nothing more;
   - the viewer's render thread and the window hand frames over, restart and stop without a race:
-    the window test (tests/viewer/window_test.py) runs the viewer under Xvfb, keys and all.
-It builds only what those need (the framework, the labs, the viewer, the render tests). A race
+    the window test (tests/viewer/window_test.py) runs the viewer under Xvfb, keys and all, and a
+    window whose lab never returns, ended by the renderer's watchdog from a thread of its own.
+It builds only what those need (the framework, the labs, the viewer, the viewer around the
+endless-loop mutant, the render tests). A race
 report makes the program exit 66, which fails the test.
 
 libtbb is not instrumented, so TSan does not see TBB hand a task to a worker and back: the
@@ -86,7 +88,7 @@ def main():
     steps.run(["cmake", "--preset", "tsan", "-B", args.build, f"-DCMAKE_CXX_COMPILER={compiler}"],
               args.source, "configure")
     steps.run(["cmake", "--build", args.build, "-j", str(args.jobs), "--target", "viewer",
-               "test_render"], args.source, "build")
+               "viewer_mutant_uniform_endless_loop", "test_render"], args.source, "build")
 
     # Every report, with both stacks, then exit 66 (TSan's exit code after a report).
     env = dict(os.environ, TSAN_OPTIONS=" ".join([
@@ -94,7 +96,8 @@ def main():
     steps.run(launcher + [os.path.join(args.build, "tests", "test_render"), "[rng],[stats]"],
               args.build, "render tests", env)
     steps.run(launcher + [sys.executable, os.path.join(args.source, "tests", "viewer", "window_test.py"),
-                          os.path.join(args.build, "viewer"), os.path.join(args.source, "models")],
+                          os.path.join(args.build, "viewer"), os.path.join(args.source, "models"),
+                          os.path.join(args.build, "mutants", "uniform_endless_loop")],
               args.build, "window test", env)
     steps.report()
     return 0

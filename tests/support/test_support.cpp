@@ -4,6 +4,7 @@
 #include "pathlab/this_process.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 namespace pathlab::test {
@@ -24,6 +25,8 @@ std::string temporaryFolder(const std::string& name) {
 HeadlessResult render(const std::vector<std::string>& arguments) {
     std::vector<const char*> argv = {"viewer"};
     for (const std::string& a : arguments) argv.push_back(a.c_str());
+    if (const char* watchdog = std::getenv("PATHLAB_TEST_WATCHDOG_SECONDS"))
+        argv.insert(argv.end(), {"--watchdog", watchdog});
     return renderHeadless(parseRenderOptions(static_cast<int>(argv.size()), argv.data()));
 }
 

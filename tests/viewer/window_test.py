@@ -1,8 +1,12 @@
 #!/usr/bin/env python3
 """The viewer's window under a virtual X server (Xvfb), driven by simulated keys (xdotool).
 
-Usage: window_test.py VIEWER MODELS_DIR. Starts its own Xvfb; each check prints PASS/FAIL and
-the script exits non-zero if any failed.
+Usage: window_test.py VIEWER MODELS_DIR STUCK_VIEWER. STUCK_VIEWER is a viewer whose lab 2 never
+returns (the grader's mutant uniform_endless_loop). Starts its own Xvfb; each check prints
+PASS/FAIL and the script exits non-zero if any failed.
+
+A window whose lab is stuck in an endless loop ends, with a short --watchdog, with exit status 1
+and the line naming the lab's file, rather than hang, and its close with it.
 
 Statistical check: the screenshot's mean radiance against a headless render of the same scene,
 spp and seed, per channel, z-test at alpha = 1e-4 (|z| < 3.89) with the headless render's
@@ -27,7 +31,7 @@ from virtual_display import start_xvfb  # noqa: E402
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 from checks import check, exit_code  # noqa: E402
 
-VIEWER, MODELS = sys.argv[1], sys.argv[2]
+VIEWER, MODELS, STUCK_VIEWER = sys.argv[1], sys.argv[2], sys.argv[3]
 SCENE = os.path.join(MODELS, "cornell_box_VI2_Specular.ecs")
 
 
@@ -155,6 +159,23 @@ def keys_change_what_the_viewer_reports(env):
     check(code == 0, f"q quits cleanly (exit status {code})")
 
 
+def stuck_window_ends(env):
+    start = time.time()
+    try:
+        run = subprocess.run([STUCK_VIEWER, "-c", SCENE, "--size", "64", "48", "--lab", "uniform",
+                              "--watchdog", "2", "--frames", "2"], env=env, capture_output=True,
+                             text=True, timeout=60)
+    except subprocess.TimeoutExpired:
+        check(False, "a window whose lab never returns ends within 60 s (it ran on)")
+        return
+    stuck = [line for line in run.stderr.splitlines()
+             if "an endless loop, or recursion that never ends?" in line]
+    check(run.returncode == 1 and time.time() - start < 30 and len(stuck) == 1 and
+          "labs/uniform.cpp" in stuck[0],
+          f"a window whose lab never returns ends with --watchdog 2: exit status "
+          f"{run.returncode} after {time.time() - start:.1f} s, saying {run.stderr.strip()!r}")
+
+
 def no_display_is_explained():
     env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
     run = subprocess.run([VIEWER, "-c", SCENE], env=env, capture_output=True, text=True, timeout=30)
@@ -172,6 +193,7 @@ def main():
             screenshot_matches_headless(env, tmp)
             panel_stats_and_headless_agree(env, tmp)
         keys_change_what_the_viewer_reports(env)
+        stuck_window_ends(env)
     finally:
         server.terminate()
         server.wait()

@@ -5,6 +5,7 @@
 #include "pathlab/lab_parameters.h"
 #include "pathlab/lab_registry.h"
 #include "pathlab/option_reader.h"
+#include "pathlab/render_watchdog.h"
 #include "pathlab/scene.h"
 
 #include <cstdint>
@@ -35,6 +36,9 @@ struct RenderOptions {
     /// --reverse-tiles: the last tile first. The image stays the same for a lab that takes its
     /// random numbers from ctx.sampler alone; the grader's reproducibility check relies on that.
     bool reverseTiles = false;
+    /// --watchdog: a render whose lab finishes no sample for this long ends (RenderWatchdog);
+    /// 0 = never.
+    double watchdogSeconds = RenderWatchdog::DefaultSeconds;
 
     // Headless output
     std::string outputImage; ///< -o

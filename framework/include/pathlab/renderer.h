@@ -8,6 +8,7 @@
 #include "pathlab/nonfinite_sample.h"
 #include "pathlab/ray_counters.h"
 #include "pathlab/ray_log.h"
+#include "pathlab/render_progress.h"
 #include "pathlab/render_scene.h"
 
 #include <atomic>
@@ -52,6 +53,8 @@ public:
     /// numbers come from its own stream, so the image does not change; a lab that draws random
     /// numbers of its own, or keeps state between samples, renders another image.
     void setReverseTiles(bool reverse) { reverseTiles_ = reverse; }
+    /// How far the passes have got, for another thread to read while one runs.
+    const RenderProgress& progress() const { return progress_; }
 
     static constexpr int TileSize = 16; ///< pixels per tile side
 
@@ -63,6 +66,7 @@ private:
     RayCounters counters_;
     std::optional<NonfiniteSample> firstNonfinite_;
     bool reverseTiles_ = false;
+    RenderProgress progress_;
 };
 
 } // namespace pathlab

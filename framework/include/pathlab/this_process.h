@@ -1,6 +1,7 @@
 #pragma once
-/// The running process: its program file, its id, and the shared libraries it loads at run time
-/// (the image plug-in, a submission's labs). The parts that differ between Linux, macOS and
+/// The running process: its program file, its id, the shared libraries it loads at run time
+/// (the image plug-in, a submission's labs), whether a person watches its standard error and
+/// whether a debugger holds it. The parts that differ between Linux, macOS and
 /// Windows, in one place (this_process.cpp).
 
 #include <filesystem>
@@ -25,5 +26,13 @@ long processId();
 /// The address of `symbol` in the shared library `library`, which stays loaded; nullptr, with
 /// the system's reason in `why`, when the library or the symbol cannot be found.
 void* findLibrarySymbol(const std::filesystem::path& library, const char* symbol, std::string& why);
+
+/// Whether standard error is a terminal, where a line redrawn in place is seen, rather than a
+/// pipe or a file, where it would only fill a log.
+bool standardErrorIsTerminal();
+
+/// Whether a debugger is attached (Linux: TracerPid in /proc/self/status; macOS: P_TRACED;
+/// Windows: IsDebuggerPresent). False where that cannot be told.
+bool debuggerAttached();
 
 } // namespace pathlab

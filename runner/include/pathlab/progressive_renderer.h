@@ -7,6 +7,8 @@
 #include "pathlab/lab_registry.h"
 #include "pathlab/render_scene.h"
 #include "pathlab/render_stats.h"
+#include "pathlab/render_watchdog.h"
+#include "pathlab/renderer.h"
 
 #include <atomic>
 #include <condition_variable>
@@ -55,9 +57,12 @@ class ProgressiveRenderer {
 public:
     /// `onFrame` is called on the render thread after every finished frame, with its figures
     /// (its images only reach takeFrame); with `frameLimit` > 0 the renderer idles after that
-    /// many frames until the next restart.
+    /// many frames until the next restart. With `watchdogSeconds` > 0, a pass that finishes no
+    /// sample for that long ends the program (RenderWatchdog): a lab stuck in an endless loop
+    /// would otherwise also keep the destructor, and so the window's close, waiting for ever.
     ProgressiveRenderer(const RenderScene& scene, int threads, const ViewSettings& settings,
-                        std::function<void(const Frame&)> onFrame = {}, int frameLimit = 0);
+                        std::function<void(const Frame&)> onFrame = {}, int frameLimit = 0,
+                        double watchdogSeconds = 0);
     ~ProgressiveRenderer();
 
     /// Restarts accumulation with new settings (a pass in flight is abandoned).
@@ -75,8 +80,7 @@ public:
 private:
     void run();
 
-    const RenderScene& scene_;
-    const int threads_;
+    Renderer renderer_; ///< used by the render thread alone, but for its progress
     const std::function<void(const Frame&)> onFrame_;
     const int frameLimit_;
     std::mutex mutex_;
@@ -89,6 +93,10 @@ private:
     Frame latest_;
     uint64_t latestGeneration_ = 0;
     std::string failure_;
+    /// The lab and implementation of the pass under way, for the watchdog's thread to name.
+    std::atomic<Lab> passLab_{Lab::Branching};
+    std::atomic<Implementation> passImplementation_{Implementation::Student};
+    RenderWatchdog watchdog_; ///< still watching while the destructor waits for the thread
     std::thread thread_;
 };
 
