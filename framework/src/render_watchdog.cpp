@@ -38,7 +38,7 @@ std::string RenderWatchdog::stuckMessage(const WatchedLab& watched, double secon
            ", " + file + ") has finished no sample for " + wait +
            " s: an endless loop, or recursion that never ends? Look in " + file +
            " for a while loop whose condition never changes, or a recursion without " + limit +
-           ". (--watchdog SECONDS sets this wait, 0 turns it off.)";
+           ". (The viewer's --watchdog SECONDS sets this wait, 0 turns it off.)";
 }
 
 void RenderWatchdog::watch() {

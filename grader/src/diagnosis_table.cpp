@@ -143,8 +143,8 @@ const std::vector<Hint>& hints() {
          "return before the pick",
          LabStep::NearBlackStop},
         {HintTopic::NonfiniteRadiance, EveryLab,
-         "a division by zero (0/0 is NaN, x/0 infinite) or a value used before it is set, in the "
-         "lab's own arithmetic",
+         "a division by zero (0/0 is NaN, x/0 infinite; in C++ 1 / 3 divides integers and is 0: "
+         "write 1.0f / 3) or a value used before it is set, in the lab's own arithmetic",
          std::nullopt},
         {HintTopic::DiffuseDirection, EveryLab,
          "diffuse directions drawn from part of the hemisphere: on surfaces that are part "
