@@ -1,6 +1,7 @@
 #include "correctness_check.h"
 
-#include "check_support.h"
+#include "number_text.h"
+#include "run_limits.h"
 #include "diagnosis.h"
 #include "hypothesis_tests.h"
 #include "path_length.h"

@@ -95,4 +95,9 @@ std::vector<bool> holmRejections(const std::vector<double>& p, double alpha) {
     return rejected;
 }
 
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values.empty() ? 0 : values[values.size() / 2];
+}
+
 } // namespace pathlab::grader

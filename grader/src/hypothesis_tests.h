@@ -1,6 +1,6 @@
 #pragma once
 /// The grader's hypothesis tests: Student's t, batch means, Welch's test and Holm's step-down
-/// correction.
+/// correction; and the median and float-rounding floor the checks compare with.
 
 #include <vector>
 
@@ -29,5 +29,12 @@ double welchTwoSidedP(const std::vector<double>& a, const std::vector<double>& b
 /// Holm's method: which of the hypotheses with p-values `p` are rejected, keeping the
 /// family-wise error rate at `alpha`.
 std::vector<bool> holmRejections(const std::vector<double>& p, double alpha);
+
+/// The middle value (the upper one of an even count); 0 for none.
+double median(std::vector<double> values);
+
+/// Relative size of the float rounding between two renders of the same expectation at
+/// different spp: a few parts in 1e7 of a float accumulation, bounded far below any bug's effect.
+constexpr double floatRoundingFloor = 1e-5;
 
 } // namespace pathlab::grader

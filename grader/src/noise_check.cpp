@@ -1,6 +1,6 @@
 #include "noise_check.h"
 
-#include "check_support.h"
+#include "number_text.h"
 #include "diagnosis_table.h"
 
 #include <algorithm>

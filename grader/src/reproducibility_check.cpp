@@ -1,6 +1,6 @@
 #include "reproducibility_check.h"
 
-#include "check_support.h"
+#include "run_limits.h"
 
 #include <cstring>
 

@@ -1,6 +1,7 @@
 #include "speed_check.h"
 
-#include "check_support.h"
+#include "number_text.h"
+#include "run_limits.h"
 #include "hypothesis_tests.h"
 #include "rays_per_sample.h"
 #include "timing_lock.h"

@@ -1,6 +1,5 @@
-#include "check_support.h"
+#include "number_text.h"
 
-#include <algorithm>
 #include <iomanip>
 #include <locale>
 #include <sstream>
@@ -29,16 +28,6 @@ std::string significant(double value, int digits) {
     std::ostringstream out = numberStream();
     out << std::setprecision(digits) << value;
     return out.str();
-}
-
-ProcessLimits limitsOf(const GraderSetup& setup) {
-    return {setup.runSeconds > 0 ? setup.runSeconds : setup.rubric.secondsPerRun,
-            setup.rubric.memoryBytes};
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values.empty() ? 0 : values[values.size() / 2];
 }
 
 } // namespace pathlab::grader
