@@ -6,6 +6,7 @@
 #include "pathlab/lab_parameters.h"
 #include "pathlab/path_driver.h"
 #include "pathlab/ray_log.h"
+#include "pathlab/ray_origin.h"
 #include "pathlab/render_scene.h"
 #include "pathlab/triangle_sampling.h"
 

@@ -2,7 +2,7 @@
 
 #include "pathlab/check.h"
 #include "pathlab/cosine_hemisphere.h"
-#include "pathlab/render_scene.h"
+#include "pathlab/ray_origin.h"
 #include "pathlab/specular.h"
 
 namespace pathlab {
