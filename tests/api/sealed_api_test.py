@@ -64,7 +64,7 @@ FORBIDDEN = [
 # The headers of pathlab/ a lab file sees through lab.h: the types and functions lab.h's comment
 # documents, and what they are made of.
 DOCUMENTED_HEADERS = {
-    "lab.h", "lab_list.h", "call_site.h", "color.h", "constants.h", "cosine_hemisphere.h", "hit.h",
+    "lab.h", "lab_declarations.h", "lab_list.h", "call_site.h", "color.h", "constants.h", "cosine_hemisphere.h", "hit.h",
     "material.h", "orthonormal_basis.h", "path_context.h", "pcg32.h", "ray.h", "sampler.h",
     "scattering.h", "small_angle_sin_cos.h", "todo.h", "vec3.h",
 }

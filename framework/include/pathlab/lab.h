@@ -29,7 +29,7 @@
 #include "pathlab/constants.h"
 #include "pathlab/cosine_hemisphere.h"
 #include "pathlab/hit.h"
-#include "pathlab/lab_list.h"
+#include "pathlab/lab_declarations.h"
 #include "pathlab/material.h"
 #include "pathlab/path_context.h"
 #include "pathlab/ray.h"
@@ -37,20 +37,3 @@
 #include "pathlab/scattering.h"
 #include "pathlab/todo.h"
 #include "pathlab/vec3.h"
-
-// The build compiles the student's labs/ and the reference solutions/ into one viewer, each set
-// with its own PATHLAB_IMPL (student or solution) and each lab's name defined as that name with
-// the set's appended (CMakeLists.txt: pathlab_lab_library, and the grader's build of a
-// submission): `namespace pathlab::branching { ... }` in a lab file is pathlab::branching_student
-// or pathlab::branching_solution, so the two sets, helpers included, never collide, and a lab
-// file needs no macro of its own. (An inline namespace PATHLAB_IMPL around the lab namespaces
-// would read better, but clang, Apple's included, mangles a reopened `namespace
-// pathlab::branching` without it, and the sets would not link.)
-#ifdef PATHLAB_IMPL
-#define PATHLAB_DECLARE_PATH_TRACE(name, Enumerator, depthLimited)                                 \
-    namespace pathlab::name {                                                                      \
-    Color pathTrace(const Ray& ray, int depth, PathContext& ctx);                                  \
-    }
-PATHLAB_FOR_EACH_LAB(PATHLAB_DECLARE_PATH_TRACE)
-#undef PATHLAB_DECLARE_PATH_TRACE
-#endif
