@@ -1,12 +1,12 @@
 #include "correctness_check.h"
 
-#include "number_text.h"
-#include "run_limits.h"
 #include "diagnosis.h"
 #include "hypothesis_tests.h"
+#include "number_text.h"
 #include "path_length.h"
 #include "rays_per_sample.h"
 #include "reproducibility_check.h"
+#include "run_limits.h"
 #include "seed_variance.h"
 
 #include "pathlab/input_error.h"

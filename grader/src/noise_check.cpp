@@ -1,7 +1,7 @@
 #include "noise_check.h"
 
-#include "number_text.h"
 #include "diagnosis_table.h"
+#include "number_text.h"
 
 #include <algorithm>
 

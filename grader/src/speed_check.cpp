@@ -1,9 +1,9 @@
 #include "speed_check.h"
 
-#include "number_text.h"
-#include "run_limits.h"
 #include "hypothesis_tests.h"
+#include "number_text.h"
 #include "rays_per_sample.h"
+#include "run_limits.h"
 #include "timing_lock.h"
 
 #include <algorithm>
