@@ -11,6 +11,7 @@
 #include "race_report.h"
 #include "sandbox.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 

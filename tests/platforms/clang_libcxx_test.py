@@ -34,7 +34,9 @@ import sys
 from platform_support import SKIP, TimedSteps, build_arguments, clang_or_skip
 
 TARGETS = ["viewer", "viewer_solutions_as_student", "grader", "bench", "test_sampling",
-           "test_scene", "test_render", "test_estimators", "test_grader", "test_process"]
+           "test_scene", "test_render", "test_estimators", "test_grader", "test_process",
+           # the window test's stuck window: the viewer around the endless-loop mutant
+           "viewer_mutant_uniform_endless_loop"]
 
 
 def libcxx_missing(compiler):
