@@ -20,12 +20,12 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
     radiance += ctx.directLight(hit);
 
     // TODO(lab1.2): the depth limit. From a hit at depth ctx.maxDepth, trace no further rays.
-    PATHLAB_TODO("lab1.2");
+    PATHLAB_TODO("lab1.2", depth);
 
     const Material& m = hit.material;
     // TODO(lab1.3): the diffuse bounce. If Kd is not black, trace diffuseRay(hit, u) with
     // u = ctx.sampler.get2D() one level deeper and add what it brings back, weighted by Kd.
-    PATHLAB_TODO("lab1.3");
+    PATHLAB_TODO("lab1.3", m);
 
     // TODO(lab1.4): the mirror bounce. If Ks is not black, trace mirrorRay(ray, hit), weight Ks.
     PATHLAB_TODO("lab1.4");
@@ -33,7 +33,6 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
     // TODO(lab1.5): the refraction. If Kt is not black, trace refractionRay(ray, hit), weight Kt.
     PATHLAB_TODO("lab1.5");
 
-    (void)depth, (void)m; // remove once you use them
     return radiance;
 }
 

@@ -20,19 +20,18 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
     radiance += ctx.directLight(hit);
 
     // TODO(lab3.2): the depth limit, as in lab 1.
-    PATHLAB_TODO("lab3.2");
+    PATHLAB_TODO("lab3.2", depth);
 
     const Material& m = hit.material;
     // TODO(lab3.3): give each component a probability proportional to its strength,
     // reduceMax(Kd), reduceMax(Ks), reduceMax(Kt), normalised by their sum; if the sum is below
     // 0.01 the surface is all but black: stop here.
-    PATHLAB_TODO("lab3.3");
+    PATHLAB_TODO("lab3.3", m);
 
     // TODO(lab3.4): choose one component with those probabilities (u = ctx.sampler.get1D()),
     // trace its ray and divide what it brings back by its probability.
     PATHLAB_TODO("lab3.4");
 
-    (void)depth, (void)m; // remove once you use them
     return radiance;
 }
 

@@ -25,13 +25,12 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
 
     const Material& m = hit.material;
     // TODO(lab4.3): choose one component by importance, as in lab 3, and trace its ray.
-    PATHLAB_TODO("lab4.3");
+    PATHLAB_TODO("lab4.3", depth, m);
 
     // TODO(lab4.4): divide what the traced ray brings back by the probability of the choice AND
     // by the probability of having continued at all.
     PATHLAB_TODO("lab4.4");
 
-    (void)depth, (void)m; // remove once you use them
     return radiance;
 }
 

@@ -20,7 +20,7 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
     radiance += ctx.directLight(hit);
 
     // TODO(lab2.2): the depth limit, as in lab 1.
-    PATHLAB_TODO("lab2.2");
+    PATHLAB_TODO("lab2.2", depth);
 
     const Material& m = hit.material;
     // TODO(lab2.3): choose ONE of the three components (diffuse, mirror, refraction), each with
@@ -29,9 +29,8 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
 
     // TODO(lab2.4): trace only the chosen component's ray (if that component is not black) and
     // divide what it brings back by the probability of having chosen it.
-    PATHLAB_TODO("lab2.4");
+    PATHLAB_TODO("lab2.4", m);
 
-    (void)depth, (void)m; // remove once you use them
     return radiance;
 }
 

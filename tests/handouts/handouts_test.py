@@ -274,7 +274,7 @@ def check_todos(source, handouts):
         text = read(lab)
         name = "labs/" + os.path.basename(lab)
         comments = re.findall(r"TODO\((lab\d+\.\d+)\)", text)
-        markers = re.findall(r"PATHLAB_TODO\(\"(lab\d+\.\d+)\"\)", text)
+        markers = re.findall(r"PATHLAB_TODO\(\"(lab\d+\.\d+)\"[,)]", text)
         check(comments == markers and comments,
               f"{name}: its TODO comments and PATHLAB_TODO markers agree {comments} {markers}")
         handout = re.search(r"Handout: handouts/([\w.-]+\.md)", text)

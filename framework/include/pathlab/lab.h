@@ -20,8 +20,8 @@
 ///              sampleCosineHemisphere(normal, u) underneath diffuseRay.
 ///   Randomness ctx.sampler.get1D() -> float in [0,1), ctx.sampler.get2D() -> Vec2.
 ///   Parameters ctx.maxDepth (default 3), ctx.continueProb (default 0.1).
-///   Bookkeeping PATHLAB_TODO("lab1.2") marks a step not written yet: it warns once, naming the
-///              file and line, and the program runs on.
+///   Bookkeeping PATHLAB_TODO("lab1.2", depth) marks a step not written yet (and the names it
+///              will use): it warns once, naming the file and line, and the program runs on.
 ///
 /// The handouts (handouts/01-branching.md ...) explain the estimators each lab builds.
 
