@@ -77,6 +77,8 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const ProcessLim
     setup.cpus = options.cpus;
     setup.user = options.user;
     setup.collectPipe = options.collectBytes > 0;
+    // Each sandbox leaves an orphan to reap: reaped here, whatever this process's ancestors do.
+    setup.reapOrphans = true;
     const ChildRun run =
         runChild(argv, setup, {limits.wallSeconds, 64u << 10, options.collectBytes});
 

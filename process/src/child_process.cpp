@@ -54,6 +54,7 @@ struct ChildPlan {
 #endif
     bool ownGroup = false;
     bool dieWithParent = false;
+    bool reapOrphans = false;
     int user = -1;
     int outputFd = -1;  ///< becomes its stdout and stderr (-1: ours)
     int collectFd = -1; ///< becomes its descriptor 3 (-1: none)
@@ -80,9 +81,40 @@ ChildPlan planFor(const std::vector<std::string>& argv, const ChildSetup& setup)
 #endif
     plan.ownGroup = setup.ownProcessGroup;
     plan.dieWithParent = setup.dieWithParent;
+    plan.reapOrphans = setup.reapOrphans;
     plan.user = setup.user;
     return plan;
 }
+
+#if defined(__linux__)
+/// In the child (async-signal-safe calls only): forks the process that goes on to run the
+/// program, and returns in it. This process stays, as the reaper of the program's descendants:
+/// it waits until every one has ended, then ends as the program ended (exit status or signal).
+void interposeReaper() {
+    if (::prctl(PR_SET_CHILD_SUBREAPER, 1) != 0) return; // no reaper: the program runs here
+    const pid_t program = ::fork();
+    if (program < 0) ::_exit(127);
+    if (program == 0) {
+        ::prctl(PR_SET_PDEATHSIG, SIGKILL); // it goes with its reaper
+        return;
+    }
+    int programStatus = 0, status = 0;
+    for (pid_t ended; (ended = ::waitpid(-1, &status, 0)) != -1 || errno == EINTR;)
+        if (ended == program) programStatus = status;
+    if (WIFSIGNALED(programStatus)) {
+        const int signal = WTERMSIG(programStatus);
+        const rlimit noCore{0, 0};
+        ::setrlimit(RLIMIT_CORE, &noCore);
+        ::signal(signal, SIG_DFL);
+        sigset_t only;
+        sigemptyset(&only);
+        sigaddset(&only, signal);
+        ::sigprocmask(SIG_UNBLOCK, &only, nullptr);
+        ::kill(::getpid(), signal);
+    }
+    ::_exit(WIFEXITED(programStatus) ? WEXITSTATUS(programStatus) : 127);
+}
+#endif
 
 /// In the child, between fork and exec: only async-signal-safe calls.
 [[noreturn]] void becomeChild(const ChildPlan& plan) {
@@ -90,6 +122,11 @@ ChildPlan planFor(const std::vector<std::string>& argv, const ChildSetup& setup)
     if (plan.dieWithParent) ::prctl(PR_SET_PDEATHSIG, SIGKILL);
 #endif
     if (plan.ownGroup) ::setpgid(0, 0);
+#if defined(__linux__)
+    // Before the limits and the user: the reaper stays as we are, and its fork is not counted
+    // against the program's process limit.
+    if (plan.reapOrphans) interposeReaper();
+#endif
     for (const auto& [resource, limit] : plan.limits) ::setrlimit(resource, &limit);
 #if defined(__linux__)
     if (plan.pinned) ::sched_setaffinity(0, sizeof plan.cpus, &plan.cpus);

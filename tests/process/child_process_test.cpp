@@ -7,9 +7,14 @@
 #include "pathlab/shell_command.h"
 
 #include <chrono>
+#include <csignal>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <sys/wait.h>
+#if defined(__linux__)
+#include <sys/prctl.h>
+#endif
 #include <thread>
 #include <vector>
 
@@ -94,6 +99,44 @@ TEST_CASE("output to a file; children started together, reaped as each ends", "[
     children[0].wait();
     CHECK(children[0].exitCode() == 128 + 9);
 }
+
+#if defined(__linux__)
+TEST_CASE("reapOrphans: what the program leaves is reaped before it counts as ended; its exit "
+          "status and signal are kept",
+          "[process]") {
+    // While this runs, orphans come to this process, as they come to a container's first
+    // process that never reaps them: a descendant the child leaves behind stays here a zombie.
+    REQUIRE(::prctl(PR_SET_CHILD_SUBREAPER, 1) == 0);
+    const auto leaveOrphan = [](bool reapOrphans) {
+        ChildSetup setup;
+        setup.reapOrphans = reapOrphans;
+        const ChildRun run = shell("sleep 0.2 >/dev/null 2>&1 & echo $!; exit 5", setup);
+        CHECK(run.exitCode == 5);
+        return std::stoi(run.output);
+    };
+    const auto state = [](int pid) {
+        std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+        std::string text((std::istreambuf_iterator<char>(stat)), {});
+        const size_t name = text.rfind(')');
+        return name == std::string::npos ? '-' : text.at(name + 2); // '-': no such process
+    };
+
+    const int reaped = leaveOrphan(true);
+    CHECK(state(reaped) == '-');
+
+    const int left = leaveOrphan(false);
+    for (int i = 0; i < 400 && state(left) != 'Z'; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    CHECK(state(left) == 'Z');
+    ::waitpid(left, nullptr, 0);
+    ::prctl(PR_SET_CHILD_SUBREAPER, 0);
+
+    ChildSetup setup;
+    setup.reapOrphans = true;
+    CHECK(shell("kill -XCPU $$", setup).exitCode == 128 + SIGXCPU);
+    CHECK(runChild({"/nonexistent/program"}, setup, {}).exitCode == 127);
+}
+#endif
 
 TEST_CASE("a program found in PATH", "[process]") {
     CHECK(findProgram("sh").find("/sh") != std::string::npos);

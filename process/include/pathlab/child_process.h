@@ -32,6 +32,11 @@ struct ChildSetup {
     std::string outputFile;
     /// A pipe as its file descriptor 3 too, for what it hands back (ChildProcess::collectPipe).
     bool collectPipe = false;
+    /// Linux only: the program runs in a child of a process that waits for every descendant the
+    /// program leaves, and then ends as the program did. Bubblewrap leaves its sandbox's first
+    /// process to whoever reaps orphans; where that is a container's first process that never
+    /// reaps, each sandbox would leave a zombie, counted against its user's process limit.
+    bool reapOrphans = false;
 };
 
 /// A child process: started by the constructor, ended by the program it runs. Moved, not
