@@ -35,7 +35,8 @@ std::string compilerMessages(const ProcessOutcome& outcome) {
     std::istringstream in(outcome.output);
     std::string line, text;
     for (int n = 0; n < 25 && std::getline(in, line); ++n) {
-        for (const std::string folder : {"/submission/", "/pathlab/include/", "/pathlab/runner/"})
+        for (const std::string folder :
+             {"/submission/", "/pathlab/include/", "/pathlab/generated/", "/pathlab/runner/"})
             for (size_t at; (at = line.find(folder)) != std::string::npos;)
                 line.erase(at, folder.size());
         text += line + "\n";
@@ -66,8 +67,8 @@ std::string compileObject(const LabBuild& build, const std::string& source,
     run.command = {build.compiler};
     run.command.insert(run.command.end(), build.flags.begin(), build.flags.end());
     run.command.insert(run.command.end(), extraFlags.begin(), extraFlags.end());
-    run.command.insert(run.command.end(),
-                       {"-DPATHLAB_IMPL=" + implementation, "-I/pathlab/include"});
+    run.command.insert(run.command.end(), {"-DPATHLAB_IMPL=" + implementation, "-I/pathlab/include",
+                                           "-I/pathlab/generated"});
     // The table alone sees the runner's headers; a lab file sees the student API (lab.h).
     if (source == build.labTable) run.command.push_back("-I/pathlab/runner");
     // Each lab's namespace named after the set, as CMakeLists.txt's pathlab_lab_library does.
@@ -76,6 +77,7 @@ std::string compileObject(const LabBuild& build, const std::string& source,
                               "_" + implementation);
     run.command.insert(run.command.end(), {"-c", "/submission/" + name, "-o", "out.o"});
     run.files = {{build.include, "/pathlab/include"},
+                 {build.generatedInclude, "/pathlab/generated"},
                  {build.runnerInclude, "/pathlab/runner"},
                  {source, "/submission/" + name}};
     run.collect = {"out.o"};
@@ -135,6 +137,7 @@ LabBuild loadLabBuild(const std::string& path) {
         return {j.at("compiler"),
                 j.at("flags").get<std::vector<std::string>>(),
                 j.at("include"),
+                j.at("generated_include"),
                 j.at("runner_include"),
                 j.at("lab_table"),
                 j.at("stubs"),
@@ -165,7 +168,7 @@ std::string kitFingerprint(const LabBuild& build) {
     for (Lab lab : AllLabs)
         files.insert(files.end(),
                      {build.stubs + "/" + labFile(lab), build.solutions + "/" + labFile(lab)});
-    for (const std::string& folder : {build.include, build.runnerInclude})
+    for (const std::string& folder : {build.include, build.generatedInclude, build.runnerInclude})
         for (const auto& entry : fs::recursive_directory_iterator(folder))
             if (entry.is_regular_file()) files.push_back(entry.path().string());
     std::sort(files.begin(), files.end());

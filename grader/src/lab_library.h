@@ -18,7 +18,9 @@ namespace pathlab::grader {
 struct LabBuild {
     std::string compiler;
     std::vector<std::string> flags;
-    std::string include;       ///< framework/include: the student API and what it includes
+    std::string include; ///< framework/include: the student API and what it includes
+    /// The build's generated/include: the headers of the API CMake writes (pathlab/lab_list.h).
+    std::string generatedInclude;
     std::string runnerInclude; ///< runner/include: the lab tables lab_table.cpp defines
     std::string labTable;      ///< runner/src/lab_table.cpp
     std::string stubs;         ///< labs/: the stubs stand in for a lab that is missing or broken

@@ -23,5 +23,6 @@ cmake --build build --target grader
 if ls grader/hidden_scenes/*.ecs >/dev/null 2>&1; then
     build/grader make-references --only-hidden
 fi
+# The sandbox compiles a submission with the headers the build generated too (build/generated/).
 chmod -R a+rX build
 echo "setup.sh: PathLab's grader is built in $source/build"

@@ -8,7 +8,8 @@ Each case is a small lab file compiled exactly as the build compiles labs/branch
 command from BUILD/compile_commands.json, syntax only): the lab that uses every documented part
 of the API must compile, and each one that reaches for a renderer hook must fail, with the
 compiler naming what it refused. The headers a lab file sees through lab.h are listed and compared
-with the ones lab.h documents (below), so that a header slipping into the student API is noticed.
+with the ones lab.h documents (below), so that a header slipping into the student API is noticed;
+the list of labs among them must be the one the build generates (BUILD/generated/include).
 """
 import argparse
 import json
@@ -62,7 +63,8 @@ FORBIDDEN = [
 ]
 
 # The headers of pathlab/ a lab file sees through lab.h: the types and functions lab.h's comment
-# documents, and what they are made of.
+# documents, and what they are made of. lab_list.h among them is the build's: CMake writes it
+# from framework/lab_list.txt into BUILD/generated/include.
 DOCUMENTED_HEADERS = {
     "lab.h", "lab_declarations.h", "lab_list.h", "call_site.h", "color.h", "constants.h", "cosine_hemisphere.h", "hit.h",
     "material.h", "orthonormal_basis.h", "path_context.h", "pcg32.h", "ray.h", "sampler.h",
@@ -129,12 +131,19 @@ def main():
                                   f"{output[-800:]})"))
 
     status, output = compile_lab(command, directory, DOCUMENTED_LAB, extra=["-H"])
-    seen = {os.path.basename(line.lstrip(". ").strip()) for line in output.splitlines()
-            if line.startswith(".") and "/pathlab/" in line}
+    included = [os.path.join(directory, line.lstrip(". ").strip()) for line in output.splitlines()
+                if line.startswith(".") and "/pathlab/" in line]
+    seen = {os.path.basename(path) for path in included}
     extra_headers, missing = sorted(seen - DOCUMENTED_HEADERS), sorted(DOCUMENTED_HEADERS - seen)
     ok = status == 0 and not extra_headers and not missing
     check(ok, f"lab.h brings in exactly the documented headers ({len(seen)} of pathlab/)" +
           ("" if ok else f": not documented {extra_headers}, documented but gone {missing}"))
+    generated = os.path.realpath(os.path.join(args.build, "generated", "include", "pathlab",
+                                              "lab_list.h"))
+    lists = sorted({os.path.realpath(path) for path in included
+                    if os.path.basename(path) == "lab_list.h"})
+    check(lists == [generated], f"the lab_list.h a lab file sees is the one the build generates "
+                                f"from framework/lab_list.txt ({generated}): {lists}")
     return exit_code()
 
 

@@ -5,8 +5,8 @@ Usage: catches_mutants.py --solutions EXE --stubs EXE [--mutant NAME:LAB:STEP:EX
                           [--endless-loop NAME:LAB:EXE]...
 
 Each EXE holds the estimator tests linked as the student release links them, without the
-solutions, so they render the "student" labs linked in (tests/CMakeLists.txt): the solutions,
-the stubs of labs/, or the solutions with one lab swapped for the mutant
+solutions, so they render the "student" labs linked in (tests/estimators/CMakeLists.txt): the
+solutions, the stubs of labs/, or the solutions with one lab swapped for the mutant
 tests/grader/mutants/NAME/. Checks, each printing PASS/FAIL (the script exits non-zero if any
 failed):
 - with the solutions as the student's labs, every lab's tests pass;

@@ -70,7 +70,7 @@ def unzip(archive, folder):
     with zipfile.ZipFile(archive) as z:
         names = z.namelist()
         for required in ("setup.sh", "run_autograder", "CMakeLists.txt", "solutions/branching.cpp",
-                         "grader/rubric.json", "scripts/install-deps.sh"):
+                         "grader/rubric.json", "scripts/install-deps.sh", "framework/lab_list.txt"):
             check(required in names, f"autograder.zip holds {required} at its root")
         check(not any(n.startswith((".git/", "build/", "build-")) for n in names),
               "autograder.zip holds no history and no build folder")

@@ -4,8 +4,9 @@
 Usage: release_test.py --source KIT [--keep]
 
 Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
-1. The tarball unpacks into one folder, pathlab/, with the framework, the stubs of labs/ as they
-   are, the models, the grader with its rubric and references, the handouts and scripts, and the
+1. The tarball unpacks into one folder, pathlab/, with the framework (and the list of labs,
+   framework/lab_list.txt, from which the release's CMake generates pathlab/lab_list.h, as the
+   kit's does), the stubs of labs/ as they are, the models, the grader with its rubric and references, the handouts and scripts, and the
    students' README (README-student.md) as its README.md; and without solutions/, .git, the
    grader's mutant and hostile labs or the tests built on them, the instructors' documents,
    archives or compiled code, or any scene but the kit's public ones in models/ (no hidden ones).
@@ -133,6 +134,7 @@ def check_contents(root, files):
         with open(os.path.join(root, "README.md"), "rb") as out:
             check(kit.read() == out.read(), "README.md is the students' README (README-student.md)")
     for path in ("README.md", "Makefile", "CMakeLists.txt", "framework/include/pathlab/lab.h",
+                 "framework/lab_list.txt", "cmake/lab_list.cmake", "cmake/lab_list.h.in",
                  "apps/viewer/main.cpp", "grader/rubric.json", "scripts/install-deps.sh",
                  "handouts/01-branching.md", "models/cornell_box_VI2_Specular.ecs",
                  "tests/support/test_support.cpp", "tests/estimators/furnace_test.cpp",

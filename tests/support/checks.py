@@ -5,18 +5,19 @@ A test prints PASS or FAIL for each check and exits non-zero at the end if any f
 log shows every check, not only the first that failed."""
 import argparse
 import os
-import re
 import sys
 
 KIT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
 
 def _labs_in_order():
-    """The labs' names from the one list the build, the registry and the viewer read."""
-    with open(os.path.join(KIT, "framework", "include", "pathlab", "lab_list.h")) as f:
-        names = re.findall(r"^\s*PATHLAB_LAB\((\w+),", f.read(), re.M)
+    """The labs' names from the one list the build, the registry and the viewer follow
+    (framework/lab_list.txt: a lab per line, its name first; # starts a comment line)."""
+    with open(os.path.join(KIT, "framework", "lab_list.txt"), encoding="utf-8") as f:
+        lines = [line.split() for line in f]
+    names = [fields[0] for fields in lines if fields and not fields[0].startswith("#")]
     if not names:
-        raise RuntimeError("lab_list.h names no lab: has PATHLAB_LAB's form changed?")
+        raise RuntimeError("framework/lab_list.txt names no lab")
     return tuple(names)
 
 

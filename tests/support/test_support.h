@@ -24,7 +24,7 @@ HeadlessResult render(const std::vector<std::string>& arguments);
 /// Renders like render() with the labs the lab tests check: the reference solutions where the
 /// test executable has them (`--solution`); otherwise its student labs: the student's own labs/
 /// in the student release, so that there a lab's tests pass once the student has finished it,
-/// and the mutant labs of the kit's test of the lab tests (tests/CMakeLists.txt).
+/// and the mutant labs of the kit's test of the lab tests (tests/estimators/CMakeLists.txt).
 HeadlessResult renderLabUnderTest(std::vector<std::string> arguments);
 
 /// The image mean and its standard error, averaged over the three channels or per channel:
