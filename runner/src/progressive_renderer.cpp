@@ -4,6 +4,8 @@
 #include "pathlab/lab_tables.h"
 
 #include <chrono>
+#include <optional>
+#include <utility>
 
 namespace pathlab {
 
@@ -95,95 +97,136 @@ bool ProgressiveRenderer::takeFrame(Frame& frame, uint64_t& generation) {
     return true;
 }
 
-void ProgressiveRenderer::run() {
+/// Everything accumulated since the last restart; the render thread's alone.
+struct ProgressiveRenderer::Accumulation {
     uint64_t generation = 0;
     ViewSettings settings;
+    /// Buffer 0 is the implementation shown, buffer 1 the other one, for the split view.
     AccumulationBuffer buffers[2] = {AccumulationBuffer(1, 1), AccumulationBuffer(1, 1)};
     double seconds[2] = {0, 0};
     RayCounters rays;
     std::optional<NonfiniteSample> firstNonfinite; // of the shown implementation since the restart
     FrameRate frameRate;                           // of the implementation shown (buffer 0)
     int frames = 0;
-    while (true) {
-        {
-            std::unique_lock<std::mutex> lock(mutex_);
-            // After --frames frames, idle until something restarts accumulation.
-            wake_.wait(lock, [&] {
-                return stopping_ || generation != generation_ || frameLimit_ == 0 ||
-                       frames < frameLimit_;
-            });
-            if (stopping_) return;
-            if (generation != generation_) { // restart: cleared buffers for the new settings
-                generation = generation_;
-                settings = settings_;
-                cancel_ = false;
-                // The other implementation's buffer is only needed for the split view.
-                resetBuffer(buffers[0], settings.width, settings.height);
-                resetBuffer(buffers[1], settings.split ? settings.width : 1,
-                            settings.split ? settings.height : 1);
-                seconds[0] = seconds[1] = 0;
-                rays = RayCounters();
-                firstNonfinite.reset();
-                frameRate.clear();
-                frames = 0;
-            }
-        }
-        // In the split view both implementations get equal render time: the one behind goes next.
-        const int which = settings.split && seconds[1] < seconds[0] ? 1 : 0;
-        const Implementation impl = which == 0 ? settings.implementation
-                                               : (settings.implementation == Implementation::Student
-                                                      ? Implementation::Solution
-                                                      : Implementation::Student);
-        const Camera camera(settings.camera, settings.width, settings.height);
-        passLab_ = settings.lab;
-        passImplementation_ = impl;
-        renderer_.resetCounts(); // this pass's rays and non-finite samples alone
-        const auto start = std::chrono::steady_clock::now();
-        const bool finished = renderer_.renderPass(
-            buffers[which], camera, findPathTrace(settings.lab, impl), settings.parameters,
-            settings.seed, settings.sppPerFrame, &cancel_);
-        const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-        if (!finished) continue; // restarted mid-pass: the partial pass is thrown away
-        seconds[which] += elapsed.count();
-        const RayCounters traced = renderer_.rayCounters();
-        if (which == 0) {
+
+    /// Cleared buffers for new settings: a restart starts the image again.
+    void restart(const ViewSettings& newSettings, uint64_t newGeneration) {
+        generation = newGeneration;
+        settings = newSettings;
+        // The other implementation's buffer is only needed for the split view.
+        resetBuffer(buffers[0], settings.width, settings.height);
+        resetBuffer(buffers[1], settings.split ? settings.width : 1,
+                    settings.split ? settings.height : 1);
+        seconds[0] = seconds[1] = 0;
+        rays = RayCounters();
+        firstNonfinite.reset();
+        frameRate.clear();
+        frames = 0;
+    }
+
+    /// In the split view both implementations get equal render time: the one behind goes next.
+    int nextBuffer() const { return settings.split && seconds[1] < seconds[0] ? 1 : 0; }
+
+    /// Buffer 0 holds the implementation asked for, buffer 1 the other one.
+    Implementation implementationOf(int buffer) const {
+        if (buffer == 0) return settings.implementation;
+        return settings.implementation == Implementation::Student ? Implementation::Solution
+                                                                  : Implementation::Student;
+    }
+
+    /// A finished pass into the totals; the panel's figures are of the implementation shown.
+    void add(int buffer, double passSeconds, const RayCounters& traced,
+             const std::optional<NonfiniteSample>& passFirst) {
+        seconds[buffer] += passSeconds;
+        if (buffer == 0) {
             rays += traced;
-            const std::optional<NonfiniteSample>& passFirst = renderer_.firstNonfinite();
             if (passFirst && (!firstNonfinite || passFirst->before(*firstNonfinite)))
                 firstNonfinite = passFirst;
-            frameRate.add(elapsed.count());
+            frameRate.add(passSeconds);
         }
         ++frames;
-        framesFinished_.fetch_add(1);
-
-        Frame frame;
-        frame.settings = settings;
-        frame.number = frames;
-        if (settings.split) frame.otherSpp = buffers[1].samplesPerPixel();
-        frame.frameSeconds = elapsed.count();
-        frame.medianFrameSeconds = frameRate.medianSeconds();
-        frame.raysPerSecond = static_cast<double>(traced.total()) / elapsed.count();
-        frame.stats = renderStats(
-            {"", settings.lab, settings.implementation, settings.parameters, settings.seed},
-            buffers[0], renderer_.threads(), seconds[0], rays, firstNonfinite);
-        if (onFrame_) onFrame_(frame);
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (generation == generation_) {
-            // The images go straight into the published frame's memory, which the window copies
-            // from under this lock: at full HD a third full-size image would be 25 MB more.
-            std::vector<float> image = std::move(latest_.image);
-            std::vector<float> otherImage = std::move(latest_.otherImage);
-            buffers[0].meanImage(image);
-            if (settings.split)
-                buffers[1].meanImage(otherImage);
-            else
-                otherImage.clear();
-            latest_ = std::move(frame);
-            latest_.image = std::move(image);
-            latest_.otherImage = std::move(otherImage);
-            latestGeneration_ = generation;
-        }
     }
+};
+
+void ProgressiveRenderer::run() {
+    Accumulation accumulation;
+    while (waitForWork(accumulation)) {
+        const int buffer = accumulation.nextBuffer();
+        const std::optional<double> seconds = renderPass(accumulation, buffer);
+        if (!seconds) continue; // restarted mid-pass: the partial pass is thrown away
+        const RayCounters traced = renderer_.rayCounters();
+        accumulation.add(buffer, *seconds, traced, renderer_.firstNonfinite());
+        framesFinished_.fetch_add(1);
+        Frame frame = frameFigures(accumulation, *seconds, traced);
+        if (onFrame_) onFrame_(frame);
+        publish(accumulation, std::move(frame));
+    }
+}
+
+bool ProgressiveRenderer::waitForWork(Accumulation& accumulation) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    // After --frames frames, idle until something restarts accumulation.
+    wake_.wait(lock, [&] {
+        return stopping_ || accumulation.generation != generation_ || frameLimit_ == 0 ||
+               accumulation.frames < frameLimit_;
+    });
+    if (stopping_) return false;
+    if (accumulation.generation != generation_) {
+        cancel_ = false;
+        accumulation.restart(settings_, generation_);
+    }
+    return true;
+}
+
+std::optional<double> ProgressiveRenderer::renderPass(Accumulation& accumulation, int buffer) {
+    const ViewSettings& settings = accumulation.settings;
+    const Implementation impl = accumulation.implementationOf(buffer);
+    const Camera camera(settings.camera, settings.width, settings.height);
+    passLab_ = settings.lab;
+    passImplementation_ = impl;
+    renderer_.resetCounts(); // this pass's rays and non-finite samples alone
+    const auto start = std::chrono::steady_clock::now();
+    const bool finished = renderer_.renderPass(
+        accumulation.buffers[buffer], camera, findPathTrace(settings.lab, impl),
+        settings.parameters, settings.seed, settings.sppPerFrame, &cancel_);
+    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+    if (!finished) return std::nullopt;
+    return elapsed.count();
+}
+
+Frame ProgressiveRenderer::frameFigures(const Accumulation& accumulation, double seconds,
+                                        const RayCounters& traced) const {
+    const ViewSettings& settings = accumulation.settings;
+    Frame frame;
+    frame.settings = settings;
+    frame.number = accumulation.frames;
+    if (settings.split) frame.otherSpp = accumulation.buffers[1].samplesPerPixel();
+    frame.frameSeconds = seconds;
+    frame.medianFrameSeconds = accumulation.frameRate.medianSeconds();
+    frame.raysPerSecond = static_cast<double>(traced.total()) / seconds;
+    frame.stats =
+        renderStats({"", settings.lab, settings.implementation, settings.parameters, settings.seed},
+                    accumulation.buffers[0], renderer_.threads(), accumulation.seconds[0],
+                    accumulation.rays, accumulation.firstNonfinite);
+    return frame;
+}
+
+void ProgressiveRenderer::publish(const Accumulation& accumulation, Frame frame) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (accumulation.generation != generation_) return; // restarted: the frame is out of date
+    // The images go straight into the published frame's memory, which the window copies from
+    // under this lock: at full HD a third full-size image would be 25 MB more.
+    std::vector<float> image = std::move(latest_.image);
+    std::vector<float> otherImage = std::move(latest_.otherImage);
+    accumulation.buffers[0].meanImage(image);
+    if (accumulation.settings.split)
+        accumulation.buffers[1].meanImage(otherImage);
+    else
+        otherImage.clear();
+    latest_ = std::move(frame);
+    latest_.image = std::move(image);
+    latest_.otherImage = std::move(otherImage);
+    latestGeneration_ = accumulation.generation;
 }
 
 } // namespace pathlab

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -78,7 +79,19 @@ public:
     int framesFinished() const { return framesFinished_.load(); }
 
 private:
+    struct Accumulation; ///< the render thread's images and totals since the last restart
+
+    /// The render thread: pass after pass, so that the window never waits for a frame.
     void run();
+    /// Idles after --frames (a done window costs no core), takes up restarts; false to stop.
+    bool waitForWork(Accumulation& accumulation);
+    /// One timed pass, or none if a restart abandoned it: a partial pass is never shown.
+    std::optional<double> renderPass(Accumulation& accumulation, int buffer);
+    /// The frame's figures without its images, for onFrame, which needs no copy of them.
+    Frame frameFigures(const Accumulation& accumulation, double seconds,
+                       const RayCounters& traced) const;
+    /// Hands the frame to takeFrame, unless a restart made it out of date meanwhile.
+    void publish(const Accumulation& accumulation, Frame frame);
 
     Renderer renderer_; ///< used by the render thread alone, but for its progress
     const std::function<void(const Frame&)> onFrame_;

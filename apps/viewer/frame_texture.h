@@ -1,0 +1,39 @@
+#pragma once
+/// The frame shown: its image as the view mode shows it, in an OpenGL texture that fills the
+/// window.
+
+#include "pathlab/image_io.h"
+#include "view_mode.h"
+
+#include <vector>
+
+namespace pathlab {
+struct Frame;
+}
+
+namespace pathlab::viewer {
+
+class FrameTexture {
+public:
+    /// Needs the window's OpenGL context current, as does everything below.
+    FrameTexture();
+    ~FrameTexture();
+    FrameTexture(const FrameTexture&) = delete;
+    FrameTexture& operator=(const FrameTexture&) = delete;
+
+    /// The frame's image, its difference to `reference` or the split view, into the texture.
+    void upload(const Frame& frame, ViewMode mode, const Image& reference);
+    /// The texture over the whole viewport; nothing before the first upload.
+    void draw() const;
+    bool hasImage() const { return hasImage_; }
+    /// The median relative difference of the last difference view uploaded, for the panel.
+    float medianDifference() const { return medianDifference_; }
+
+private:
+    std::vector<unsigned char> rgba_; ///< kept, so that a frame allocates nothing
+    unsigned texture_ = 0;
+    bool hasImage_ = false;
+    float medianDifference_ = 0;
+};
+
+} // namespace pathlab::viewer

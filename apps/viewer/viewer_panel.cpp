@@ -1,0 +1,73 @@
+#include "viewer_panel.h"
+
+#include "frame_report.h"
+#include "pathlab/progressive_renderer.h"
+#include "window_input.h"
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl2.h>
+
+#include <string>
+
+namespace pathlab::viewer {
+
+namespace {
+
+/// "; the first at pixel (x, y), sample n", or nothing.
+std::string firstNonfiniteText(const RenderStats& stats) {
+    if (!stats.firstNonfinite) return "";
+    const NonfiniteSample& f = *stats.firstNonfinite;
+    return "; the first at pixel (" + std::to_string(f.x) + ", " + std::to_string(f.y) +
+           "), sample " + std::to_string(f.sampleIndex);
+}
+
+/// The figures of the frame shown and the settings asked for, one line each.
+void drawFigures(const Frame& frame, const ViewSettings& settings, ViewMode mode,
+                 float medianDifference) {
+    const ViewSettings& s = frame.settings;
+    ImGui::Text("%.2f fps  %.1f ms/frame (median)", perSecond(frame.medianFrameSeconds),
+                1000.0 * frame.medianFrameSeconds);
+    ImGui::Text("%d spp   %.3g rays/s", frame.stats.spp, frame.raysPerSecond);
+    ImGui::Text("lab %s (%s)", std::string(labName(settings.lab)).c_str(),
+                std::string(implementationName(settings.implementation)).c_str());
+    ImGui::Text("maxDepth %d   continueProb %.2f", settings.parameters.maxDepth,
+                settings.parameters.continueProb);
+    ImGui::Text("noise %.4f (relative std. error)  efficiency %s", frame.stats.noise,
+                frame.stats.efficiencyText().c_str());
+    ImGui::Text("%dx%d  view: %s", s.width, s.height, viewModeName(mode));
+    if (mode == ViewMode::Split)
+        ImGui::Text("student %d spp | solution %d spp", frame.stats.spp, frame.otherSpp);
+    if (mode == ViewMode::Difference)
+        ImGui::Text("|image - ref| / ref: black 0, blue .125, green .25, yellow .375, red .5+;"
+                    " median %.3f",
+                    medianDifference);
+    if (frame.stats.nonfinitePixels > 0)
+        ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "%d pixels got NaN/inf samples%s",
+                           frame.stats.nonfinitePixels, firstNonfiniteText(frame.stats).c_str());
+    ImGui::Text("h: help");
+}
+
+} // namespace
+
+void ViewerPanel::draw(const Frame& frame, const ViewSettings& settings, ViewMode mode,
+                       float medianDifference) {
+    ImGui_ImplOpenGL2_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.6f);
+    ImGui::Begin("PathLab", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    drawFigures(frame, settings, mode, medianDifference);
+    ImGui::End();
+    if (showHelp_) {
+        ImGui::SetNextWindowPos(ImVec2(8, 200), ImGuiCond_FirstUseEver);
+        ImGui::Begin("Keys", &showHelp_, ImGuiWindowFlags_AlwaysAutoResize);
+        ImGui::TextUnformatted(keyHelp().c_str());
+        ImGui::End();
+    }
+    ImGui::Render();
+    ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+}
+
+} // namespace pathlab::viewer

@@ -1,0 +1,26 @@
+#pragma once
+/// The panel over the image: the figures a student writes down, and the keys on request (h).
+
+#include "view_mode.h"
+
+namespace pathlab {
+struct Frame;
+struct ViewSettings;
+} // namespace pathlab
+
+namespace pathlab::viewer {
+
+class ViewerPanel {
+public:
+    void toggleHelp() { showHelp_ = !showHelp_; }
+
+    /// Draws the panel with ImGui over what is drawn. The lab and its parameters are those of
+    /// `settings`, asked for, so that a key shows at once; the figures are those of `frame`.
+    void draw(const Frame& frame, const ViewSettings& settings, ViewMode mode,
+              float medianDifference);
+
+private:
+    bool showHelp_ = false; ///< the keys' window, which its own close button also hides
+};
+
+} // namespace pathlab::viewer
