@@ -102,35 +102,37 @@ bool isExecutableFile(const std::string& path) {
            (status.permissions() & fs::perms::owner_exec) != fs::perms::none;
 }
 
-} // namespace
-
-Arguments parseArguments(int argc, char** argv) {
-    namespace fs = std::filesystem;
-    Arguments a;
-    a.rubric = std::string(PATHLAB_GRADER_DIR) + "/rubric.json";
-    a.references = std::string(PATHLAB_GRADER_DIR) + "/references";
+/// The command, when argv[1] names one; returns the index of the first option.
+int readCommand(int argc, char** argv, Arguments& a) {
+    if (argc <= 1) return 1;
     int first = 1;
-    if (argc > 1) {
-        const std::string command = argv[1];
-        for (const char* known : {"make-references", "submission", "batch", "merge", "rubric"})
-            if (command == known) a.command = command, first = 2;
-        // The instructor's commands compile or run the reference solutions.
-        if (!PATHLAB_HAS_SOLUTIONS && first == 2 && a.command != "merge" && a.command != "rubric")
-            throw InputError("grader " + a.command +
-                             " is the instructor's: it needs the reference "
-                             "solutions (solutions/), which the student release does not have; "
-                             "`make grade` grades your labs");
-    }
-    bool scenesGiven = false;
-    // Options by what they take: a flag, a text (a path, a time, a name), or a value to check.
-    const std::map<std::string, bool Arguments::*> flags = {
+    const std::string command = argv[1];
+    for (const char* known : {"make-references", "submission", "batch", "merge", "rubric"})
+        if (command == known) a.command = command, first = 2;
+    // The instructor's commands compile or run the reference solutions.
+    if (!PATHLAB_HAS_SOLUTIONS && first == 2 && a.command != "merge" && a.command != "rubric")
+        throw InputError("grader " + a.command +
+                         " is the instructor's: it needs the reference "
+                         "solutions (solutions/), which the student release does not have; "
+                         "`make grade` grades your labs");
+    return first;
+}
+
+/// The options that set a flag.
+const std::map<std::string, bool Arguments::*>& flagOptions() {
+    static const std::map<std::string, bool Arguments::*> flags = {
         {"--reveal-hidden", &Arguments::revealHidden},
         {"--only-hidden", &Arguments::onlyHidden},
         {"--keep-stale", &Arguments::keepStale},
         {"--only-figures", &Arguments::onlyFigures},
         {"--force", &Arguments::force},
     };
-    const std::map<std::string, std::string Arguments::*> texts = {
+    return flags;
+}
+
+/// The options that take a text as it is (a path, a time, a name).
+const std::map<std::string, std::string Arguments::*>& textOptions() {
+    static const std::map<std::string, std::string Arguments::*> texts = {
         {"--viewer", &Arguments::viewer},
         {"--solution-viewer", &Arguments::solutionViewer},
         {"--deadline", &Arguments::deadline},
@@ -148,8 +150,15 @@ Arguments parseArguments(int argc, char** argv) {
         {"--reference-cache", &Arguments::referenceCache},
         {"--timing-lock", &Arguments::timingLock},
     };
-    using Checked = std::function<void(const std::string& option, const std::string& value)>;
-    const std::map<std::string, Checked> checked = {
+    return texts;
+}
+
+using Checked = std::function<void(const std::string& option, const std::string& value)>;
+
+/// The options whose value is checked before it is taken into `a`; --scenes also sets
+/// `scenesGiven`.
+std::map<std::string, Checked> checkedOptions(Arguments& a, bool& scenesGiven) {
+    return {
         {"--lab",
          [&](const std::string&, const std::string& name) {
              const auto lab = labFromName(name);
@@ -191,15 +200,21 @@ Arguments parseArguments(int argc, char** argv) {
         {"--work-cpus",
          [&](const std::string& o, const std::string& v) { a.workCpus = cpuList(o, v); }},
     };
+}
+
+/// Reads the options and inputs from argv[first] on into `a`, by what each option takes: a
+/// flag, a text, or a value to check.
+void readOptions(int argc, char** argv, int first, Arguments& a, bool& scenesGiven) {
+    const std::map<std::string, Checked> checked = checkedOptions(a, scenesGiven);
     for (int i = first; i < argc; ++i) {
         const std::string arg = argv[i];
         auto value = [&]() -> std::string {
             if (i + 1 >= argc) throw InputError("option " + arg + " needs a value");
             return argv[++i];
         };
-        if (const auto flag = flags.find(arg); flag != flags.end())
+        if (const auto flag = flagOptions().find(arg); flag != flagOptions().end())
             a.*(flag->second) = true;
-        else if (const auto text = texts.find(arg); text != texts.end())
+        else if (const auto text = textOptions().find(arg); text != textOptions().end())
             a.*(text->second) = value();
         else if (const auto check = checked.find(arg); check != checked.end())
             check->second(arg, value());
@@ -217,7 +232,11 @@ Arguments parseArguments(int argc, char** argv) {
             throw InputError("unexpected argument '" + arg +
                              "' (grader --help lists the commands)");
     }
-    if (a.command == "help") return a;
+}
+
+/// The hidden scenes' folder: the default one unless --scenes names another or none; a folder
+/// named is checked now, before any grading starts.
+void settleHiddenScenes(Arguments& a, bool scenesGiven) {
     if (!scenesGiven)
         a.scenesDir = defaultHiddenScenesFolder();
     else if (a.scenesDir == "none")
@@ -228,9 +247,11 @@ Arguments parseArguments(int argc, char** argv) {
             "solutions, which the student release does not have");
     else
         hiddenScenePaths(a.scenesDir); // says now if the folder is wrong
-    if (a.command == "rubric") return a;
-    if (a.referenceCache.empty())
-        a.referenceCache = (thisProgram().parent_path() / "reference-cache").string();
+}
+
+/// Throws InputError when the command lacks what it needs (inputs, --out) or was given an
+/// option that is not its own.
+void requireWhatTheCommandNeeds(const Arguments& a) {
     if (!a.only.empty() && a.command != "batch")
         throw InputError("option --only is for grader batch");
     if (a.command == "submission" && a.inputs.size() != 1)
@@ -241,10 +262,33 @@ Arguments parseArguments(int argc, char** argv) {
     if ((a.command == "submission" || a.command == "batch" || a.command == "merge") &&
         a.out.empty())
         throw InputError("grader " + a.command + " needs --out DIR");
+}
+
+/// The viewers: the one beside the grader unless named, checked to be programs before any
+/// render would fail on them.
+void settleViewers(Arguments& a) {
     if (a.viewer.empty()) a.viewer = (thisProgram().parent_path() / "viewer").string();
     if (a.solutionViewer.empty()) a.solutionViewer = a.viewer;
     for (const std::string& v : {a.viewer, a.solutionViewer})
         if (!isExecutableFile(v)) throw InputError("viewer '" + v + "' is not an executable file");
+}
+
+} // namespace
+
+Arguments parseArguments(int argc, char** argv) {
+    Arguments a;
+    a.rubric = std::string(PATHLAB_GRADER_DIR) + "/rubric.json";
+    a.references = std::string(PATHLAB_GRADER_DIR) + "/references";
+    const int first = readCommand(argc, argv, a);
+    bool scenesGiven = false;
+    readOptions(argc, argv, first, a, scenesGiven);
+    if (a.command == "help") return a;
+    settleHiddenScenes(a, scenesGiven);
+    if (a.command == "rubric") return a;
+    if (a.referenceCache.empty())
+        a.referenceCache = (thisProgram().parent_path() / "reference-cache").string();
+    requireWhatTheCommandNeeds(a);
+    settleViewers(a);
     return a;
 }
 

@@ -9,6 +9,7 @@
 // runs, taken by one grading at a time (an exclusive lock on /tmp/pathlab-timing-core-N.lock for
 // a lab's whole interleaved series, one thread per timed render, shared by every batch on the
 // machine); compiling and the correctness renders of every job share the other cores.
+#include "batch_selection.h"
 #include "class_similarity.h"
 #include "commands.h"
 #include "gradebook.h"
@@ -81,39 +82,6 @@ std::string timestamp() {
     const std::time_t now = std::time(nullptr);
     std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S", std::localtime(&now));
     return text;
-}
-
-struct Submission {
-    std::string path, id;
-};
-
-/// The submissions named on the command line: each folder's entries (a folder of
-/// submissions), or a .zip/.tar.gz given directly; sorted by id, this shard's only.
-std::vector<Submission> listSubmissions(const Arguments& a) {
-    std::vector<Submission> all;
-    for (const std::string& input : a.inputs) {
-        if (!fs::exists(input)) throw InputError(input + ": no such file or folder");
-        if (!fs::is_directory(input)) {
-            all.push_back({fs::absolute(input).string(), submissionId(input)});
-            continue;
-        }
-        for (const auto& entry : fs::directory_iterator(input)) {
-            const std::string name = entry.path().filename().string();
-            if (name.empty() || name[0] == '.') continue;
-            all.push_back(
-                {fs::absolute(entry.path()).string(), submissionId(entry.path().string())});
-        }
-    }
-    std::sort(all.begin(), all.end(),
-              [](const Submission& x, const Submission& y) { return x.id < y.id; });
-    for (size_t i = 1; i < all.size(); ++i)
-        if (all[i].id == all[i - 1].id)
-            throw InputError("two submissions have the id '" + all[i].id + "': " + all[i - 1].path +
-                             " and " + all[i].path + " (rename one)");
-    std::vector<Submission> shard;
-    for (size_t i = 0; i < all.size(); ++i)
-        if (static_cast<int>(i % a.shards) == a.shard) shard.push_back(all[i]);
-    return shard;
 }
 
 /// The options a child `grader submission` shares with the batch.
@@ -234,6 +202,214 @@ void runCanary(const std::vector<std::string>& childBase, const std::string& sol
     writeFileAtomically(folder + "/passed", fingerprint + "\n");
 }
 
+/// The wall time since `start`, for the log and the last line.
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The ids, in order, as the gradebook and the similarity check name submissions.
+std::vector<std::string> idsOf(const std::vector<Submission>& submissions) {
+    std::vector<std::string> ids;
+    for (const Submission& s : submissions) ids.push_back(s.id);
+    return ids;
+}
+
+/// The deadline and the submission times (a CSV's path) a batch's gradebook is written against.
+struct DeadlineAndTimes {
+    std::string deadline, times;
+};
+
+/// A batch run again keeps the deadline and times it was given before, unless told others.
+DeadlineAndTimes deadlineAndTimes(const Arguments& a, const std::string& out) {
+    DeadlineAndTimes dates;
+    dates.deadline = a.deadline.empty() ? earlierSetting(out, "deadline") : a.deadline;
+    dates.times = a.times.empty() ? earlierSetting(out, "times") : fs::absolute(a.times).string();
+    if (a.deadline.empty() && !dates.deadline.empty())
+        std::fprintf(stderr, "deadline %s, as the batch before into %s (--deadline sets another)\n",
+                     dates.deadline.c_str(), out.c_str());
+    return dates;
+}
+
+/// A time for an id that is no submission is likely a typing error in the CSV (a shard, which
+/// sees only some of the ids, cannot tell).
+void noteTimesOfOthers(const GradingNow& grading, const std::vector<Submission>& submissions) {
+    for (const auto& [id, when] : grading.times)
+        if (!hasId(submissions, id))
+            std::fprintf(stderr,
+                         "note: the submission times name '%s', which is not a submission here\n",
+                         id.c_str());
+}
+
+/// The batch's first line in batch.log: what it grades, and against what.
+void logBatchStart(std::ofstream& log, const Arguments& a, size_t submissions,
+                   const GradingNow& grading) {
+    log << timestamp() << " batch of " << submissions << " submission(s), " << a.jobs << " job(s)"
+        << (a.shards > 1 ? ", shard " + std::to_string(a.shard) + "/" + std::to_string(a.shards)
+                         : "")
+        << ", rubric " << grading.rubricHash << ", scenes " << grading.scenesHash << "\n";
+}
+
+/// The cores of a batch, by what runs on them.
+struct Cores {
+    std::vector<int> timing, work;
+};
+
+/// The first core for timed runs, the rest for everything else.
+Cores splitCores(const std::vector<int>& cpus) {
+    Cores cores;
+    cores.timing = cpus.empty() ? std::vector<int>{} : std::vector<int>{cpus[0]};
+    cores.work = cpus.size() > 1 ? std::vector<int>(cpus.begin() + 1, cpus.end()) : cpus;
+    return cores;
+}
+
+/// Shared by every grading: the compiled kit, and the references of hidden scenes (kept with
+/// this batch's output, measured again when a scene's files change).
+struct SharedFiles {
+    std::string kit, referenceCache;
+};
+
+/// Whether the gradings run the race check: said once for the batch, on standard error and in
+/// its log, so that a grading told --no-race-check does not try again.
+bool batchRaceCheck(const Arguments& a, bool anyToGrade, const LabBuild& build,
+                    const std::vector<int>& workCpus, std::ofstream& log) {
+    if (!a.raceCheck || !anyToGrade) return false;
+    const RaceCheckRuntime runtime =
+        raceCheckRuntime(build, {workCpus, sandboxUserForThisProcess()});
+    const bool available = runtime.available();
+    std::fprintf(stderr, "race check: %s\n",
+                 available ? "each lab compiled with ThreadSanitizer and rendered with 2 threads"
+                           : ("skipped, no lab fails for it: " + runtime.unavailable).c_str());
+    log << timestamp() << " race check: " << (available ? "on" : "skipped: " + runtime.unavailable)
+        << "\n";
+    return available;
+}
+
+/// A child `grader submission`'s command line, but for the submission and its --out.
+std::vector<std::string> childCommand(const Arguments& a, bool raceCheck, const SharedFiles& shared,
+                                      const Cores& cores) {
+    std::vector<std::string> argv = {thisProgram().string(), "submission"};
+    std::vector<std::string> options = sharedOptions(a);
+    if (a.raceCheck && !raceCheck) options.push_back("--no-race-check");
+    argv.insert(argv.end(), options.begin(), options.end());
+    argv.insert(argv.end(), {"--kit", shared.kit, "--timing-lock", timingLockFor(cores.timing),
+                             "--timing-cpus", joinCpus(cores.timing), "--work-cpus",
+                             joinCpus(cores.work), "--viewer", a.viewer, "--solution-viewer",
+                             a.solutionViewer, "--reference-cache", shared.referenceCache});
+    return argv;
+}
+
+/// The hidden scenes' references, measured into the batch's cache before the first job, so that
+/// no job waits for them or measures them twice.
+void measureHiddenReferences(const Arguments& a, const Rubric& rubric,
+                             const std::string& referenceCache, const std::string& scratch) {
+    std::vector<std::string> notes;
+    const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
+    gradingScenes(rubric, {a.references, a.scenesDir, referenceCache, a.revealHidden}, solution,
+                  scratch, notes);
+}
+
+/// OUT/batch.json: what the batch's gradebook is written against, for `grader merge` and for
+/// the next batch into OUT.
+void writeBatchJson(const std::string& out, const GradingNow& grading,
+                    const DeadlineAndTimes& dates) {
+    writeFileAtomically(out + "/batch.json", nlohmann::json{{"rubric_hash", grading.rubricHash},
+                                                            {"scenes_hash", grading.scenesHash},
+                                                            {"max_score", grading.maxScore},
+                                                            {"deadline", dates.deadline},
+                                                            {"times", dates.times}}
+                                                     .dump(1) +
+                                                 "\n");
+}
+
+/// The gradebook's rows: each submission's stored result, pending while `queued` names it.
+std::vector<GradebookEntry> gradebookEntries(const std::string& out,
+                                             const std::vector<Submission>& submissions,
+                                             const std::vector<std::string>& queued) {
+    std::vector<GradebookEntry> list;
+    for (const Submission& s : submissions) {
+        list.push_back(readGradebookEntry(out, s.id, s.path));
+        list.back().pending = std::find(queued.begin(), queued.end(), s.id) != queued.end();
+    }
+    return list;
+}
+
+/// Starts grading `s` into OUT/submissions/ID; its earlier result goes first, since a job's
+/// result.json is the sign that it is done.
+Job startGrading(const std::vector<std::string>& childBase, const Submission& s,
+                 const std::string& out, std::ofstream& log) {
+    const std::string folder = out + "/submissions/" + s.id;
+    fs::remove(folder + "/result.json");
+    fs::create_directories(folder);
+    std::vector<std::string> argv = childBase;
+    argv.insert(argv.end(), {s.path, "--out", folder});
+    Job job = startJob(argv, s, folder + "/grader.log");
+    log << timestamp() << " start " << s.id << " (" << s.path << ")\n" << std::flush;
+    return job;
+}
+
+/// A job still running after far longer than any grading takes has hit a grader fault.
+void killOverdue(std::vector<Job>& running, std::chrono::steady_clock::time_point now) {
+    const double jobSeconds = 3600; // far beyond any grading: only a grader fault gets here
+    for (Job& j : running)
+        if (std::chrono::duration<double>(now - j.start).count() > jobSeconds)
+            j.child.kill(); // reaped on a later turn (nothing if it already has been)
+}
+
+/// A job's end in the batch's log: its status and score, or why it was not graded.
+void logJobEnd(std::ofstream& log, const Job& job, const GradebookEntry& entry, double seconds) {
+    log << timestamp() << " done " << job.submission.id << ": ";
+    if (entry.result.is_null())
+        log << "not graded, " << entry.problem;
+    else
+        log << entry.result.value("status", "") << ", " << entry.result.value("score", 0.0) << " / "
+            << entry.result.value("max_score", 0.0);
+    log << ", " << std::lround(seconds) << " s\n" << std::flush;
+}
+
+/// How a batch's jobs ended.
+struct JobCounts {
+    size_t done = 0, failed = 0; ///< failed: not graded (no result.json)
+};
+
+/// Grades `todo`, `jobs` at a time; after each job the gradebook is written again, those queued
+/// or being graded in it as pending (similarity waits until all are graded).
+JobCounts gradeInJobs(int jobs, const std::vector<std::string>& childBase,
+                      const std::vector<Submission>& todo,
+                      const std::vector<Submission>& submissions, const std::string& out,
+                      const GradingNow& grading, std::ofstream& log) {
+    std::vector<std::string> queued = idsOf(todo);
+    writeGradebook(out, gradebookEntries(out, submissions, queued), grading, std::nullopt);
+    ProgressBar progress("grading", "submissions");
+    std::vector<Job> running;
+    size_t next = 0;
+    JobCounts counts;
+    progress.update(0, static_cast<int>(todo.size()));
+    while (next < todo.size() || !running.empty()) {
+        while (next < todo.size() && static_cast<int>(running.size()) < jobs)
+            running.push_back(startGrading(childBase, todo[next++], out, log));
+        // The first job found to have ended, reaped; the others on later turns.
+        const auto job =
+            std::find_if(running.begin(), running.end(), [](Job& j) { return j.child.poll(); });
+        const auto now = std::chrono::steady_clock::now();
+        killOverdue(running, now);
+        if (job == running.end()) {
+            ::usleep(50000);
+            continue;
+        }
+        queued.erase(std::find(queued.begin(), queued.end(), job->submission.id));
+        const GradebookEntry entry =
+            readGradebookEntry(out, job->submission.id, job->submission.path);
+        ++counts.done;
+        if (entry.result.is_null()) ++counts.failed;
+        logJobEnd(log, *job, entry, std::chrono::duration<double>(now - job->start).count());
+        running.erase(job);
+        writeGradebook(out, gradebookEntries(out, submissions, queued), grading, std::nullopt);
+        progress.update(static_cast<int>(counts.done), static_cast<int>(todo.size()),
+                        counts.failed > 0 ? std::to_string(counts.failed) + " not graded" : "");
+    }
+    return counts;
+}
+
 } // namespace
 
 int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
@@ -285,201 +461,41 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
     requireSandbox();
     const auto start = std::chrono::steady_clock::now();
     const std::vector<Submission> submissions = listSubmissions(a);
-    for (const std::string& id : a.only)
-        if (std::none_of(submissions.begin(), submissions.end(),
-                         [&](const Submission& s) { return s.id == id; }))
-            throw InputError("option --only: no submission has the id '" + id +
-                             "' (gradebook.csv lists the ids)");
+    requireKnownIds(a.only, submissions);
     fs::create_directories(a.out + "/submissions");
     const std::string out = fs::absolute(a.out).string();
-    // A batch run again keeps the deadline and times it was given before, unless told others.
-    const std::string deadline = a.deadline.empty() ? earlierSetting(out, "deadline") : a.deadline;
-    const std::string times =
-        a.times.empty() ? earlierSetting(out, "times") : fs::absolute(a.times).string();
-    if (a.deadline.empty() && !deadline.empty())
-        std::fprintf(stderr, "deadline %s, as the batch before into %s (--deadline sets another)\n",
-                     deadline.c_str(), out.c_str());
-    const GradingNow grading = gradingNow(a, rubric, deadline, times);
-    for (const auto& [id, when] : grading.times)
-        if (std::none_of(submissions.begin(), submissions.end(),
-                         [&](const Submission& s) { return s.id == id; }) &&
-            a.shards == 1)
-            std::fprintf(stderr,
-                         "note: the submission times name '%s', which is not a submission here\n",
-                         id.c_str());
+    const DeadlineAndTimes dates = deadlineAndTimes(a, out);
+    const GradingNow grading = gradingNow(a, rubric, dates.deadline, dates.times);
+    if (a.shards == 1) noteTimesOfOthers(grading, submissions);
     std::ofstream log(out + "/batch.log", std::ios::app);
-    log << timestamp() << " batch of " << submissions.size() << " submission(s), " << a.jobs
-        << " job(s)"
-        << (a.shards > 1 ? ", shard " + std::to_string(a.shard) + "/" + std::to_string(a.shards)
-                         : "")
-        << ", rubric " << grading.rubricHash << ", scenes " << grading.scenesHash << "\n";
-
-    // What to grade: everything not graded yet, and what was graded under another rubric, other
-    // scenes or another maximum (unless --keep-stale); --force: everything; --only: those named.
-    std::vector<Submission> todo;
-    size_t current = 0, staleKept = 0, staleRegraded = 0, notNamed = 0;
-    for (const Submission& s : submissions) {
-        const GradebookEntry stored = readGradebookEntry(out, s.id, s.path);
-        const bool isStale = !stored.result.is_null() && !staleness(stored.result, grading).empty();
-        const bool named = std::find(a.only.begin(), a.only.end(), s.id) != a.only.end();
-        const bool wanted = a.only.empty()
-                                ? a.force || stored.result.is_null() || (isStale && !a.keepStale)
-                                : named;
-        if (wanted) todo.push_back(s);
-        if (wanted && isStale)
-            ++staleRegraded;
-        else if (!wanted && !a.only.empty())
-            ++notNamed;
-        else if (!wanted && isStale)
-            ++staleKept;
-        else if (!wanted)
-            ++current;
-    }
-    auto sayWhatIsKept = [&] {
-        if (current > 0)
-            std::fprintf(stderr, "%zu submission(s) already graded (--force grades them again)\n",
-                         current);
-        if (notNamed > 0)
-            std::fprintf(stderr, "%zu submission(s) not named by --only: kept as they are\n",
-                         notNamed);
-        if (staleKept > 0)
-            std::fprintf(stderr,
-                         "%zu submission(s) graded under another rubric, other scenes or another "
-                         "maximum (--no-speed): kept, marked stale in the gradebook\n",
-                         staleKept);
-        if (staleRegraded > 0)
-            std::fprintf(stderr,
-                         "%zu submission(s) graded under another rubric, other scenes or another "
-                         "maximum (--no-speed): graded again\n",
-                         staleRegraded);
-    };
-    const size_t skipped = submissions.size() - todo.size();
-
-    // Cores: the first for timed runs, the rest for everything else.
-    const std::vector<int> cpus = allowedCpus();
-    const std::vector<int> timingCpus =
-        cpus.empty() ? std::vector<int>{} : std::vector<int>{cpus[0]};
-    const std::vector<int> workCpus =
-        cpus.size() > 1 ? std::vector<int>(cpus.begin() + 1, cpus.end()) : cpus;
-
-    // Shared by every grading: the compiled kit, and the references of hidden scenes (kept with
-    // this batch's output, measured again when a scene's files change).
+    logBatchStart(log, a, submissions.size(), grading);
+    const Selection selection = selectSubmissions(a, submissions, out, grading);
+    const Cores cores = splitCores(allowedCpus());
     const LabBuild build = labBuildOfThisGrader();
-    const std::string kit = out + "/.kit";
-    const std::string referenceCache = out + "/.references";
-    // Said once for the batch; a grading told --no-race-check does not try again.
-    bool raceCheck = a.raceCheck && !todo.empty();
-    if (raceCheck) {
-        const RaceCheckRuntime runtime =
-            raceCheckRuntime(build, {workCpus, sandboxUserForThisProcess()});
-        raceCheck = runtime.available();
-        std::fprintf(stderr, "race check: %s\n",
-                     raceCheck
-                         ? "each lab compiled with ThreadSanitizer and rendered with 2 threads"
-                         : ("skipped, no lab fails for it: " + runtime.unavailable).c_str());
-        log << timestamp()
-            << " race check: " << (raceCheck ? "on" : "skipped: " + runtime.unavailable) << "\n";
-    }
-    const std::vector<std::string> childBase = [&] {
-        std::vector<std::string> argv = {thisProgram().string(), "submission"};
-        std::vector<std::string> shared = sharedOptions(a);
-        if (a.raceCheck && !raceCheck) shared.push_back("--no-race-check");
-        argv.insert(argv.end(), shared.begin(), shared.end());
-        argv.insert(argv.end(),
-                    {"--kit", kit, "--timing-lock", timingLockFor(timingCpus), "--timing-cpus",
-                     joinCpus(timingCpus), "--work-cpus", joinCpus(workCpus), "--viewer", a.viewer,
-                     "--solution-viewer", a.solutionViewer, "--reference-cache", referenceCache});
-        return argv;
-    }();
-    if (!todo.empty()) {
+    const SharedFiles shared{out + "/.kit", out + "/.references"};
+    const bool raceCheck = batchRaceCheck(a, !selection.todo.empty(), build, cores.work, log);
+    const std::vector<std::string> childBase = childCommand(a, raceCheck, shared, cores);
+    if (!selection.todo.empty()) {
         std::fprintf(stderr, "compiling the lab kit (stubs, table, reference solutions) ...\n");
-        buildLabKit(build, kit, {workCpus, sandboxUserForThisProcess()});
-        std::vector<std::string> notes;
-        const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
-        gradingScenes(rubric, {a.references, a.scenesDir, referenceCache, a.revealHidden}, solution,
-                      scratch, notes);
+        buildLabKit(build, shared.kit, {cores.work, sandboxUserForThisProcess()});
+        measureHiddenReferences(a, rubric, shared.referenceCache, scratch);
         runCanary(childBase, build.solutions, out, grading, log);
     }
-    sayWhatIsKept(); // once the scenes' references and the canary let the batch go on
+    sayWhatIsKept(selection); // once the scenes' references and the canary let the batch go on
     // What this batch's gradebook is written against, for `grader merge`: only once the canary
     // passed, so that a batch it stopped changes nothing.
-    writeFileAtomically(out + "/batch.json", nlohmann::json{{"rubric_hash", grading.rubricHash},
-                                                            {"scenes_hash", grading.scenesHash},
-                                                            {"max_score", grading.maxScore},
-                                                            {"deadline", deadline},
-                                                            {"times", times}}
-                                                     .dump(1) +
-                                                 "\n");
-
-    std::vector<std::string> queued; // ids waiting or being graded: "pending" in the gradebook
-    for (const Submission& s : todo) queued.push_back(s.id);
-    auto entries = [&] {
-        std::vector<GradebookEntry> list;
-        for (const Submission& s : submissions) {
-            list.push_back(readGradebookEntry(out, s.id, s.path));
-            list.back().pending = std::find(queued.begin(), queued.end(), s.id) != queued.end();
-        }
-        return list;
-    };
-    writeGradebook(out, entries(), grading, std::nullopt); // similarity: once all are graded
-
-    ProgressBar progress("grading", "submissions");
-    const double jobSeconds = 3600; // far beyond any grading: only a grader fault gets here
-    std::vector<Job> running;
-    size_t next = 0, done = 0, failed = 0;
-    progress.update(0, static_cast<int>(todo.size()));
-    while (next < todo.size() || !running.empty()) {
-        while (next < todo.size() && static_cast<int>(running.size()) < a.jobs) {
-            const Submission& s = todo[next++];
-            const std::string folder = out + "/submissions/" + s.id;
-            fs::remove(folder + "/result.json");
-            fs::create_directories(folder);
-            std::vector<std::string> argv = childBase;
-            argv.insert(argv.end(), {s.path, "--out", folder});
-            running.push_back(startJob(argv, s, folder + "/grader.log"));
-            log << timestamp() << " start " << s.id << " (" << s.path << ")\n" << std::flush;
-        }
-        // The first job found to have ended, reaped; the others on later turns.
-        const auto job =
-            std::find_if(running.begin(), running.end(), [](Job& j) { return j.child.poll(); });
-        const auto now = std::chrono::steady_clock::now();
-        for (Job& j : running)
-            if (std::chrono::duration<double>(now - j.start).count() > jobSeconds)
-                j.child.kill(); // reaped on a later turn (nothing if it already has been)
-        if (job == running.end()) {
-            ::usleep(50000);
-            continue;
-        }
-        queued.erase(std::find(queued.begin(), queued.end(), job->submission.id));
-        const GradebookEntry entry =
-            readGradebookEntry(out, job->submission.id, job->submission.path);
-        const double seconds = std::chrono::duration<double>(now - job->start).count();
-        ++done;
-        if (entry.result.is_null()) ++failed;
-        log << timestamp() << " done " << job->submission.id << ": ";
-        if (entry.result.is_null())
-            log << "not graded, " << entry.problem;
-        else
-            log << entry.result.value("status", "") << ", " << entry.result.value("score", 0.0)
-                << " / " << entry.result.value("max_score", 0.0);
-        log << ", " << std::lround(seconds) << " s\n" << std::flush;
-        running.erase(job);
-        writeGradebook(out, entries(), grading, std::nullopt);
-        progress.update(static_cast<int>(done), static_cast<int>(todo.size()),
-                        failed > 0 ? std::to_string(failed) + " not graded" : "");
-    }
-    std::vector<std::string> ids;
-    for (const Submission& s : submissions) ids.push_back(s.id);
-    const std::vector<SimilarLabs> similar = similarSubmissions(out, ids);
-    writeGradebook(out, entries(), grading, similar);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    writeBatchJson(out, grading, dates);
+    const JobCounts counts =
+        gradeInJobs(a.jobs, childBase, selection.todo, submissions, out, grading, log);
+    const std::vector<SimilarLabs> similar = similarSubmissions(out, idsOf(submissions));
+    writeGradebook(out, gradebookEntries(out, submissions, {}), grading, similar);
+    const double seconds = secondsSince(start);
     log << timestamp() << " batch finished in " << seconds << " s\n";
     std::printf(
         "graded %zu submission(s) in %.0f s (%zu skipped, %zu not graded, %zu similar pair(s)): "
         "%s/gradebook.csv, %s/lms.csv, %s/summary.html\n",
-        done - failed, seconds, skipped, failed, similar.size(), out.c_str(), out.c_str(),
-        out.c_str());
+        counts.done - counts.failed, seconds, submissions.size() - selection.todo.size(),
+        counts.failed, similar.size(), out.c_str(), out.c_str(), out.c_str());
     return 0;
 }
 

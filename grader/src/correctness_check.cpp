@@ -122,166 +122,239 @@ struct Attempt {
     SeedImage firstImage;
 };
 
-/// One attempt of the correctness check over all scenes. `noise`: the figure of an earlier
-/// attempt (-1: none), kept where this one does not reach the noise scene.
-Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, double noise) {
+/// What the renders of every scene leave for the verdict.
+struct SceneComparisons {
+    std::vector<Comparison> scenes;                 ///< one per scene, in the setup's order
+    std::vector<double> allP;                       ///< every scene's regions' p, in a row
+    std::vector<PathLengthObservation> pathLengths; ///< lab 4 in the diffuse furnaces
+    bool stepsOpen = false;                         ///< see SceneRuns
+};
+
+/// Renders every scene and compares it with its reference, keeping in `attempt` the noise figure,
+/// the first image and the public scenes' pictures; a scene whose renders fail ends it, with
+/// `attempt.failure` saying so.
+SceneComparisons renderAndCompare(const GraderSetup& setup, Lab lab, uint64_t seedBase,
+                                  Attempt& attempt) {
     const Rubric& r = setup.rubric;
-    Attempt attempt;
-    attempt.noise = noise;
-    std::vector<std::string>& details = attempt.details;
-    std::vector<std::string>& hiddenDetails = attempt.hiddenDetails;
-    std::string& diagnosis = attempt.diagnosis;
-    std::vector<Comparison> comparisons;
-    std::vector<double> allP;
-    std::vector<PathLengthObservation> pathLengths; // lab 4 in the diffuse furnaces
-    bool stepsOpen = false;
+    SceneComparisons found;
     for (const GradingScene& scene : setup.scenes) {
         const SceneRuns runs = renderSeeds(setup, scene, lab, seedBase);
         if (!runs.failure.empty()) {
             attempt.failure = {"on " + scene.name + " the lab " +
                                    withoutSceneName(runs.failure, scene),
                                runs.failureKind};
-            return attempt;
+            return found;
         }
-        stepsOpen = stepsOpen || runs.stepsOpen;
+        found.stepsOpen = found.stepsOpen || runs.stepsOpen;
         if (scene.reference.scene == r.noiseScene || attempt.noise < 0)
             attempt.noise = trimmedSampleVariance(runs.images, r.forLab(lab).correctnessSpp);
         if (scene.reference.scene == r.noiseScene || !attempt.firstImage.scene)
             attempt.firstImage = {&scene, seedBase, setup.threads, runs.images.front()};
         if (lab == Lab::Roulette && scene.furnace && scene.furnace->walls == FurnaceWalls::Diffuse)
-            pathLengths.push_back({scene.furnace->continueProb, runs.rays.bounce});
-        comparisons.push_back(compare(runs, scene.reference.forLab(lab), r.seeds));
-        allP.insert(allP.end(), comparisons.back().p.begin(), comparisons.back().p.end());
+            found.pathLengths.push_back({scene.furnace->continueProb, runs.rays.bounce});
+        found.scenes.push_back(compare(runs, scene.reference.forLab(lab), r.seeds));
+        found.allP.insert(found.allP.end(), found.scenes.back().p.begin(),
+                          found.scenes.back().p.end());
         if (scene.hidden) continue; // its images are the instructor's
         LabGrade::Pictures pictures{
             scene.name, r.width, r.height, {}, scene.reference.forLab(lab).image};
         pictures.student = runs.meanImage();
         attempt.pictures.push_back(std::move(pictures));
     }
-    const std::vector<bool> rejected = holmRejections(allP, r.alpha);
+    return found;
+}
+
+/// Whether any region (of a scene, or of all scenes) differs from its reference.
+bool anyRejected(const std::vector<bool>& rejected) {
+    return std::any_of(rejected.begin(), rejected.end(), [](bool b) { return b; });
+}
+
+/// The name a diagnosis goes by: the cause up to the explanation after the colon.
+std::string causeName(const std::string& cause) { return cause.substr(0, cause.find(':')); }
+
+/// A likely cause in the details; the first one told names the diagnosis.
+void tellLikelyCause(const std::string& cause, Attempt& attempt) {
+    attempt.details.push_back("likely cause: " + cause);
+    if (attempt.diagnosis.empty()) attempt.diagnosis = causeName(cause);
+}
+
+/// Holm's rejections over all scenes' regions in a row, cut back into each scene's regions.
+std::vector<std::vector<bool>> rejectionsByScene(const std::vector<Comparison>& scenes,
+                                                 const std::vector<bool>& rejected) {
+    std::vector<std::vector<bool>> byScene;
+    size_t offset = 0;
+    for (const Comparison& c : scenes) {
+        byScene.emplace_back(rejected.begin() + offset, rejected.begin() + offset + c.p.size());
+        offset += c.p.size();
+    }
+    return byScene;
+}
+
+/// Which kinds of scene reject the lab: they decide which likely causes it may be told.
+struct RejectingScenes {
+    bool furnace = false, refraction = false, publicScene = false;
+};
+
+/// The furnaces have no glass: a lab that one of them rejects has a fault elsewhere, which the
+/// refraction check's image shows too, so only a lab that every furnace accepts is told about
+/// refraction; and only one that the refraction check accepts too about its diffuse directions
+/// (mixed_surfaces holds glass as well).
+RejectingScenes rejectingScenes(const std::vector<GradingScene>& scenes,
+                                const std::vector<bool>& sceneRejected) {
+    RejectingScenes rejecting;
+    for (size_t s = 0; s < scenes.size(); ++s) {
+        rejecting.furnace = rejecting.furnace || (scenes[s].furnace && sceneRejected[s]);
+        rejecting.refraction =
+            rejecting.refraction ||
+            (!scenes[s].hidden && scenes[s].reference.scene == "refraction_check" &&
+             sceneRejected[s]);
+        rejecting.publicScene = rejecting.publicScene || (!scenes[s].hidden && sceneRejected[s]);
+    }
+    return rejecting;
+}
+
+/// The whole image's mean over its three channels: a furnace's one value.
+double wholeImageMean(const Comparison& c) {
+    return (c.observed[0].mean + c.observed[1].mean + c.observed[2].mean) / 3;
+}
+
+/// The whole image's observed/expected per channel, each with its confidence interval.
+struct ChannelRatios {
+    std::string text; ///< " red R [LOW, HIGH] green ..."
+    std::vector<ChannelInterval> intervals;
+};
+
+ChannelRatios channelRatios(const Comparison& c, const Expectation& e, const Rubric& r) {
+    const double critical = studentCritical(r.alpha, r.seeds - 1);
+    const char* channel[3] = {"red", "green", "blue"};
+    ChannelRatios ratios;
+    for (int ch = 0; ch < 3; ++ch) {
+        const double ratio = c.observed[ch].mean / e.mean[ch];
+        const double half =
+            critical * std::hypot(c.observed[ch].standardError, e.standardError[ch]) / e.mean[ch];
+        ratios.text += std::string(" ") + channel[ch] + " " + fixed(ratio, 3) + " [" +
+                       fixed(ratio - half, 3) + ", " + fixed(ratio + half, 3) + "]";
+        ratios.intervals.push_back({ratio - half, ratio + half});
+    }
+    return ratios;
+}
+
+/// "N of M tiles differ ...: (column,row) ..." for a scene's regions (the whole image's three
+/// channels, then each tile's), or "" when no tile differs.
+std::string differingTiles(const std::vector<bool>& regionsRejected, int tilesPerSide) {
+    std::string tiles;
+    int tileCount = 0;
+    for (size_t i = 3; i < regionsRejected.size(); i += 3) {
+        bool any = false;
+        for (int ch = 0; ch < 3; ++ch) any = any || regionsRejected[i + ch];
+        if (!any) continue;
+        const int tile = static_cast<int>(i / 3) - 1;
+        ++tileCount;
+        tiles += " (" + std::to_string(tile % tilesPerSide) + "," +
+                 std::to_string(tile / tilesPerSide) + ")";
+    }
+    if (tileCount == 0) return "";
+    return std::to_string(tileCount) + " of " + std::to_string(tilesPerSide * tilesPerSide) +
+           " tiles differ (column,row from the top left):" + tiles;
+}
+
+/// Channels off in opposite ways point to the pick's probabilities, channels off alike to the
+/// diffuse directions (channelsOffOppositeWays). Lab 1 picks nothing: it is told only what
+/// differs.
+void explainMixedSurfaces(Lab lab, const GradingScene& scene,
+                          const std::vector<ChannelInterval>& intervals, Attempt& attempt) {
+    const bool opposite = channelsOffOppositeWays(intervals);
+    const std::string cause = opposite ? likelyPickDivideCause(lab) : likelyDirectionCause(lab);
+    if (!cause.empty())
+        tellLikelyCause(cause, attempt);
+    else if (opposite)
+        attempt.details.push_back(scene.name +
+                                  ": some colour channels are too bright and others too dark");
+}
+
+/// A public scene that differs, in the details: its channels' ratios, the tiles that differ, and
+/// the likely cause that its kind of scene can tell.
+void explainScene(const GraderSetup& setup, Lab lab, const GradingScene& scene, const Comparison& c,
+                  const std::vector<bool>& regionsRejected, const RejectingScenes& rejecting,
+                  Attempt& attempt) {
+    const ChannelRatios ratios = channelRatios(c, scene.reference.forLab(lab), setup.rubric);
+    attempt.details.push_back(scene.name + ": observed/expected" + ratios.text);
+    if (const std::string tiles = differingTiles(regionsRejected, setup.rubric.tiles);
+        !tiles.empty())
+        attempt.details.push_back(scene.name + ": " + tiles);
+    if (scene.reference.scene == "mixed_surfaces" && !rejecting.furnace && !rejecting.refraction)
+        explainMixedSurfaces(lab, scene, ratios.intervals, attempt);
+    if (scene.reference.scene == "refraction_check" && !rejecting.furnace)
+        tellLikelyCause(likelyRefractionCause(lab), attempt);
+    if (scene.furnace)
+        attempt.details.push_back(scene.name + ": " + fixed(wholeImageMean(c), 4) +
+                                  ", where a correct lab gives " +
+                                  fixed(correctFurnaceValue(lab, *scene.furnace), 4));
+}
+
+/// Explains a rejection in `attempt`'s details and diagnosis: per scene, the whole image's
+/// observed/expected per channel with a confidence interval, the tiles that differ, and a likely
+/// cause where the furnace can tell.
+void explainRejection(const GraderSetup& setup, Lab lab, const SceneComparisons& found,
+                      const std::vector<bool>& rejected, Attempt& attempt) {
+    const std::vector<std::vector<bool>> regionsRejected =
+        rejectionsByScene(found.scenes, rejected);
+    std::vector<bool> sceneRejected;
+    for (const std::vector<bool>& regions : regionsRejected)
+        sceneRejected.push_back(anyRejected(regions));
+    const RejectingScenes rejecting = rejectingScenes(setup.scenes, sceneRejected);
+    // Every furnace's value, accepted or not, narrows down the known bugs that explain them.
+    std::vector<FurnaceObservation> furnaces;
+    for (size_t s = 0; s < setup.scenes.size(); ++s) {
+        const GradingScene& scene = setup.scenes[s];
+        const Comparison& c = found.scenes[s];
+        if (scene.furnace)
+            furnaces.push_back({*scene.furnace, wholeImageMean(c), c.observed[0].standardError});
+        if (scene.hidden)
+            attempt.hiddenDetails.push_back(
+                scene.name + (sceneRejected[s] ? HiddenSceneDiffers : HiddenSceneMatches));
+        else if (sceneRejected[s])
+            explainScene(setup, lab, scene, c, regionsRejected[s], rejecting, attempt);
+    }
+    if (!rejecting.publicScene)
+        attempt.hiddenDetails.push_back(
+            "every scene you can see matches: what differs is something only a hidden scene has "
+            "(a material, a light or a path the public scenes lack)");
+    if (rejecting.furnace) {
+        const std::vector<std::string> causes = likelyFurnaceCauses(lab, furnaces, found.stepsOpen);
+        if (!causes.empty()) {
+            attempt.details.push_back("likely cause: " + causes.front());
+            // The furnaces' diagnosis is the most specific: it wins over any told before.
+            attempt.diagnosis = causeName(causes.front());
+        }
+    }
+}
+
+/// One attempt of the correctness check over all scenes. `noise`: the figure of an earlier
+/// attempt (-1: none), kept where this one does not reach the noise scene.
+Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, double noise) {
+    Attempt attempt;
+    attempt.noise = noise;
+    const SceneComparisons found = renderAndCompare(setup, lab, seedBase, attempt);
+    if (!attempt.failure.empty()) return attempt;
+    const std::vector<bool> rejected = holmRejections(found.allP, setup.rubric.alpha);
     // A lab 4 that continues with a constant of its own is unbiased, but not lab 4: its paths
     // tell (path_length.h). That cause wins over any the images suggest.
-    const std::string ignored = ignoredContinueProb(pathLengths);
+    const std::string ignored = ignoredContinueProb(found.pathLengths);
     if (!ignored.empty()) {
-        details.push_back("likely cause: " + ignored);
-        diagnosis = ignored.substr(0, ignored.find(':'));
+        attempt.details.push_back("likely cause: " + ignored);
+        attempt.diagnosis = causeName(ignored);
         return attempt;
     }
-    if (std::none_of(rejected.begin(), rejected.end(), [](bool b) { return b; })) {
-        if (const std::string note = pathLengthNote(pathLengths); !note.empty())
-            details.push_back(note);
+    if (!anyRejected(rejected)) {
+        if (const std::string note = pathLengthNote(found.pathLengths); !note.empty())
+            attempt.details.push_back(note);
         for (const GradingScene& scene : setup.scenes)
-            if (scene.hidden) hiddenDetails.push_back(scene.name + HiddenSceneMatches);
+            if (scene.hidden) attempt.hiddenDetails.push_back(scene.name + HiddenSceneMatches);
         attempt.passed = true;
         return attempt;
     }
-
-    // Explain: per scene, the whole image's observed/expected per channel with a confidence
-    // interval, the tiles that differ, and a likely cause where the furnace can tell.
-    std::vector<bool> sceneRejected;
-    for (size_t s = 0, offset = 0; s < setup.scenes.size(); offset += comparisons[s++].p.size())
-        sceneRejected.push_back(std::any_of(rejected.begin() + offset,
-                                            rejected.begin() + offset + comparisons[s].p.size(),
-                                            [](bool b) { return b; }));
-    // The furnaces have no glass: a lab that one of them rejects has a fault elsewhere, which the
-    // refraction check's image shows too, so only a lab that every furnace accepts is told about
-    // refraction; and only one that the refraction check accepts too about its diffuse
-    // directions (mixed_surfaces holds glass as well).
-    bool furnaceRejected = false, refractionRejected = false;
-    for (size_t s = 0; s < setup.scenes.size(); ++s) {
-        furnaceRejected = furnaceRejected || (setup.scenes[s].furnace && sceneRejected[s]);
-        refractionRejected =
-            refractionRejected ||
-            (!setup.scenes[s].hidden && setup.scenes[s].reference.scene == "refraction_check" &&
-             sceneRejected[s]);
-    }
-    // Every furnace's value, accepted or not, narrows down the known bugs that explain them.
-    std::vector<FurnaceObservation> furnaces;
-    size_t offset = 0;
-    const double critical = studentCritical(r.alpha, r.seeds - 1);
-    const char* channel[3] = {"red", "green", "blue"};
-    for (size_t s = 0; s < setup.scenes.size(); ++s) {
-        const GradingScene& scene = setup.scenes[s];
-        const Comparison& c = comparisons[s];
-        const Expectation& e = scene.reference.forLab(lab);
-        const double observed = (c.observed[0].mean + c.observed[1].mean + c.observed[2].mean) / 3;
-        if (scene.furnace)
-            furnaces.push_back({*scene.furnace, observed, c.observed[0].standardError});
-        if (scene.hidden) {
-            hiddenDetails.push_back(scene.name +
-                                    (sceneRejected[s] ? HiddenSceneDiffers : HiddenSceneMatches));
-        } else if (sceneRejected[s]) {
-            std::string line = scene.name + ": observed/expected";
-            std::vector<ChannelInterval> intervals;
-            for (int ch = 0; ch < 3; ++ch) {
-                const double ratio = c.observed[ch].mean / e.mean[ch];
-                const double half = critical *
-                                    std::hypot(c.observed[ch].standardError, e.standardError[ch]) /
-                                    e.mean[ch];
-                line += std::string(" ") + channel[ch] + " " + fixed(ratio, 3) + " [" +
-                        fixed(ratio - half, 3) + ", " + fixed(ratio + half, 3) + "]";
-                intervals.push_back({ratio - half, ratio + half});
-            }
-            details.push_back(line);
-            std::string tiles;
-            int tileCount = 0;
-            for (size_t i = 3; i < c.p.size(); i += 3) {
-                bool any = false;
-                for (int ch = 0; ch < 3; ++ch) any = any || rejected[offset + i + ch];
-                if (!any) continue;
-                const int tile = static_cast<int>(i / 3) - 1;
-                ++tileCount;
-                tiles += " (" + std::to_string(tile % r.tiles) + "," +
-                         std::to_string(tile / r.tiles) + ")";
-            }
-            if (tileCount > 0)
-                details.push_back(scene.name + ": " + std::to_string(tileCount) + " of " +
-                                  std::to_string(r.tiles * r.tiles) +
-                                  " tiles differ (column,row from the top left):" + tiles);
-            if (scene.reference.scene == "mixed_surfaces" && !furnaceRejected &&
-                !refractionRejected) {
-                // Channels off in opposite ways point to the pick's probabilities, channels off
-                // alike to the diffuse directions (channelsOffOppositeWays). Lab 1 picks nothing:
-                // it is told only what differs.
-                const bool opposite = channelsOffOppositeWays(intervals);
-                const std::string cause =
-                    opposite ? likelyPickDivideCause(lab) : likelyDirectionCause(lab);
-                if (!cause.empty()) {
-                    details.push_back("likely cause: " + cause);
-                    if (diagnosis.empty()) diagnosis = cause.substr(0, cause.find(':'));
-                } else if (opposite) {
-                    details.push_back(scene.name +
-                                      ": some colour channels are too bright and others too dark");
-                }
-            }
-            if (scene.reference.scene == "refraction_check" && !furnaceRejected) {
-                const std::string cause = likelyRefractionCause(lab);
-                details.push_back("likely cause: " + cause);
-                if (diagnosis.empty()) diagnosis = cause.substr(0, cause.find(':'));
-            }
-            if (scene.furnace)
-                details.push_back(scene.name + ": " + fixed(observed, 4) +
-                                  ", where a correct lab gives " +
-                                  fixed(correctFurnaceValue(lab, *scene.furnace), 4));
-        }
-        offset += c.p.size();
-    }
-    bool publicRejected = false;
-    for (size_t s = 0; s < setup.scenes.size(); ++s)
-        publicRejected = publicRejected || (!setup.scenes[s].hidden && sceneRejected[s]);
-    if (!publicRejected)
-        hiddenDetails.push_back("every scene you can see matches: what differs is something only a "
-                                "hidden scene has (a material, a light or a path the public scenes "
-                                "lack)");
-    if (furnaceRejected) {
-        const std::vector<std::string> causes = likelyFurnaceCauses(lab, furnaces, stepsOpen);
-        if (!causes.empty()) {
-            details.push_back("likely cause: " + causes.front());
-            // The furnaces' diagnosis is the most specific: it wins. Its name is the cause up to
-            // the explanation after the colon.
-            diagnosis = causes.front().substr(0, causes.front().find(':'));
-        }
-    }
+    explainRejection(setup, lab, found, rejected, attempt);
     return attempt;
 }
 

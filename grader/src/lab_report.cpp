@@ -48,18 +48,10 @@ std::string verdict(const CheckResult& c) {
            number(c.maxScore, "%g");
 }
 
-} // namespace
-
-std::string labReport(const GradeReport& report, const Rubric& rubric, const LabFigures& yours,
-                      const std::optional<LabFigures>& reference, const std::string& observations) {
-    std::vector<Lab> labs;
-    for (const LabGrade& l : report.labs) labs.push_back(l.lab);
-    const std::vector<NotebookEstimator> rows = notebookEstimators(labs, rubric);
-    static const std::map<std::string, EstimatorFigures> none;
-    const auto& theirs = reference ? reference->notebook : none;
+/// The report's opening: where each side was measured, and what each figure means.
+void writeIntroduction(std::ostream& md, const Rubric& rubric, const LabFigures& yours,
+                       const std::optional<LabFigures>& reference) {
     const std::string size = std::to_string(NotebookSize), spp = std::to_string(NotebookSpp);
-
-    std::ostringstream md;
     md << "# PathLab lab report\n\n"
        << "Measured by `grader --report` on " << yours.machine.describe() << ".\n\n"
        << "The reference's figures are the reference solutions' "
@@ -82,37 +74,56 @@ std::string labReport(const GradeReport& report, const Rubric& rubric, const Lab
        << " samples per pixel, the panel's noise figure (handouts/00-setup.md, \"The noise "
           "figure\");\n"
        << "- *efficiency*: 1/(noise² × seconds); a noise of 0.01 takes 10⁴/efficiency seconds at "
-          "this size.\n\n"
-       << "## Your figures and the reference's\n\n"
-       << "| estimator | your lab correct | frame rate: yours | reference | noise at " << spp
+          "this size.\n\n";
+}
+
+/// Each estimator's figures, yours beside the reference's, with whether your lab is correct
+/// (the figures of a wrong lab mean little).
+void writeFiguresTable(std::ostream& md, const GradeReport& report,
+                       const std::vector<NotebookEstimator>& rows,
+                       const std::map<std::string, EstimatorFigures>& yours,
+                       const std::map<std::string, EstimatorFigures>& theirs) {
+    md << "## Your figures and the reference's\n\n"
+       << "| estimator | your lab correct | frame rate: yours | reference | noise at "
+       << std::to_string(NotebookSpp)
        << " spp: yours | reference | efficiency: yours | reference |\n"
        << "|---|---|--:|--:|--:|--:|--:|--:|\n";
     for (const NotebookEstimator& row : rows) {
         const LabGrade* grade = gradeOf(report, row.lab);
         const bool correct = grade && !grade->checks.empty() && grade->checks[0].passed;
         md << "| " << row.label << " | " << (correct ? "yes" : "**no**") << " | "
-           << cell(yours.notebook, row.key, &EstimatorFigures::framesPerSecond, "%.3g fps") << " | "
+           << cell(yours, row.key, &EstimatorFigures::framesPerSecond, "%.3g fps") << " | "
            << cell(theirs, row.key, &EstimatorFigures::framesPerSecond, "%.3g fps") << " | "
-           << cell(yours.notebook, row.key, &EstimatorFigures::noise, "%.3f") << " | "
+           << cell(yours, row.key, &EstimatorFigures::noise, "%.3f") << " | "
            << cell(theirs, row.key, &EstimatorFigures::noise, "%.3f") << " | "
-           << cell(yours.notebook, row.key, &EstimatorFigures::efficiency, "%.3g") << " | "
+           << cell(yours, row.key, &EstimatorFigures::efficiency, "%.3g") << " | "
            << cell(theirs, row.key, &EstimatorFigures::efficiency, "%.3g") << " |\n";
     }
-    if (yours.notebook.count("branching")) {
-        md << "\n## Ratios between the labs\n\nEach figure ÷ lab 1's (branching): these carry over "
-              "from one machine to another.\n\n"
-           << "| estimator | frame rate ÷ lab 1's: yours | reference | noise ÷ lab 1's: yours | "
-              "reference | efficiency ÷ lab 1's: yours | reference |\n"
-           << "|---|--:|--:|--:|--:|--:|--:|\n";
-        for (const NotebookEstimator& row : rows)
-            md << "| " << row.label << " | "
-               << ratioCell(yours.notebook, row.key, &EstimatorFigures::framesPerSecond) << " | "
-               << ratioCell(theirs, row.key, &EstimatorFigures::framesPerSecond) << " | "
-               << ratioCell(yours.notebook, row.key, &EstimatorFigures::noise) << " | "
-               << ratioCell(theirs, row.key, &EstimatorFigures::noise) << " | "
-               << ratioCell(yours.notebook, row.key, &EstimatorFigures::efficiency) << " | "
-               << ratioCell(theirs, row.key, &EstimatorFigures::efficiency) << " |\n";
-    }
+}
+
+/// Each figure over lab 1's: the ratios carry over from one machine to another, where the
+/// figures themselves do not.
+void writeRatiosTable(std::ostream& md, const std::vector<NotebookEstimator>& rows,
+                      const std::map<std::string, EstimatorFigures>& yours,
+                      const std::map<std::string, EstimatorFigures>& theirs) {
+    md << "\n## Ratios between the labs\n\nEach figure ÷ lab 1's (branching): these carry over "
+          "from one machine to another.\n\n"
+       << "| estimator | frame rate ÷ lab 1's: yours | reference | noise ÷ lab 1's: yours | "
+          "reference | efficiency ÷ lab 1's: yours | reference |\n"
+       << "|---|--:|--:|--:|--:|--:|--:|\n";
+    for (const NotebookEstimator& row : rows)
+        md << "| " << row.label << " | "
+           << ratioCell(yours, row.key, &EstimatorFigures::framesPerSecond) << " | "
+           << ratioCell(theirs, row.key, &EstimatorFigures::framesPerSecond) << " | "
+           << ratioCell(yours, row.key, &EstimatorFigures::noise) << " | "
+           << ratioCell(theirs, row.key, &EstimatorFigures::noise) << " | "
+           << ratioCell(yours, row.key, &EstimatorFigures::efficiency) << " | "
+           << ratioCell(theirs, row.key, &EstimatorFigures::efficiency) << " |\n";
+}
+
+/// The grader's verdicts, lab by lab, and how the noise check's statistic differs from the
+/// noise figure above (students compare the two).
+void writeChecksTable(std::ostream& md, const GradeReport& report, const Rubric& rubric) {
     md << "\n## The grader's checks\n\n"
        << "The noise check compares a different statistic from the noise figure above: the "
           "per-sample variance, measured from how "
@@ -141,6 +152,10 @@ std::string labReport(const GradeReport& report, const Rubric& rubric, const Lab
         if (lab.checks.size() < 3) md << " not measured (--no-speed) |";
         md << "\n";
     }
+}
+
+/// The student's own section: what they wrote there before, kept, or the prompt.
+void writeObservations(std::ostream& md, const std::string& observations) {
     md << "\n" << ObservationsHeading << "\n\n";
     if (observations.empty())
         md << "<!-- For each lab: what the frame rate and the noise tell you about the estimator, "
@@ -148,6 +163,23 @@ std::string labReport(const GradeReport& report, const Rubric& rubric, const Lab
               "is kept when make report writes this file again. -->\n";
     else
         md << observations;
+}
+
+} // namespace
+
+std::string labReport(const GradeReport& report, const Rubric& rubric, const LabFigures& yours,
+                      const std::optional<LabFigures>& reference, const std::string& observations) {
+    std::vector<Lab> labs;
+    for (const LabGrade& l : report.labs) labs.push_back(l.lab);
+    const std::vector<NotebookEstimator> rows = notebookEstimators(labs, rubric);
+    static const std::map<std::string, EstimatorFigures> none;
+    const auto& theirs = reference ? reference->notebook : none;
+    std::ostringstream md;
+    writeIntroduction(md, rubric, yours, reference);
+    writeFiguresTable(md, report, rows, yours.notebook, theirs);
+    if (yours.notebook.count("branching")) writeRatiosTable(md, rows, yours.notebook, theirs);
+    writeChecksTable(md, report, rubric);
+    writeObservations(md, observations);
     return md.str();
 }
 

@@ -7,6 +7,7 @@
 #include "timing_lock.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace pathlab::grader {
 
@@ -249,6 +250,88 @@ SpeedVerdict judgeSpeed(const GraderSetup& setup, Lab lab, double perSample, dou
     return verdict;
 }
 
+/// The rubric's timed series of the lab and of the reference, interleaved A B A B so that a slow
+/// spell of a shared machine hits both alike; on the timing cores, holding the machine's timing
+/// lock. A run that fails ends it: nullopt, with the check's summary and diagnosis saying so.
+std::optional<TimedComparison> timeInterleaved(const GraderSetup& setup, Lab lab,
+                                               CheckResult& check, StartUpTimes& startUps) {
+    const LabRunner studentRunner = timedRunner(setup.student, setup.timing);
+    const LabRunner solutionRunner = timedRunner(setup.solution, setup.timing);
+    const TimingLock lock(setup.timing.lockFile);
+    const TimedSeries series = timedSeries(setup, solutionRunner, Lab::Uniform, startUps);
+    TimedComparison t;
+    for (int run = 0; run < setup.rubric.speedRuns; ++run) {
+        for (const LabRunner* runner : {&studentRunner, &solutionRunner}) {
+            const bool isStudent = runner == &studentRunner;
+            const TimedRun timed = timedRun(setup, series, *runner, lab, run);
+            if (!timed.result.ok) {
+                check.summary = std::string(isStudent ? "the lab " : "the reference ") +
+                                timed.result.failure + " in a timed run";
+                check.diagnosis = isStudent ? timed.result.failureKind : "the reference failed";
+                return std::nullopt;
+            }
+            (isStudent ? t.student : t.solution).push_back(timed.samplesPerSecond);
+            (isStudent ? t.studentMeans : t.solutionMeans).push_back(timed.meanRadiance);
+            (isStudent ? t.studentRays : t.solutionRays) += timed.result.images.front().rays;
+            (isStudent ? t.studentSamples : t.solutionSamples) += timed.samples;
+        }
+    }
+    return t;
+}
+
+/// Each pair's samples/s ratio, yours over the reference's: the two runs of a pair ran back to
+/// back, under the same load, which the ratio of the two medians would not keep together.
+std::vector<double> pairRatios(const TimedComparison& t) {
+    std::vector<double> ratios;
+    for (size_t i = 0; i < t.student.size(); ++i) ratios.push_back(t.student[i] / t.solution[i]);
+    return ratios;
+}
+
+/// Efficiency needs both variances, which the noise check measures for a correct lab only.
+bool variancesKnown(const SampleVariances& variances) {
+    return variances.student > 0 && variances.solution > 0;
+}
+
+/// The figures every verdict is told with: the summary's samples/s, ratio and measure, and the
+/// details' rays and variances per sample. `pairs`: how many interleaved pairs `ratio` is the
+/// median of.
+void describeTimedRuns(const Rubric& r, Lab lab, double ratio, size_t pairs,
+                       const SampleVariances& variances, SpeedOutcome& outcome) {
+    CheckResult& check = outcome.check;
+    check.summary = significant(outcome.studentSamplesPerSecond, 3) + " samples/s, " +
+                    fixed(ratio, 2) + " times the reference solution's " +
+                    significant(outcome.solutionSamplesPerSecond, 3) + " (the median of " +
+                    std::to_string(pairs) + " interleaved pairs)";
+    if (variancesKnown(variances))
+        check.summary +=
+            "; efficiency " + fixed(outcome.efficiencyRatio, 2) + " times the reference's";
+    check.summary += "; judged by " + measureName(r.forLab(lab).speedJudgedBy) + " (at least " +
+                     fixed(r.minSpeedRatio, 2) + ")";
+    check.details.push_back("rays per sample: yours " + raysText(outcome.studentRays) +
+                            ", the reference's " + raysText(outcome.solutionRays));
+    if (variancesKnown(variances))
+        check.details.push_back("variance per sample: yours " + significant(variances.student, 4) +
+                                ", the reference's " + significant(variances.solution, 4) +
+                                "; efficiency = 1/(variance per sample x time per sample)");
+}
+
+/// The timed runs must render the same image as the reference's too: a lab that is correct in
+/// the correctness runs but cuts corners when it runs longer earns no speed points. Says so in
+/// `check` when they do not.
+bool timedImageDiffers(const Rubric& r, const TimedComparison& t, CheckResult& check) {
+    const double floor = floatRoundingFloor * median(t.solutionMeans);
+    const bool differs =
+        r.speedRuns >= 2 && welchTwoSidedP(t.studentMeans, t.solutionMeans, floor) < r.alpha;
+    if (!differs) return false;
+    check.summary += "; the timed runs' mean radiance differs from the reference's, and "
+                     "speed counts only for a correct timed run";
+    check.diagnosis = "wrong image in the timed runs";
+    check.details.push_back("mean radiance of the timed runs: yours " +
+                            significant(median(t.studentMeans), 4) + ", the reference's " +
+                            significant(median(t.solutionMeans), 4));
+    return true;
+}
+
 } // namespace
 
 SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, bool correct,
@@ -259,83 +342,33 @@ SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, bool correct,
     CheckResult& check = outcome.check;
     check.kind = CheckKind::Speed;
     check.maxScore = r.forLab(lab).points.speed;
-    const LabRunner studentRunner = timedRunner(setup.student, setup.timing);
-    const LabRunner solutionRunner = timedRunner(setup.solution, setup.timing);
-    const TimingLock lock(setup.timing.lockFile);
-    const TimedSeries series = timedSeries(setup, solutionRunner, Lab::Uniform, startUps);
-    TimedComparison t;
-    for (int run = 0; run < r.speedRuns; ++run) {
-        // Interleaved A B A B: a slow spell of a shared machine hits both alike.
-        for (const LabRunner* runner : {&studentRunner, &solutionRunner}) {
-            const bool isStudent = runner == &studentRunner;
-            const TimedRun timed = timedRun(setup, series, *runner, lab, run);
-            if (!timed.result.ok) {
-                check.summary = std::string(isStudent ? "the lab " : "the reference ") +
-                                timed.result.failure + " in a timed run";
-                check.diagnosis = isStudent ? timed.result.failureKind : "the reference failed";
-                return outcome;
-            }
-            (isStudent ? t.student : t.solution).push_back(timed.samplesPerSecond);
-            (isStudent ? t.studentMeans : t.solutionMeans).push_back(timed.meanRadiance);
-            (isStudent ? t.studentRays : t.solutionRays) += timed.result.images.front().rays;
-            (isStudent ? t.studentSamples : t.solutionSamples) += timed.samples;
-        }
-    }
+    const std::optional<TimedComparison> timed = timeInterleaved(setup, lab, check, startUps);
+    if (!timed) return outcome;
+    const TimedComparison& t = *timed;
     outcome.studentSamplesPerSecond = median(t.student);
     outcome.solutionSamplesPerSecond = median(t.solution);
     outcome.studentRays = raysPerSample(t.studentRays, t.studentSamples);
     outcome.solutionRays = raysPerSample(t.solutionRays, t.solutionSamples);
-    // The median of each pair's ratio: the two runs of a pair ran back to back, under the same
-    // load, which the ratio of the two medians would not keep together.
-    std::vector<double> pairRatios;
-    for (size_t i = 0; i < t.student.size(); ++i)
-        pairRatios.push_back(t.student[i] / t.solution[i]);
-    const double ratio = median(pairRatios);
+    const std::vector<double> pairs = pairRatios(t);
+    const double ratio = median(pairs);
     // Efficiency, 1/(variance per sample x time per sample), from the noise check's variances
-    // (the same scene) and these samples/s: known for a correct lab only.
-    const bool variancesKnown = variances.student > 0 && variances.solution > 0;
-    const double efficiencyRatio =
-        variancesKnown ? ratio * variances.solution / variances.student : 0;
-    outcome.efficiencyRatio = efficiencyRatio;
-    const SpeedMeasure measure = r.forLab(lab).speedJudgedBy;
-    check.summary = significant(outcome.studentSamplesPerSecond, 3) + " samples/s, " +
-                    fixed(ratio, 2) + " times the reference solution's " +
-                    significant(outcome.solutionSamplesPerSecond, 3) + " (the median of " +
-                    std::to_string(pairRatios.size()) + " interleaved pairs)";
-    if (variancesKnown)
-        check.summary += "; efficiency " + fixed(efficiencyRatio, 2) + " times the reference's";
-    check.summary +=
-        "; judged by " + measureName(measure) + " (at least " + fixed(r.minSpeedRatio, 2) + ")";
-    check.details.push_back("rays per sample: yours " + raysText(outcome.studentRays) +
-                            ", the reference's " + raysText(outcome.solutionRays));
-    if (variancesKnown)
-        check.details.push_back("variance per sample: yours " + significant(variances.student, 4) +
-                                ", the reference's " + significant(variances.solution, 4) +
-                                "; efficiency = 1/(variance per sample x time per sample)");
+    // (the same scene) and these samples/s.
+    outcome.efficiencyRatio =
+        variancesKnown(variances) ? ratio * variances.solution / variances.student : 0;
+    describeTimedRuns(r, lab, ratio, pairs.size(), variances, outcome);
     if (!correct) {
         check.summary += "; speed counts only for a correct lab";
         return outcome;
     }
-    // The timed runs must render the same image as the reference's too: a lab that is correct
-    // in the correctness runs but cuts corners when it runs longer earns no speed points.
-    const double floor = floatRoundingFloor * median(t.solutionMeans);
-    if (r.speedRuns >= 2 && welchTwoSidedP(t.studentMeans, t.solutionMeans, floor) < r.alpha) {
-        check.summary += "; the timed runs' mean radiance differs from the reference's, and "
-                         "speed counts only for a correct timed run";
-        check.diagnosis = "wrong image in the timed runs";
-        check.details.push_back("mean radiance of the timed runs: yours " +
-                                significant(median(t.studentMeans), 4) + ", the reference's " +
-                                significant(median(t.solutionMeans), 4));
-        return outcome;
-    }
-    if (measure == SpeedMeasure::Efficiency && !variancesKnown) {
+    if (timedImageDiffers(r, t, check)) return outcome;
+    if (r.forLab(lab).speedJudgedBy == SpeedMeasure::Efficiency && !variancesKnown(variances)) {
         // Cannot happen for a correct lab (the noise check measures both); said if it does.
         check.summary += "; efficiency unknown: the variances were not measured";
         check.diagnosis = "efficiency unknown";
         return outcome;
     }
-    SpeedVerdict verdict =
-        judgeSpeed(setup, lab, ratio, efficiencyRatio, outcome.studentRays, outcome.solutionRays);
+    SpeedVerdict verdict = judgeSpeed(setup, lab, ratio, outcome.efficiencyRatio,
+                                      outcome.studentRays, outcome.solutionRays);
     check.passed = verdict.passed;
     check.score = check.passed ? check.maxScore : 0;
     check.details.insert(check.details.end(), verdict.details.begin(), verdict.details.end());

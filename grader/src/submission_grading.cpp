@@ -24,6 +24,89 @@ void makeReadableFolder(const std::string& folder) {
                                 fs::perms::others_read | fs::perms::others_exec);
 }
 
+/// The race check of one submission's labs, each logged with its time on standard error.
+std::function<RaceFinding(Lab)> raceCheckOf(const SubmissionGrader& grader,
+                                            const std::string& sources, const std::string& build,
+                                            const SandboxPolicy& policy, const std::string& id) {
+    RaceCheckRun races;
+    races.build = grader.build;
+    races.kit = grader.kit;
+    races.runtime = grader.raceCheck;
+    races.sources = sources;
+    races.folder = build;
+    races.policy = policy;
+    races.timingCpus = grader.timing.cpus;
+    races.timingLock = grader.timing.lockFile;
+    races.seed = grader.seedBase;
+    return [races, id](Lab lab) {
+        const RaceFinding finding = checkRaces(races, lab);
+        std::fprintf(stderr, "%s: %s: race check, %.1f s\n", id.c_str(),
+                     std::string(labName(lab)).c_str(), finding.seconds);
+        return finding;
+    };
+}
+
+/// The checks' setup for one submission: its own labs' libraries against the kit's reference
+/// solutions, both run in the sandbox.
+GraderSetup setupFor(const SubmissionGrader& grader, const SubmissionLibrary& library,
+                     const SandboxPolicy& policy, const std::string& scratch) {
+    GraderSetup setup;
+    setup.student = {grader.build.viewer, Implementation::Student, library.library, policy, {}};
+    // The solutions' one library holds every lab.
+    ByLab<std::string> solutions;
+    for (Lab lab : AllLabs) solutions[lab] = grader.kit.solutionsLibrary;
+    setup.solution = {grader.build.viewer, Implementation::Student, solutions, policy, {}};
+    setup.timing = grader.timing;
+    setup.rubric = grader.rubric;
+    setup.scenes = grader.scenes;
+    setup.scratch = scratch;
+    setup.seedBase = grader.seedBase;
+    setup.threads = grader.threads;
+    setup.measureSpeed = grader.measureSpeed;
+    setup.runSeconds = grader.runSeconds;
+    return setup;
+}
+
+/// The status names labs in a list with spaces between: `lab` added at its end.
+void addLabName(std::string& names, Lab lab) {
+    names += (names.empty() ? "" : " ") + std::string(labName(lab));
+}
+
+/// Grades each lab that compiled and linked, and reports the others ungraded with the reason;
+/// returns the submission's status: graded, and which labs were not submitted, do not compile
+/// or do not link.
+std::string gradeLabs(const SubmissionGrader& grader, const SubmissionLibrary& library,
+                      const GraderSetup& setup, GradeReport& report) {
+    StartUpTimes startUps;        // this submission's: its labs' libraries are its own
+    std::string broken, unlinked; // names of the labs that do not compile, do not link
+    for (Lab lab : AllLabs) {
+        const LabCompilation& compiled = library.labs[lab];
+        if (compiled.status == LabCompilation::Status::NotSubmitted) {
+            report.labs.push_back(
+                ungradedLab(grader.rubric, lab, grader.measureSpeed, "not submitted", {}));
+        } else if (compiled.status == LabCompilation::Status::Failed) {
+            addLabName(broken, lab);
+            report.labs.push_back(ungradedLab(grader.rubric, lab, grader.measureSpeed,
+                                              "does not compile", {compiled.messages}));
+        } else if (!library.linked(lab)) {
+            addLabName(unlinked, lab);
+            report.labs.push_back(ungradedLab(grader.rubric, lab, grader.measureSpeed,
+                                              "does not link", {library.problem[lab]}));
+        } else {
+            report.labs.push_back(gradeLab(setup, lab, startUps));
+        }
+    }
+    std::string status = "graded";
+    std::string missing;
+    for (Lab lab : AllLabs)
+        if (library.labs[lab].status == LabCompilation::Status::NotSubmitted)
+            addLabName(missing, lab);
+    if (!missing.empty()) status += "; not submitted: " + missing;
+    if (!broken.empty()) status += "; does not compile: " + broken;
+    if (!unlinked.empty()) status += "; does not link: " + unlinked;
+    return status;
+}
+
 } // namespace
 
 SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::string& submission,
@@ -57,65 +140,10 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
     } else {
         const SubmissionLibrary library =
             buildSubmissionLibrary(grader.build, grader.kit, sources, build, policy);
-        GraderSetup setup;
-        setup.student = {grader.build.viewer, Implementation::Student, library.library, policy, {}};
-        // The solutions' one library holds every lab.
-        ByLab<std::string> solutions;
-        for (Lab lab : AllLabs) solutions[lab] = grader.kit.solutionsLibrary;
-        setup.solution = {grader.build.viewer, Implementation::Student, solutions, policy, {}};
-        setup.timing = grader.timing;
-        setup.rubric = grader.rubric;
-        setup.scenes = grader.scenes;
-        setup.scratch = scratch;
-        setup.seedBase = grader.seedBase;
-        setup.threads = grader.threads;
-        setup.measureSpeed = grader.measureSpeed;
-        setup.runSeconds = grader.runSeconds;
-        if (grader.raceCheck.available()) {
-            RaceCheckRun races;
-            races.build = grader.build;
-            races.kit = grader.kit;
-            races.runtime = grader.raceCheck;
-            races.sources = sources;
-            races.folder = build;
-            races.policy = policy;
-            races.timingCpus = grader.timing.cpus;
-            races.timingLock = grader.timing.lockFile;
-            races.seed = grader.seedBase;
-            setup.raceCheck = [races, id = outcome.id](Lab lab) {
-                const RaceFinding finding = checkRaces(races, lab);
-                std::fprintf(stderr, "%s: %s: race check, %.1f s\n", id.c_str(),
-                             std::string(labName(lab)).c_str(), finding.seconds);
-                return finding;
-            };
-        }
-        StartUpTimes startUps;        // this submission's: its labs' libraries are its own
-        std::string broken, unlinked; // names of the labs that do not compile, do not link
-        for (Lab lab : AllLabs) {
-            const LabCompilation& compiled = library.labs[lab];
-            if (compiled.status == LabCompilation::Status::NotSubmitted) {
-                report.labs.push_back(
-                    ungradedLab(grader.rubric, lab, grader.measureSpeed, "not submitted", {}));
-            } else if (compiled.status == LabCompilation::Status::Failed) {
-                broken += (broken.empty() ? "" : " ") + std::string(labName(lab));
-                report.labs.push_back(ungradedLab(grader.rubric, lab, grader.measureSpeed,
-                                                  "does not compile", {compiled.messages}));
-            } else if (!library.linked(lab)) {
-                unlinked += (unlinked.empty() ? "" : " ") + std::string(labName(lab));
-                report.labs.push_back(ungradedLab(grader.rubric, lab, grader.measureSpeed,
-                                                  "does not link", {library.problem[lab]}));
-            } else {
-                report.labs.push_back(gradeLab(setup, lab, startUps));
-            }
-        }
-        outcome.status = "graded";
-        std::string missing;
-        for (Lab lab : AllLabs)
-            if (library.labs[lab].status == LabCompilation::Status::NotSubmitted)
-                missing += (missing.empty() ? "" : " ") + std::string(labName(lab));
-        if (!missing.empty()) outcome.status += "; not submitted: " + missing;
-        if (!broken.empty()) outcome.status += "; does not compile: " + broken;
-        if (!unlinked.empty()) outcome.status += "; does not link: " + unlinked;
+        GraderSetup setup = setupFor(grader, library, policy, scratch);
+        if (grader.raceCheck.available())
+            setup.raceCheck = raceCheckOf(grader, sources, build, policy, outcome.id);
+        outcome.status = gradeLabs(grader, library, setup, report);
     }
     killProcessesOf(policy.user);
     fs::remove_all(scratch);
