@@ -3,11 +3,12 @@
 #include "viewer_window.h"
 
 #include "camera_controller.h"
-#include "pathlab/false_colour.h"
-#include "pathlab/frame_rate.h"
-#include "pathlab/lab_tables.h"
-#include "pathlab/progressive_renderer.h"
 
+#include "runner/frame_rate.h"
+#include "runner/lab_tables.h"
+#include "runner/progressive_renderer.h"
+
+#include "pathlab/false_colour.h"
 #include "pathlab/image_io.h"
 #include "pathlab/input_error.h"
 #include "pathlab/render_scene.h"

@@ -18,7 +18,8 @@
 #include "submission_time.h"
 #include "time_limit.h"
 
-#include "pathlab/child_process.h"
+#include "process/child_process.h"
+
 #include "pathlab/input_error.h"
 #include "pathlab/progress_bar.h"
 #include "pathlab/render_stats.h"

@@ -1,7 +1,7 @@
 // POSIX: Linux and macOS (the grader is not built with MSVC). Pinning to cores is Linux only.
 #include "process_runner.h"
 
-#include "pathlab/child_process.h"
+#include "process/child_process.h"
 
 #include <csignal>
 #include <cstdio>

@@ -1,4 +1,5 @@
 #include "sandbox.h"
+
 #include "user_namespaces.h"
 
 #include <algorithm>
@@ -137,7 +138,7 @@ int sandboxUserForThisProcess() {
 
 void killProcessesOf(int user) {
     if (user < 0) return;
-    // The one fork outside pathlab/child_process.h: this child runs no program, only kill(2) as
+    // The one fork outside process/child_process.h: this child runs no program, only kill(2) as
     // that user, which takes a process of that user. The helper starts programs; it offers no way
     // to run our own code in a child, where only async-signal-safe calls may be made.
     const pid_t pid = ::fork();

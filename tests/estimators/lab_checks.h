@@ -6,7 +6,8 @@
 
 #include "expectation.h"
 
-#include "pathlab/headless_render.h"
+#include "runner/headless_render.h"
+
 #include "pathlab/lab_registry.h"
 
 #include <cstdint>
