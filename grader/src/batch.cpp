@@ -14,6 +14,7 @@
 #include "gradebook.h"
 #include "grading_scenes.h"
 #include "lab_figures.h"
+#include "speed_check.h"
 #include "submission_grading.h"
 #include "submission_time.h"
 #include "time_limit.h"

@@ -4,7 +4,8 @@
 /// fresh seeds; and the parameter check, the analytic furnace at a second maxDepth and
 /// continueProb, so that a lab that ignores either fails.
 
-#include "grading.h"
+#include "check_result.h"
+#include "grader_setup.h"
 
 namespace pathlab::grader {
 

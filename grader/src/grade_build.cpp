@@ -2,9 +2,11 @@
 // submitting; and make-references, which measures what they are compared with.
 #include "commands.h"
 #include "expectation.h"
+#include "grade_lab.h"
 #include "grading_scenes.h"
 #include "lab_figures.h"
 #include "reports.h"
+#include "speed_check.h"
 #include "time_limit.h"
 
 #include "pathlab/input_error.h"

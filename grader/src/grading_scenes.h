@@ -1,7 +1,7 @@
 #pragma once
 /// The scenes a grading uses and what each is compared with.
 
-#include "grading.h"
+#include "grader_setup.h"
 
 #include <string>
 #include <vector>

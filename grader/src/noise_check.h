@@ -2,7 +2,8 @@
 /// The noise check: a correct lab's per-sample variance on the rubric's noise scene, from its
 /// correctness renders, against the reference solution's (grader/references/).
 
-#include "grading.h"
+#include "check_result.h"
+#include "grader_setup.h"
 
 namespace pathlab::grader {
 

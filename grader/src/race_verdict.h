@@ -5,7 +5,7 @@
 /// machine, thread count or compiler may differ, and which the statistical check passed only by
 /// chance. Races are not scored apart: the check names stay correctness, noise, speed.
 
-#include "grading.h"
+#include "check_result.h"
 #include "race_report.h"
 
 namespace pathlab::grader {

@@ -1,7 +1,7 @@
 #pragma once
 /// The grader's verdict in the formats people and platforms read.
 
-#include "grading.h"
+#include "check_result.h"
 #include "lab_figures.h"
 
 #include <optional>

@@ -3,7 +3,7 @@
 /// any process and at any thread count, as it does for every lab that draws its random numbers
 /// from ctx.sampler and shares nothing between the render threads.
 
-#include "grading.h"
+#include "grader_setup.h"
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 #pragma once
 /// The limits every render of a grading runs under.
 
-#include "grading.h"
+#include "grader_setup.h"
 
 namespace pathlab::grader {
 

@@ -3,8 +3,11 @@
 /// the reference solution's, judged by samples/s or by efficiency as the rubric says, and
 /// explained with both labs' rays per sample.
 
-#include "grading.h"
+#include "check_result.h"
+#include "grader_setup.h"
 #include "noise_check.h"
+#include "render_run.h"
+#include "start_up_times.h"
 
 namespace pathlab::grader {
 
@@ -20,5 +23,17 @@ struct SpeedOutcome {
 /// noise check's, for the efficiency; `startUps`: the grading's start-up measurements.
 SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, bool correct,
                         const SampleVariances& variances, StartUpTimes& startUps);
+
+/// The start-up of one render on the rubric's speed scene with `runner`'s labs (one pixel:
+/// loading the scene and building Embree's BVH), the median of three, measured once per grading
+/// (in `startUps`); 0 if none ran. The speed check subtracts it; time_limit.h scales the limits
+/// with it.
+double speedSceneStartUpSeconds(const GraderSetup& setup, const LabRunner& runner,
+                                StartUpTimes& startUps);
+
+/// The median samples/s of the rubric's timed runs of one lab with `runner`'s labs alone (for
+/// the stored reference figures); 0 if a run failed.
+double timedSamplesPerSecond(const GraderSetup& setup, const LabRunner& runner, Lab lab,
+                             StartUpTimes& startUps);
 
 } // namespace pathlab::grader

@@ -1,6 +1,7 @@
 #include "submission_grading.h"
 
 #include "content_hash.h"
+#include "grade_lab.h"
 
 #include "pathlab/render_stats.h"
 #include "pathlab/whole_file.h"

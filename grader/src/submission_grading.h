@@ -2,7 +2,7 @@
 /// Grading one submitted set of labs: take its files in, compile them in the sandbox, run the
 /// checks in the sandbox, and write its feedback and its result.
 
-#include "grading.h"
+#include "grader_setup.h"
 #include "lab_library.h"
 #include "race_check.h"
 #include "reports.h"

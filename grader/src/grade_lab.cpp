@@ -1,4 +1,4 @@
-#include "grading.h"
+#include "grade_lab.h"
 
 #include "correctness_check.h"
 #include "noise_check.h"
@@ -6,24 +6,6 @@
 #include "speed_check.h"
 
 namespace pathlab::grader {
-
-double LabGrade::score() const {
-    double s = 0;
-    for (const CheckResult& c : checks) s += c.gradedHere ? c.score : 0;
-    return s;
-}
-
-double LabGrade::maxScore() const {
-    double s = 0;
-    for (const CheckResult& c : checks) s += c.gradedHere ? c.maxScore : 0;
-    return s;
-}
-
-double LabGrade::pointsNotGradedHere() const {
-    double s = 0;
-    for (const CheckResult& c : checks) s += c.gradedHere ? 0 : c.maxScore;
-    return s;
-}
 
 LabGrade ungradedLab(const Rubric& rubric, Lab lab, bool measureSpeed, const std::string& reason,
                      const std::vector<std::string>& details) {
