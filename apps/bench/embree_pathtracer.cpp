@@ -1,6 +1,6 @@
 #include "embree_pathtracer.h"
 
-#include "pathlab/child_process.h"
+#include "process/child_process.h"
 
 #include <algorithm>
 #include <cctype>

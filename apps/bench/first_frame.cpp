@@ -1,6 +1,6 @@
 #include "first_frame.h"
 
-#include "pathlab/child_process.h"
+#include "process/child_process.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,8 +1,9 @@
 #include "memory_probe.h"
 
-#include "pathlab/progressive_renderer.h"
+#include "runner/progressive_renderer.h"
 
-#include "pathlab/child_process.h"
+#include "process/child_process.h"
+
 #include "pathlab/false_colour.h"
 #include "pathlab/render_options.h"
 

@@ -4,9 +4,11 @@
 #include "embree_pathtracer.h"
 #include "render_timing.h"
 
+#include "runner/lab_tables.h"
+
+#include "process/child_process.h"
+
 #include "pathlab/accumulation_buffer.h"
-#include "pathlab/child_process.h"
-#include "pathlab/lab_tables.h"
 #include "pathlab/renderer.h"
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 #include "scene_measurement.h"
 
-#include "pathlab/lab_tables.h"
+#include "runner/lab_tables.h"
+
 #include "pathlab/render_options.h"
 
 namespace pathlab::bench {

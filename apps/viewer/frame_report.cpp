@@ -1,7 +1,7 @@
 #include "frame_report.h"
 
-#include "pathlab/frame_rate.h"
-#include "pathlab/progressive_renderer.h"
+#include "runner/frame_rate.h"
+#include "runner/progressive_renderer.h"
 
 #include "pathlab/input_error.h"
 #include "pathlab/render_stats.h"

@@ -1,7 +1,8 @@
 #include "frame_texture.h"
 
+#include "runner/progressive_renderer.h"
+
 #include "pathlab/false_colour.h"
-#include "pathlab/progressive_renderer.h"
 
 #include <GLFW/glfw3.h>
 

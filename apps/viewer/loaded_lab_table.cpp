@@ -4,8 +4,9 @@
 // right to start processes or programs (no_new_processes.h).
 #include "no_new_processes.h"
 
+#include "runner/lab_tables.h"
+
 #include "pathlab/input_error.h"
-#include "pathlab/lab_tables.h"
 #include "pathlab/this_process.h"
 
 #include <cstdlib>

@@ -1,13 +1,15 @@
 // viewer: PathLab's renderer. With -o it renders headless and writes an image; without, it opens
 // the progressive window. Run `viewer --help` for the options.
-#include "pathlab/headless_render.h"
+#include "viewer_window.h"
+#include "window_options.h"
+
+#include "runner/headless_render.h"
+
 #include "pathlab/image_io.h"
 #include "pathlab/input_error.h"
 #include "pathlab/program_main.h"
 #include "pathlab/render_options.h"
 #include "pathlab/render_scene.h"
-#include "viewer_window.h"
-#include "window_options.h"
 
 #include <cstdio>
 #include <filesystem>

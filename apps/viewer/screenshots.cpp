@@ -1,6 +1,6 @@
 #include "screenshots.h"
 
-#include "pathlab/progressive_renderer.h"
+#include "runner/progressive_renderer.h"
 
 #include "pathlab/image_io.h"
 #include "pathlab/input_error.h"

@@ -1,8 +1,9 @@
 #include "viewer_panel.h"
 
 #include "frame_report.h"
-#include "pathlab/progressive_renderer.h"
 #include "window_input.h"
+
+#include "runner/progressive_renderer.h"
 
 #include <imgui.h>
 #include <imgui_impl_glfw.h>

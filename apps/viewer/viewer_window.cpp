@@ -5,12 +5,13 @@
 #include "frame_report.h"
 #include "frame_texture.h"
 #include "glfw_session.h"
-#include "pathlab/lab_tables.h"
-#include "pathlab/progressive_renderer.h"
 #include "screenshots.h"
 #include "view_mode.h"
 #include "viewer_panel.h"
 #include "window_input.h"
+
+#include "runner/lab_tables.h"
+#include "runner/progressive_renderer.h"
 
 #include "pathlab/image_io.h"
 #include "pathlab/render_scene.h"

@@ -1,7 +1,8 @@
 #include "window_input.h"
 
 #include "camera_controller.h"
-#include "pathlab/lab_tables.h"
+
+#include "runner/lab_tables.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>

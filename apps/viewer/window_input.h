@@ -2,7 +2,7 @@
 /// The keys, the mouse and the window's size, turned into the view settings they change (and
 /// into what else a key asks of the window).
 
-#include "pathlab/progressive_renderer.h"
+#include "runner/progressive_renderer.h"
 
 #include <string>
 

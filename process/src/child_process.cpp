@@ -1,5 +1,5 @@
 // POSIX: Linux and macOS. Pinning to cores and dying with the parent are Linux only.
-#include "pathlab/child_process.h"
+#include "process/child_process.h"
 
 #include <algorithm>
 #include <cerrno>

@@ -1,10 +1,10 @@
-#include "pathlab/shell_command.h"
+#include "process/shell_command.h"
 
 #if defined(_WIN32)
 #include <array>
 #include <cstdio>
 #else
-#include "pathlab/child_process.h"
+#include "process/child_process.h"
 #endif
 
 namespace pathlab {

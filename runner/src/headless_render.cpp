@@ -1,9 +1,10 @@
-#include "pathlab/headless_render.h"
+#include "runner/headless_render.h"
+
+#include "runner/lab_tables.h"
 
 #include "pathlab/camera.h"
-#include "pathlab/render_scene.h"
-#include "pathlab/lab_tables.h"
 #include "pathlab/render_progress_line.h"
+#include "pathlab/render_scene.h"
 #include "pathlab/render_watchdog.h"
 #include "pathlab/renderer.h"
 

@@ -2,8 +2,9 @@
 // labs/ as PATHLAB_IMPL=student, with solutions/ as PATHLAB_IMPL=solution. The build defines
 // each lab's name as that name with the set's appended (branching=branching_student ...), so the
 // table below takes the set's own functions.
+#include "runner/lab_tables.h"
+
 #include "pathlab/lab.h"
-#include "pathlab/lab_tables.h"
 #include "pathlab/this_process.h"
 
 namespace pathlab::PATHLAB_IMPL {

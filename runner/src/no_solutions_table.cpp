@@ -1,7 +1,8 @@
 // The solution table of a build that has no solutions/: the student release, and the viewer
 // that runs submitted labs (which must not hold the reference solutions its labs could call).
+#include "runner/lab_tables.h"
+
 #include "pathlab/input_error.h"
-#include "pathlab/lab_tables.h"
 
 namespace pathlab::solution {
 

@@ -1,7 +1,7 @@
-#include "pathlab/progressive_renderer.h"
+#include "runner/progressive_renderer.h"
 
-#include "pathlab/frame_rate.h"
-#include "pathlab/lab_tables.h"
+#include "runner/frame_rate.h"
+#include "runner/lab_tables.h"
 
 #include <chrono>
 #include <optional>

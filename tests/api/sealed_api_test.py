@@ -59,7 +59,7 @@ FORBIDDEN = [
     ("use a camera packet", "CameraPacket packet; (void)packet;", r"incomplete|CameraPacket"),
     ("include the renderer's side", "#include \"pathlab/path_driver.h\"",
      r"path_driver.h is the renderer's side"),
-    ("include the lab tables", "#include \"pathlab/lab_tables.h\"", r"lab_tables.h"),
+    ("include the lab tables", "#include \"runner/lab_tables.h\"", r"lab_tables.h"),
 ]
 
 # The headers of pathlab/ a lab file sees through lab.h: the types and functions lab.h's comment

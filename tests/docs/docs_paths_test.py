@@ -7,7 +7,9 @@ Usage: docs_paths_test.py --source KIT [DOCUMENT.md ...]
 What counts as a repository path, in `code` or as a markdown link's target:
 - a token with a slash whose first folder is one of the kit's (labs/, framework/, grader/, ...,
   .ci/): it must exist, relative to the kit's root (a link: relative to the document's folder);
-- an include path, pathlab/NAME.h: it must exist in some FOLDER/include/ of the kit;
+- an include path, pathlab/NAME.h (or runner/NAME.h, process/NAME.h, the layers that name their
+  headers after their folder): it must exist in some FOLDER/include/ of the kit (runner/ and
+  process/ paths may also be relative to the kit's root);
 - a bare file name with a source extension (.cpp, .h, .py, .sh, ...): some file of the kit must
   have that name (the text around it says which folder);
 - a word in capitals (NAME, LAB, PLATFORM_test.py) or a * stands for any name: at least one
@@ -35,7 +37,10 @@ UNTRACKED = {
 }
 # The kit's top-level folders: a slash token starting with one of them is a path of the kit.
 KIT_FOLDERS = {".ci", "apps", "cmake", "docs", "framework", "grader", "handouts", "labs", "models",
-               "runner", "scripts", "solutions", "tests"}
+               "process", "runner", "scripts", "solutions", "tests"}
+# The first folders of include paths (#include "pathlab/lab.h", "runner/lab_tables.h"): such a
+# path is looked for in every FOLDER/include/ of the kit too.
+INCLUDE_FOLDERS = {"pathlab", "runner", "process"}
 SOURCE_EXTENSIONS = (".cpp", ".h", ".py", ".sh", ".cmake", ".gp", ".lua", ".sbatch")
 
 FENCE = re.compile(r"^```.*?^```", re.M | re.S)
@@ -117,12 +122,13 @@ class Tree:
             if not link:
                 return None
         first = path.split("/")[0]
-        include = path.startswith("pathlab/")
+        include = first in INCLUDE_FOLDERS
         if not (link or include or first in KIT_FOLDERS):
             return None  # a folder the kit makes elsewhere (OUT/, submissions/ID/)
         if ignored_by_git(self.source, path) or any(path.startswith(u) for u in UNTRACKED):
             return None
-        bases = self.include_dirs if include else [self.source]
+        bases = self.include_dirs + ([self.source] if first in KIT_FOLDERS else []) if include \
+            else [self.source]
         found = [f for base in bases for f in matches(base, path)]
         if not found:
             return f"{token}: no such file"
@@ -148,13 +154,14 @@ class Tree:
 # checker must report exactly the latter.
 SELF_TEST = """
 `framework/src/renderer.cpp:Renderer::renderPass`, `pathlab/lab.h`, `labs/NAME.cpp`,
-`renderer.cpp`, `docs/instructor-guide.md`, `grader/src/*_check.cpp`, `make test`, `build/viewer`,
-[the kit](../README.md#quick-start), `/proc/self/exe`, `grader/hidden_scenes/`, `OUT/.canary/`.
+`renderer.cpp`, `docs/instructor-guide.md`, `grader/src/checks/*_check.cpp`, `make test`,
+`build/viewer`, [the kit](../README.md#quick-start), `/proc/self/exe`, `grader/hidden_scenes/`,
+`OUT/.canary/`, `runner/lab_tables.h`, `process/child_process.h`, `runner/src/lab_table.cpp`.
 `framework/src/no_such_renderer.cpp`, `framework/src/renderer.cpp:noSuchFunction`,
 `pathlab/no_such_header.h`, `labs/NAME.hpp`, `no_such_file.cpp`, [a link](no_such_page.md),
-[an anchor](../README.md#no-such-heading), `tests/no_such_folder/`.
+[an anchor](../README.md#no-such-heading), `tests/no_such_folder/`, `runner/no_such_table.h`.
 """
-SELF_TEST_MISSING = 8
+SELF_TEST_MISSING = 9
 
 
 def main():

@@ -1,9 +1,10 @@
 #include "lab_checks.h"
 
 #include "catch.h"
-#include "diagnosis.h"
 #include "statistics.h"
 #include "test_support.h"
+
+#include "diagnosis/diagnosis.h"
 
 #include "pathlab/todo.h"
 

@@ -2,11 +2,12 @@
 /// The lab tests' renders and verdicts. A check renders one scene with the lab under test
 /// (test::renderLabUnderTest) and, when it fails, says so once: what was rendered, with which
 /// --max-depth or --continue-prob, what came out and what was expected, and the likely step of
-/// the lab when the grader's diagnosis (grader/src/diagnosis.h) recognises the value.
+/// the lab when the grader's diagnosis (grader/src/diagnosis/diagnosis.h) recognises the value.
 
-#include "expectation.h"
+#include "checks/expectation.h"
 
-#include "pathlab/headless_render.h"
+#include "runner/headless_render.h"
+
 #include "pathlab/lab_registry.h"
 
 #include <cstdint>

@@ -17,10 +17,10 @@
 // 3 (normal: 2.4) and none beyond 3.6. Its false-fail rate is estimated below 1e-3.
 #include "catch.h"
 #include "lab_checks.h"
-
-#include "expectation.h"
-#include "rubric.h"
 #include "test_support.h"
+
+#include "checks/expectation.h"
+#include "checks/rubric.h"
 
 using namespace pathlab;
 using namespace pathlab::test;

@@ -3,8 +3,9 @@
 // diagnosis name points at one step.
 #include "catch.h"
 
-#include "diagnosis.h"
-#include "diagnosis_table.h"
+#include "diagnosis/diagnosis.h"
+#include "diagnosis/diagnosis_table.h"
+
 #include "pathlab/whole_file.h"
 
 #include <algorithm>

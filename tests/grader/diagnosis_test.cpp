@@ -3,7 +3,7 @@
 #include "catch.h"
 #include "messages.h"
 
-#include "diagnosis.h"
+#include "diagnosis/diagnosis.h"
 
 #include <cmath>
 

@@ -3,12 +3,12 @@
 #include "catch.h"
 #include "messages.h"
 
-#include "content_hash.h"
-#include "expectation.h"
-#include "gradebook.h"
-#include "rubric.h"
-#include "scene_files.h"
-#include "submission_time.h"
+#include "checks/expectation.h"
+#include "checks/rubric.h"
+#include "common/content_hash.h"
+#include "common/scene_files.h"
+#include "reports/gradebook.h"
+#include "reports/submission_time.h"
 
 #include "pathlab/input_error.h"
 

@@ -2,9 +2,9 @@
 // the rubric's visibility; the lab's visible tests and the submission's output leave them out.
 #include "catch.h"
 
-#include "correctness_check.h"
-#include "reports.h"
-#include "rubric.h"
+#include "checks/correctness_check.h"
+#include "checks/rubric.h"
+#include "reports/reports.h"
 
 #include "pathlab/input_error.h"
 

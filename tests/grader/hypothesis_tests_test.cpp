@@ -3,7 +3,7 @@
 // the t density), and Holm's step-down on a small example.
 #include "catch.h"
 
-#include "hypothesis_tests.h"
+#include "checks/hypothesis_tests.h"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 #include "catch.h"
 #include "test_support.h"
 
-#include "reports.h"
+#include "reports/reports.h"
 
 #include <fstream>
 

@@ -3,7 +3,7 @@
 // viewer refused to start).
 #include "catch.h"
 
-#include "render_run.h"
+#include "isolation/render_run.h"
 
 using namespace pathlab;
 using namespace pathlab::grader;

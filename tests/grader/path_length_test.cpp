@@ -3,7 +3,7 @@
 #include "catch.h"
 #include "messages.h"
 
-#include "path_length.h"
+#include "checks/path_length.h"
 
 using namespace pathlab::grader;
 

@@ -3,7 +3,7 @@
 #include "catch.h"
 #include "messages.h"
 
-#include "rays_per_sample.h"
+#include "checks/rays_per_sample.h"
 
 using namespace pathlab;
 using namespace pathlab::grader;

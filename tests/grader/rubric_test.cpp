@@ -3,7 +3,7 @@
 #include "catch.h"
 #include "messages.h"
 
-#include "rubric.h"
+#include "checks/rubric.h"
 
 #include "pathlab/input_error.h"
 

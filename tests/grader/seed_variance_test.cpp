@@ -1,7 +1,7 @@
 // The noise check's trimmed per-sample variance on images whose per-pixel spread is known.
 #include "catch.h"
 
-#include "seed_variance.h"
+#include "checks/seed_variance.h"
 
 #include <vector>
 

@@ -5,7 +5,7 @@
 // [solutions], which only the instructor's kit has.
 #include "catch.h"
 
-#include "similarity.h"
+#include "similarity/similarity.h"
 
 #include <algorithm>
 #include <cctype>

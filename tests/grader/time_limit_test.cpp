@@ -2,7 +2,7 @@
 // references were made, within bounds, and the report says so in numbers.
 #include "catch.h"
 
-#include "time_limit.h"
+#include "isolation/time_limit.h"
 
 using namespace pathlab::grader;
 

@@ -1,6 +1,6 @@
 // The grader's remedy when bubblewrap gets no user namespace: the setting that forbids it, read
 // from a kernel settings folder made here, and the command that allows it.
-#include "user_namespaces.h"
+#include "isolation/user_namespaces.h"
 
 #include "catch.h"
 #include "messages.h"

@@ -3,8 +3,8 @@
 #include "catch.h"
 #include "test_support.h"
 
-#include "pathlab/child_process.h"
-#include "pathlab/shell_command.h"
+#include "process/child_process.h"
+#include "process/shell_command.h"
 
 #include <chrono>
 #include <csignal>

@@ -2,7 +2,8 @@
 #include "catch.h"
 #include "test_support.h"
 
-#include "pathlab/lab_tables.h"
+#include "runner/lab_tables.h"
+
 #include "pathlab/renderer.h"
 
 #include <cstring>

@@ -3,10 +3,11 @@
 #include "catch.h"
 #include "test_support.h"
 
+#include "runner/lab_tables.h"
+
 #include "pathlab/accumulation_buffer.h"
 #include "pathlab/image_noise.h"
 #include "pathlab/pcg32.h"
-#include "pathlab/lab_tables.h"
 #include "pathlab/renderer.h"
 
 #include <cmath>

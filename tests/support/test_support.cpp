@@ -1,6 +1,7 @@
 #include "test_support.h"
 
-#include "pathlab/lab_tables.h"
+#include "runner/lab_tables.h"
+
 #include "pathlab/this_process.h"
 
 #include <cmath>

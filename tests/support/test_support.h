@@ -1,8 +1,9 @@
 #pragma once
 /// Shared by the tests: where the models are, rendering in-process, running the viewer.
 
-#include "pathlab/headless_render.h"
-#include "pathlab/shell_command.h"
+#include "runner/headless_render.h"
+
+#include "process/shell_command.h"
 
 #include <string>
 #include <vector>

@@ -1,0 +1,60 @@
+#pragma once
+/// What the checks of one lab return: each check's verdict (CheckResult) and the lab's grade made
+/// of them (LabGrade), which the reports print. The checks' input is grader_setup.h.
+
+#include "checks/check_kind.h"
+#include "checks/rays_per_sample.h"
+
+#include "pathlab/lab_registry.h"
+
+#include <string>
+#include <vector>
+
+namespace pathlab::grader {
+
+/// How a hidden scene's verdict reads in CheckResult::hiddenSceneDetails, after its name: the
+/// Gradescope report tells a failed one by it.
+constexpr const char* HiddenSceneMatches = ": matches its reference";
+constexpr const char* HiddenSceneDiffers = ": differs from its reference";
+
+struct CheckResult {
+    CheckKind kind = CheckKind::Correctness;
+    double score = 0, maxScore = 0;
+    bool passed = false;
+    std::string summary;              ///< one line
+    std::vector<std::string> details; ///< what to look at, in words
+    std::string diagnosis;            ///< a failure's cause in a few words, for a class's summary
+    /// Pass or fail per hidden scene, without its name (in every report; in Gradescope's, a test
+    /// of its own with the visibility the rubric gives hidden scenes).
+    std::vector<std::string> hiddenSceneDetails;
+    /// False for a check this build cannot make (speed, without the reference solutions to time
+    /// against): the instructor's grader makes it, and its points are not in this build's totals.
+    bool gradedHere = true;
+
+    /// The check's name in every report (check_kind.h).
+    std::string name() const { return std::string(checkName(kind)); }
+};
+
+struct LabGrade {
+    Lab lab = Lab::Branching;
+    std::vector<CheckResult> checks;
+    double studentSamplesPerSecond = 0, solutionSamplesPerSecond = 0; ///< the timed runs' medians
+    double studentVariance = 0, solutionVariance = 0; ///< per sample, on the noise scene
+    RaysPerSample studentRays, solutionRays;          ///< in the timed runs (the labs' own counts)
+    double efficiencyRatio =
+        0; ///< 1/(variance x time per sample), yours ÷ the reference's; 0: unknown
+    bool rendersFinished = true; ///< false when a correctness render crashed, hung or ran out
+    /// For the HTML report: per scene, the student's mean image, the reference and a heat map.
+    struct Pictures {
+        std::string scene;
+        int width = 0, height = 0;
+        std::vector<float> student, reference;
+    };
+    std::vector<Pictures> pictures;
+
+    double score() const;
+    double maxScore() const; ///< of the checks graded here
+    double pointsNotGradedHere() const;
+};
+
+} // namespace pathlab::grader

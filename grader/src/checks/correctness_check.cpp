@@ -1,0 +1,477 @@
+#include "checks/correctness_check.h"
+
+#include "checks/hypothesis_tests.h"
+#include "checks/number_text.h"
+#include "checks/path_length.h"
+#include "checks/rays_per_sample.h"
+#include "checks/reproducibility_check.h"
+#include "checks/run_limits.h"
+#include "checks/seed_variance.h"
+#include "diagnosis/diagnosis.h"
+
+#include "pathlab/input_error.h"
+#include "pathlab/todo.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pathlab::grader {
+
+namespace {
+
+/// k independent renders of one lab on one scene.
+struct SceneRuns {
+    std::vector<std::vector<double>> regionValues; ///< [statistic][seed]
+    std::vector<std::vector<float>> images;        ///< one per seed
+    RaysPerSample rays;                            ///< over all seeds (the lab's own counts)
+    bool stepsOpen = false; ///< the lab reported a TODO step not written yet (pathlab/todo.h)
+    std::string failure, failureKind; ///< see RenderResult
+
+    /// The mean of the seeds' images, for the reports' pictures.
+    std::vector<float> meanImage() const {
+        std::vector<float> mean(images.front().size(), 0.0f);
+        for (const auto& image : images)
+            for (size_t i = 0; i < image.size(); ++i)
+                mean[i] += image[i] / static_cast<float>(images.size());
+        return mean;
+    }
+};
+
+SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab lab,
+                      uint64_t seedBase) {
+    const Rubric& r = setup.rubric;
+    SceneRuns runs;
+    // All seeds in one viewer process: its start-up, longer than a small render, is paid once.
+    const LabParameters parameters =
+        scene.parameters.value_or(LabParameters{r.maxDepth, r.continueProb});
+    const int spp = r.forLab(lab).correctnessSpp;
+    const RenderRequest request{&setup.student,
+                                scene.path,
+                                lab,
+                                r.width,
+                                r.height,
+                                spp,
+                                parameters.maxDepth,
+                                parameters.continueProb,
+                                seedBase,
+                                r.seeds,
+                                setup.threads,
+                                setup.scratch};
+    const RenderResult result = renderLab(request, limitsOf(setup));
+    if (!result.ok) {
+        runs.failure = result.failure;
+        runs.failureKind = result.failureKind;
+        return runs;
+    }
+    runs.stepsOpen = result.process.output.find(TodoNotDoneWords) != std::string::npos;
+    RayCounters rays;
+    for (const RenderedImage& rendered : result.images) {
+        rays += rendered.rays;
+        const std::vector<double> means =
+            regionMeans(rendered.rgb, result.width, result.height, r.tiles);
+        if (runs.regionValues.empty()) runs.regionValues.resize(means.size());
+        for (size_t i = 0; i < means.size(); ++i) runs.regionValues[i].push_back(means[i]);
+        runs.images.push_back(rendered.rgb);
+    }
+    runs.rays = raysPerSample(rays, static_cast<double>(r.width) * r.height * spp * r.seeds);
+    return runs;
+}
+
+struct Comparison {
+    std::vector<double> t, p;
+    std::vector<MeanEstimate> observed;
+};
+
+Comparison compare(const SceneRuns& runs, const Expectation& expected, int seeds) {
+    Comparison c;
+    for (size_t i = 0; i < runs.regionValues.size(); ++i) {
+        const MeanEstimate m = batchMean(runs.regionValues[i]);
+        // A region that every path sees alike (the blue of the refraction check, 0.2 through
+        // the glass wherever it leads) has no sampling noise at all; there the means still
+        // differ by float rounding, which grows with spp. That rounding, a few parts in 1e7
+        // of a float accumulation, is bounded by a relative floor far below any bug's effect.
+        const double rounding = floatRoundingFloor * std::fabs(expected.mean[i]);
+        const double se =
+            std::sqrt(m.standardError * m.standardError +
+                      expected.standardError[i] * expected.standardError[i] + rounding * rounding);
+        const double t = se > 0 ? (m.mean - expected.mean[i]) / se
+                                : (m.mean == expected.mean[i] ? 0.0 : INFINITY);
+        c.t.push_back(t);
+        c.p.push_back(studentTwoSidedP(t, seeds - 1));
+        c.observed.push_back(m);
+    }
+    return c;
+}
+
+/// Why a lab's renders could not be compared at all.
+struct RunFailure {
+    std::string text, kind;
+    bool empty() const { return text.empty(); }
+};
+
+/// What one attempt over all scenes found: on rejection, the details and diagnosis.
+struct Attempt {
+    bool passed = false;
+    std::vector<std::string> details, hiddenDetails;
+    std::string diagnosis;
+    RunFailure failure;
+    double noise = -1; ///< see CorrectnessOutcome
+    std::vector<LabGrade::Pictures> pictures;
+    /// The first seed's image of the noise scene (or of the first scene), rendered again by the
+    /// reproducibility check.
+    SeedImage firstImage;
+};
+
+/// What the renders of every scene leave for the verdict.
+struct SceneComparisons {
+    std::vector<Comparison> scenes;                 ///< one per scene, in the setup's order
+    std::vector<double> allP;                       ///< every scene's regions' p, in a row
+    std::vector<PathLengthObservation> pathLengths; ///< lab 4 in the diffuse furnaces
+    bool stepsOpen = false;                         ///< see SceneRuns
+};
+
+/// Renders every scene and compares it with its reference, keeping in `attempt` the noise figure,
+/// the first image and the public scenes' pictures; a scene whose renders fail ends it, with
+/// `attempt.failure` saying so.
+SceneComparisons renderAndCompare(const GraderSetup& setup, Lab lab, uint64_t seedBase,
+                                  Attempt& attempt) {
+    const Rubric& r = setup.rubric;
+    SceneComparisons found;
+    for (const GradingScene& scene : setup.scenes) {
+        const SceneRuns runs = renderSeeds(setup, scene, lab, seedBase);
+        if (!runs.failure.empty()) {
+            attempt.failure = {"on " + scene.name + " the lab " +
+                                   withoutSceneName(runs.failure, scene),
+                               runs.failureKind};
+            return found;
+        }
+        found.stepsOpen = found.stepsOpen || runs.stepsOpen;
+        if (scene.reference.scene == r.noiseScene || attempt.noise < 0)
+            attempt.noise = trimmedSampleVariance(runs.images, r.forLab(lab).correctnessSpp);
+        if (scene.reference.scene == r.noiseScene || !attempt.firstImage.scene)
+            attempt.firstImage = {&scene, seedBase, setup.threads, runs.images.front()};
+        if (lab == Lab::Roulette && scene.furnace && scene.furnace->walls == FurnaceWalls::Diffuse)
+            found.pathLengths.push_back({scene.furnace->continueProb, runs.rays.bounce});
+        found.scenes.push_back(compare(runs, scene.reference.forLab(lab), r.seeds));
+        found.allP.insert(found.allP.end(), found.scenes.back().p.begin(),
+                          found.scenes.back().p.end());
+        if (scene.hidden) continue; // its images are the instructor's
+        LabGrade::Pictures pictures{
+            scene.name, r.width, r.height, {}, scene.reference.forLab(lab).image};
+        pictures.student = runs.meanImage();
+        attempt.pictures.push_back(std::move(pictures));
+    }
+    return found;
+}
+
+/// Whether any region (of a scene, or of all scenes) differs from its reference.
+bool anyRejected(const std::vector<bool>& rejected) {
+    return std::any_of(rejected.begin(), rejected.end(), [](bool b) { return b; });
+}
+
+/// The name a diagnosis goes by: the cause up to the explanation after the colon.
+std::string causeName(const std::string& cause) { return cause.substr(0, cause.find(':')); }
+
+/// A likely cause in the details; the first one told names the diagnosis.
+void tellLikelyCause(const std::string& cause, Attempt& attempt) {
+    attempt.details.push_back("likely cause: " + cause);
+    if (attempt.diagnosis.empty()) attempt.diagnosis = causeName(cause);
+}
+
+/// Holm's rejections over all scenes' regions in a row, cut back into each scene's regions.
+std::vector<std::vector<bool>> rejectionsByScene(const std::vector<Comparison>& scenes,
+                                                 const std::vector<bool>& rejected) {
+    std::vector<std::vector<bool>> byScene;
+    size_t offset = 0;
+    for (const Comparison& c : scenes) {
+        byScene.emplace_back(rejected.begin() + offset, rejected.begin() + offset + c.p.size());
+        offset += c.p.size();
+    }
+    return byScene;
+}
+
+/// Which kinds of scene reject the lab: they decide which likely causes it may be told.
+struct RejectingScenes {
+    bool furnace = false, refraction = false, publicScene = false;
+};
+
+/// The furnaces have no glass: a lab that one of them rejects has a fault elsewhere, which the
+/// refraction check's image shows too, so only a lab that every furnace accepts is told about
+/// refraction; and only one that the refraction check accepts too about its diffuse directions
+/// (mixed_surfaces holds glass as well).
+RejectingScenes rejectingScenes(const std::vector<GradingScene>& scenes,
+                                const std::vector<bool>& sceneRejected) {
+    RejectingScenes rejecting;
+    for (size_t s = 0; s < scenes.size(); ++s) {
+        rejecting.furnace = rejecting.furnace || (scenes[s].furnace && sceneRejected[s]);
+        rejecting.refraction =
+            rejecting.refraction ||
+            (!scenes[s].hidden && scenes[s].reference.scene == "refraction_check" &&
+             sceneRejected[s]);
+        rejecting.publicScene = rejecting.publicScene || (!scenes[s].hidden && sceneRejected[s]);
+    }
+    return rejecting;
+}
+
+/// The whole image's mean over its three channels: a furnace's one value.
+double wholeImageMean(const Comparison& c) {
+    return (c.observed[0].mean + c.observed[1].mean + c.observed[2].mean) / 3;
+}
+
+/// The whole image's observed/expected per channel, each with its confidence interval.
+struct ChannelRatios {
+    std::string text; ///< " red R [LOW, HIGH] green ..."
+    std::vector<ChannelInterval> intervals;
+};
+
+ChannelRatios channelRatios(const Comparison& c, const Expectation& e, const Rubric& r) {
+    const double critical = studentCritical(r.alpha, r.seeds - 1);
+    const char* channel[3] = {"red", "green", "blue"};
+    ChannelRatios ratios;
+    for (int ch = 0; ch < 3; ++ch) {
+        const double ratio = c.observed[ch].mean / e.mean[ch];
+        const double half =
+            critical * std::hypot(c.observed[ch].standardError, e.standardError[ch]) / e.mean[ch];
+        ratios.text += std::string(" ") + channel[ch] + " " + fixed(ratio, 3) + " [" +
+                       fixed(ratio - half, 3) + ", " + fixed(ratio + half, 3) + "]";
+        ratios.intervals.push_back({ratio - half, ratio + half});
+    }
+    return ratios;
+}
+
+/// "N of M tiles differ ...: (column,row) ..." for a scene's regions (the whole image's three
+/// channels, then each tile's), or "" when no tile differs.
+std::string differingTiles(const std::vector<bool>& regionsRejected, int tilesPerSide) {
+    std::string tiles;
+    int tileCount = 0;
+    for (size_t i = 3; i < regionsRejected.size(); i += 3) {
+        bool any = false;
+        for (int ch = 0; ch < 3; ++ch) any = any || regionsRejected[i + ch];
+        if (!any) continue;
+        const int tile = static_cast<int>(i / 3) - 1;
+        ++tileCount;
+        tiles += " (" + std::to_string(tile % tilesPerSide) + "," +
+                 std::to_string(tile / tilesPerSide) + ")";
+    }
+    if (tileCount == 0) return "";
+    return std::to_string(tileCount) + " of " + std::to_string(tilesPerSide * tilesPerSide) +
+           " tiles differ (column,row from the top left):" + tiles;
+}
+
+/// Channels off in opposite ways point to the pick's probabilities, channels off alike to the
+/// diffuse directions (channelsOffOppositeWays). Lab 1 picks nothing: it is told only what
+/// differs.
+void explainMixedSurfaces(Lab lab, const GradingScene& scene,
+                          const std::vector<ChannelInterval>& intervals, Attempt& attempt) {
+    const bool opposite = channelsOffOppositeWays(intervals);
+    const std::string cause = opposite ? likelyPickDivideCause(lab) : likelyDirectionCause(lab);
+    if (!cause.empty())
+        tellLikelyCause(cause, attempt);
+    else if (opposite)
+        attempt.details.push_back(scene.name +
+                                  ": some colour channels are too bright and others too dark");
+}
+
+/// A public scene that differs, in the details: its channels' ratios, the tiles that differ, and
+/// the likely cause that its kind of scene can tell.
+void explainScene(const GraderSetup& setup, Lab lab, const GradingScene& scene, const Comparison& c,
+                  const std::vector<bool>& regionsRejected, const RejectingScenes& rejecting,
+                  Attempt& attempt) {
+    const ChannelRatios ratios = channelRatios(c, scene.reference.forLab(lab), setup.rubric);
+    attempt.details.push_back(scene.name + ": observed/expected" + ratios.text);
+    if (const std::string tiles = differingTiles(regionsRejected, setup.rubric.tiles);
+        !tiles.empty())
+        attempt.details.push_back(scene.name + ": " + tiles);
+    if (scene.reference.scene == "mixed_surfaces" && !rejecting.furnace && !rejecting.refraction)
+        explainMixedSurfaces(lab, scene, ratios.intervals, attempt);
+    if (scene.reference.scene == "refraction_check" && !rejecting.furnace)
+        tellLikelyCause(likelyRefractionCause(lab), attempt);
+    if (scene.furnace)
+        attempt.details.push_back(scene.name + ": " + fixed(wholeImageMean(c), 4) +
+                                  ", where a correct lab gives " +
+                                  fixed(correctFurnaceValue(lab, *scene.furnace), 4));
+}
+
+/// Explains a rejection in `attempt`'s details and diagnosis: per scene, the whole image's
+/// observed/expected per channel with a confidence interval, the tiles that differ, and a likely
+/// cause where the furnace can tell.
+void explainRejection(const GraderSetup& setup, Lab lab, const SceneComparisons& found,
+                      const std::vector<bool>& rejected, Attempt& attempt) {
+    const std::vector<std::vector<bool>> regionsRejected =
+        rejectionsByScene(found.scenes, rejected);
+    std::vector<bool> sceneRejected;
+    for (const std::vector<bool>& regions : regionsRejected)
+        sceneRejected.push_back(anyRejected(regions));
+    const RejectingScenes rejecting = rejectingScenes(setup.scenes, sceneRejected);
+    // Every furnace's value, accepted or not, narrows down the known bugs that explain them.
+    std::vector<FurnaceObservation> furnaces;
+    for (size_t s = 0; s < setup.scenes.size(); ++s) {
+        const GradingScene& scene = setup.scenes[s];
+        const Comparison& c = found.scenes[s];
+        if (scene.furnace)
+            furnaces.push_back({*scene.furnace, wholeImageMean(c), c.observed[0].standardError});
+        if (scene.hidden)
+            attempt.hiddenDetails.push_back(
+                scene.name + (sceneRejected[s] ? HiddenSceneDiffers : HiddenSceneMatches));
+        else if (sceneRejected[s])
+            explainScene(setup, lab, scene, c, regionsRejected[s], rejecting, attempt);
+    }
+    if (!rejecting.publicScene)
+        attempt.hiddenDetails.push_back(
+            "every scene you can see matches: what differs is something only a hidden scene has "
+            "(a material, a light or a path the public scenes lack)");
+    if (rejecting.furnace) {
+        const std::vector<std::string> causes = likelyFurnaceCauses(lab, furnaces, found.stepsOpen);
+        if (!causes.empty()) {
+            attempt.details.push_back("likely cause: " + causes.front());
+            // The furnaces' diagnosis is the most specific: it wins over any told before.
+            attempt.diagnosis = causeName(causes.front());
+        }
+    }
+}
+
+/// One attempt of the correctness check over all scenes. `noise`: the figure of an earlier
+/// attempt (-1: none), kept where this one does not reach the noise scene.
+Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, double noise) {
+    Attempt attempt;
+    attempt.noise = noise;
+    const SceneComparisons found = renderAndCompare(setup, lab, seedBase, attempt);
+    if (!attempt.failure.empty()) return attempt;
+    const std::vector<bool> rejected = holmRejections(found.allP, setup.rubric.alpha);
+    // A lab 4 that continues with a constant of its own is unbiased, but not lab 4: its paths
+    // tell (path_length.h). That cause wins over any the images suggest.
+    const std::string ignored = ignoredContinueProb(found.pathLengths);
+    if (!ignored.empty()) {
+        attempt.details.push_back("likely cause: " + ignored);
+        attempt.diagnosis = causeName(ignored);
+        return attempt;
+    }
+    if (!anyRejected(rejected)) {
+        if (const std::string note = pathLengthNote(found.pathLengths); !note.empty())
+            attempt.details.push_back(note);
+        for (const GradingScene& scene : setup.scenes)
+            if (scene.hidden) attempt.hiddenDetails.push_back(scene.name + HiddenSceneMatches);
+        attempt.passed = true;
+        return attempt;
+    }
+    explainRejection(setup, lab, found, rejected, attempt);
+    return attempt;
+}
+
+/// ", and the furnace's analytic value at maxDepth 5" where the grading has a parameter check.
+std::string parameterCheckText(const GraderSetup& setup, Lab lab) {
+    for (const GradingScene& scene : setup.scenes) {
+        if (!scene.parameters) continue;
+        return isDepthLimited(lab)
+                   ? ", and the furnace's analytic value at maxDepth " +
+                         std::to_string(scene.parameters->maxDepth)
+                   : ", at continueProb " + significant(scene.parameters->continueProb, 2) +
+                         " as at " + significant(setup.rubric.continueProb, 2);
+    }
+    return "";
+}
+
+} // namespace
+
+CorrectnessOutcome checkCorrectness(const GraderSetup& setup, Lab lab) {
+    CorrectnessOutcome outcome;
+    CheckResult& check = outcome.check;
+    check.kind = CheckKind::Correctness;
+    check.maxScore = setup.rubric.forLab(lab).points.correctness;
+    Attempt attempt = correctnessAttempt(setup, lab, setup.seedBase * 1000, -1);
+    if (!attempt.passed && attempt.failure.empty()) {
+        // A rejection at alpha happens to correct labs too, rarely: only a second rejection on
+        // fresh seeds counts. A retry whose renders fail keeps the first attempt's words.
+        Attempt retry = correctnessAttempt(setup, lab, setup.seedBase * 1000 + 500, attempt.noise);
+        if (!retry.failure.empty()) {
+            retry.details = std::move(attempt.details);
+            retry.hiddenDetails = std::move(attempt.hiddenDetails);
+            retry.diagnosis = std::move(attempt.diagnosis);
+        }
+        attempt = std::move(retry);
+    }
+    // The same seed must give the same image: a certain finding, where the statistics' causes
+    // are only likely, so it comes first and fails the check on its own.
+    Reproducibility reproducibility;
+    if (attempt.failure.empty() && attempt.firstImage.scene)
+        reproducibility = checkReproducibility(setup, lab, attempt.firstImage);
+    check.passed = attempt.passed && reproducibility.reproducible;
+    outcome.noise = attempt.noise;
+    outcome.pictures = std::move(attempt.pictures);
+    check.score = check.passed ? check.maxScore : 0;
+    const std::string expected =
+        isDepthLimited(lab)
+            ? "the depth-limited image (maxDepth " + std::to_string(setup.rubric.maxDepth) + ")"
+            : "the unbiased image";
+    std::vector<std::string>& details = attempt.details;
+    const RunFailure& failure = attempt.failure;
+    if (!reproducibility.reproducible) {
+        details.insert(details.begin(), reproducibility.details.begin(),
+                       reproducibility.details.end());
+        check.summary = (attempt.passed ? "mean radiance matches " + expected +
+                                              ", but the same seed gives different images"
+                                        : "mean radiance differs from " + expected +
+                                              " (twice, on fresh seeds), and the same seed gives "
+                                              "different images");
+        check.diagnosis = NotReproducibleDiagnosis;
+    } else if (check.passed) {
+        check.summary = "mean radiance matches " + expected + parameterCheckText(setup, lab);
+    } else if (!failure.empty()) {
+        outcome.rendersFinished = false;
+        check.summary = "could not be checked: " + failure.text;
+        check.diagnosis = failure.kind;
+        if (failure.kind == NonfiniteRadianceFailure)
+            details.push_back("likely cause: " + likelyNonfiniteCause(lab));
+    } else {
+        check.summary = "mean radiance differs from " + expected + " (twice, on fresh seeds)";
+        check.diagnosis = attempt.diagnosis.empty() ? "wrong mean radiance" : attempt.diagnosis;
+    }
+    check.details = std::move(details);
+    check.hiddenSceneDetails = std::move(attempt.hiddenDetails);
+    return outcome;
+}
+
+GradingScene parameterCheckScene(const Rubric& rubric) {
+    const ParameterCheck& check = rubric.parameterCheck;
+    GradingScene scene;
+    scene.path = std::string(PATHLAB_MODELS_DIR) + "/" + check.scene + ".ecs";
+    scene.parameters = LabParameters{check.maxDepth, check.continueProb};
+    scene.furnace = furnaceModel(check.scene, check.maxDepth, check.continueProb);
+    if (!scene.furnace)
+        throw InputError("rubric: parameter_check.scene '" + check.scene +
+                         "' is not a furnace "
+                         "of models/ (furnace, furnace_a08, mirror_furnace)");
+    SceneReference& ref = scene.reference;
+    ref = referenceHeader(check.scene + " at maxDepth " + std::to_string(check.maxDepth) +
+                              ", continueProb " + significant(check.continueProb, 2),
+                          rubric, check.maxDepth, check.continueProb);
+    scene.name = ref.scene;
+    // Every region of a furnace averages to its analytic value, known exactly: no standard error.
+    const size_t values = 3 * (1 + static_cast<size_t>(rubric.tiles) * rubric.tiles);
+    const size_t pixels = 3 * static_cast<size_t>(rubric.width) * rubric.height;
+    auto analytic = [&](Lab lab) {
+        const double value = correctFurnaceValue(lab, *scene.furnace);
+        Expectation e;
+        e.solution = "analytic: " + furnaceFormula(lab, *scene.furnace);
+        e.mean.assign(values, value);
+        e.standardError.assign(values, 0.0);
+        e.image.assign(pixels, static_cast<float>(value));
+        return e;
+    };
+    ref.depthLimited = analytic(Lab::Branching);
+    ref.unbiased = analytic(Lab::Roulette);
+    return scene;
+}
+
+std::string withoutSceneName(std::string text, const GradingScene& scene) {
+    if (!scene.hidden) return text;
+    for (const std::string& secret : {scene.path, scene.reference.scene}) {
+        if (secret.empty()) continue;
+        for (size_t at = text.find(secret); at != std::string::npos;
+             at = text.find(secret, at + scene.name.size()))
+            text.replace(at, secret.size(), scene.name);
+    }
+    return text;
+}
+
+} // namespace pathlab::grader

@@ -1,0 +1,33 @@
+#pragma once
+/// The correctness check: a lab's mean radiance, whole image and tile by tile, on every grading
+/// scene against the reference (a t-test per region, Holm over all of them), with a retry on
+/// fresh seeds; and the parameter check, the analytic furnace at a second maxDepth and
+/// continueProb, so that a lab that ignores either fails.
+
+#include "checks/check_result.h"
+#include "checks/grader_setup.h"
+
+namespace pathlab::grader {
+
+/// The verdict and what its renders leave for the other checks and the reports.
+struct CorrectnessOutcome {
+    CheckResult check;
+    /// The trimmed per-sample variance of the renders on the rubric's noise scene (-1 if none
+    /// finished), for the noise check.
+    double noise = -1;
+    std::vector<LabGrade::Pictures> pictures;
+    bool rendersFinished = true; ///< false when a render crashed, hung or ran out
+};
+
+CorrectnessOutcome checkCorrectness(const GraderSetup& setup, Lab lab);
+
+/// The parameter check's scene: the rubric's parameter_check furnace rendered at its maxDepth
+/// and continueProb, with the analytic values as its reference. Throws InputError when the scene
+/// is not a furnace.
+GradingScene parameterCheckScene(const Rubric& rubric);
+
+/// A render's failure text as feedback may show it: a hidden scene's path and name (which a
+/// lab's own output or the viewer's message may quote) replaced by what feedback calls it.
+std::string withoutSceneName(std::string text, const GradingScene& scene);
+
+} // namespace pathlab::grader

@@ -1,0 +1,77 @@
+#pragma once
+/// The instructor-editable rubric (grader/rubric.json): points, thresholds, render sizes.
+
+#include "checks/check_kind.h"
+#include "common/by_lab.h"
+
+#include "pathlab/lab_registry.h"
+
+#include <string>
+#include <vector>
+
+namespace pathlab::grader {
+
+struct LabPoints {
+    double correctness = 0, noise = 0, speed = 0;
+
+    /// The points of one check.
+    double of(CheckKind check) const {
+        return check == CheckKind::Correctness ? correctness
+               : check == CheckKind::Noise     ? noise
+                                               : speed;
+    }
+};
+
+/// What "as fast as the reference" means for a lab (rubric: speed.judged_by).
+enum class SpeedMeasure {
+    SamplesPerSecond, ///< samples/s: the lab as its handout specifies it, no cheaper, no dearer
+    Efficiency,       ///< 1/(per-sample variance x time per sample): time to reach equal noise
+};
+
+/// The second parameters the analytic furnace is graded at, so that a lab that ignores
+/// ctx.maxDepth (labs 1-3) or ctx.continueProb (lab 4) fails (rubric: parameter_check).
+struct ParameterCheck {
+    std::string scene = "furnace"; ///< a furnace of models/ (diagnosis.h's furnaceModel)
+    int maxDepth = 5;
+    float continueProb = 0.5f;
+};
+
+/// What the rubric sets for each lab apart.
+struct LabRubric {
+    LabPoints points;
+    int correctnessSpp = 0; ///< samples per pixel of each correctness render
+    int speedSpp = 0;       ///< samples per pixel of each timed render
+    SpeedMeasure speedJudgedBy = SpeedMeasure::SamplesPerSecond; ///< where the rubric is silent
+};
+
+struct Rubric {
+    ByLab<LabRubric> labs;
+    int maxDepth = 3;
+    float continueProb = 0.8f; ///< lab 4 is graded here: finite variance on VI2
+    double alpha = 1e-3;       ///< family-wise false-fail rate of one correctness check
+    int seeds = 10;
+    int width = 64, height = 64, tiles = 4;
+    std::vector<std::string> scenes; ///< public scenes, by name in models/
+    double maxNoiseRatio = 1.5;
+    std::string noiseScene;
+    double minSpeedRatio = 0.75;
+    int speedRuns = 5;
+    std::string speedScene;
+    int speedWidth = 256, speedHeight = 256;
+    ParameterCheck parameterCheck;
+    double secondsPerRun = 30;
+    long long memoryBytes = 4LL << 30;
+    /// When Gradescope shows students the hidden scenes' verdicts
+    /// (hidden_scenes.gradescope_visibility): visible, hidden, after_due_date or after_published.
+    std::string hiddenScenesVisibility = "after_published";
+    /// A fingerprint of every setting (the file's JSON, reformatted, without "about"): each
+    /// result records it, so that results graded under another rubric are never mixed.
+    std::string hash;
+
+    const LabRubric& forLab(Lab lab) const { return labs[lab]; }
+};
+
+/// Reads a rubric; throws InputError naming the file and the missing or wrong entry.
+Rubric loadRubric(const std::string& path);
+
+} // namespace pathlab::grader

@@ -1,0 +1,78 @@
+#include "checks/rubric_text.h"
+
+#include <sstream>
+
+namespace pathlab::grader {
+
+namespace {
+
+/// "branching 8, uniform 32, importance 16, roulette 32": one of LabRubric's counts by lab.
+std::string perLab(const Rubric& r, int LabRubric::*count) {
+    std::string text;
+    for (Lab lab : AllLabs)
+        text += (text.empty() ? "" : ", ") + std::string(labName(lab)) + " " +
+                std::to_string(r.forLab(lab).*count);
+    return text;
+}
+
+} // namespace
+
+std::string rubricText(const Rubric& r, const std::string& rubricPath, int hiddenScenes) {
+    std::ostringstream out;
+    out << "PathLab rubric: " << rubricPath << " (hash " << r.hash << ")\n\npoints\n";
+    double total = 0;
+    for (Lab lab : AllLabs) {
+        const LabPoints& p = r.forLab(lab).points;
+        const double labTotal = p.correctness + p.noise + p.speed;
+        total += labTotal;
+        out << "  " << labName(lab) << std::string(12 - labName(lab).size(), ' ') << "correctness "
+            << p.correctness << " + noise " << p.noise << " + speed " << p.speed << " = "
+            << labTotal << "\n";
+    }
+    out << "  total " << total << "; noise and speed count only for a correct lab\n\n";
+
+    out << "correctness: the mean radiance of " << r.seeds << " independent renders (seeds) of "
+        << r.width << "x" << r.height << " pixels,\n  over the whole image and each of its "
+        << r.tiles << "x" << r.tiles
+        << " tiles, agrees with the reference's (t-tests: a correct lab\n  fails "
+           "with probability at most "
+        << r.alpha
+        << ", and a failure counts only if fresh seeds fail "
+           "again)\n"
+        << "  samples per pixel: " << perLab(r, &LabRubric::correctnessSpp) << "\n"
+        << "  labs 1-3 at maxDepth " << r.maxDepth << "; lab 4 at continueProb " << r.continueProb
+        << "\n"
+        << "  public scenes (models/):";
+    for (const std::string& scene : r.scenes) out << " " << scene;
+    out << "\n  parameter check: " << r.parameterCheck.scene << " again, labs 1-3 at maxDepth "
+        << r.parameterCheck.maxDepth << " and lab 4 at continueProb "
+        << r.parameterCheck.continueProb << ",\n  against its exact value by the same test\n";
+    if (hiddenScenes > 0)
+        out << "  hidden scenes: " << hiddenScenes
+            << " (feedback says pass or fail; Gradescope shows that " << r.hiddenScenesVisibility
+            << ")\n";
+    else
+        out << "  hidden scenes: none here (your instructor's grader may add some)\n";
+
+    out << "\nnoise: the per-sample variance on " << r.noiseScene
+        << ", from the spread of the correctness "
+           "renders' "
+        << r.seeds << " seeds,\n  at most " << r.maxNoiseRatio
+        << " times the reference solution's (a correct lab only)\n";
+
+    out << "\nspeed: at least " << r.minSpeedRatio
+        << " times the reference solution's, the median of " << r.speedRuns
+        << " interleaved timed renders of " << r.speedWidth << "x" << r.speedHeight << " on "
+        << r.speedScene << "\n  samples per pixel: " << perLab(r, &LabRubric::speedSpp)
+        << "\n  judged by:";
+    for (Lab lab : AllLabs)
+        out << " " << labName(lab) << " "
+            << (r.forLab(lab).speedJudgedBy == SpeedMeasure::Efficiency ? "efficiency"
+                                                                        : "samples/s")
+            << (lab == Lab::Roulette ? "" : ",");
+    out << "\n\nlimits: " << r.secondsPerRun << " s per render (scaled to the machine's speed), "
+        << (r.memoryBytes >> 20) << " MB of memory\n";
+    return out.str();
+}
+
+} // namespace pathlab::grader

@@ -1,0 +1,295 @@
+#include "commands/arguments.h"
+
+#include "checks/grading_scenes.h"
+
+#include "pathlab/input_error.h"
+#include "pathlab/parse_number.h"
+#include "pathlab/this_process.h"
+
+#include <filesystem>
+#include <functional>
+#include <map>
+
+namespace pathlab::grader {
+
+const char* const usage =
+    R"(usage: grader [options]                       grade the labs of this build
+       grader rubric                          print the rubric in words: points, thresholds, scenes
+the instructor's (they need the reference solutions, or a batch's output):
+       grader make-references [options]       measure grader/references/ from the solutions
+       grader submission PATH --out DIR       grade one submission, in the sandbox
+       grader batch SUBMISSIONS --out DIR     grade every submission in a folder, in the sandbox
+       grader merge DIR... --out DIR          merge the gradebooks of batch shards
+
+A submission is a folder, a .zip, a .tar.gz or a git repository holding the four lab files
+(branching.cpp, uniform.cpp, importance.cpp, roulette.cpp); only those are taken.
+
+options
+  --lab NAME          grade one lab: branching | uniform | importance | roulette
+  --viewer PATH       the viewer whose labs are graded (default: the one beside grader)
+  --solution-viewer PATH
+                      the viewer whose --solution is the reference (default: --viewer)
+  --scenes DIR        the hidden scenes: also grade on every .ecs in DIR, references measured
+                      from the solutions (default: grader/hidden_scenes/ when it holds any;
+                      --scenes none grades on the public scenes only)
+  --reveal-hidden     feedback names the hidden scenes and shows their images and tiles
+                      (by default it says only pass or fail and a likely cause)
+  --rubric FILE       points and thresholds (default: grader/rubric.json)
+  --references DIR    stored references (default: grader/references)
+  --seed N            seed base (default 1); a fail is re-checked on fresh seeds anyway
+  --threads N         threads per render (default: all cores)
+  --no-speed          skip the frame-rate check
+  --json FILE --junit FILE --gradescope FILE --html DIR
+                      reports (the terminal table is always printed)
+  --report FILE.md    a lab report: your notebook's figures (frame rate, noise, efficiency) and
+                      the ratios between labs, beside the reference solutions'
+
+make-references
+  --only-figures      measure only lab_figures.json: the reference solutions' notebook figures
+                      and timed runs on this machine (about a minute)
+  --only-scene NAME   measure only the reference of NAME, a scene of the rubric (a scene just
+                      added to it), and not lab_figures.json
+  --only-hidden       measure only the hidden scenes' references, into the reference cache
+                      (Gradescope's setup.sh does this once, so no submission waits for it)
+
+batch
+  --out DIR           gradebook.csv, summary.html, batch.log and submissions/ID/ (feedback)
+  --jobs N            submissions graded at once (default 1)
+  --force             grade again what is already graded (default: a restart skips it)
+  --only ID[,ID...]   grade only these submissions (again); the gradebook keeps the others
+  --keep-stale        keep results graded under another rubric or other scenes (default: grade
+                      them again); the gradebook marks them stale
+  --deadline TIME     flag submissions made after TIME (2026-12-01T23:59, local time, or with
+                      Z or +01:00) as late in the gradebook
+  --times FILE.csv    submission times (id,submitted_at) from your LMS, in place of those found
+                      (a git repository's last commit, else the submission's file time)
+  --shard K/N         grade only every N-th submission, starting at the K-th (0-based)
+  --no-race-check     skip the race check (each lab compiled with ThreadSanitizer and rendered
+                      with 2 threads: a data race in its own code fails correctness)
+)";
+
+namespace {
+
+std::vector<int> cpuList(const std::string& option, const std::string& text) {
+    std::vector<int> cpus;
+    for (std::string_view piece : splitAt(text, ',')) {
+        try {
+            cpus.push_back(std::stoi(std::string(piece)));
+        } catch (const std::exception&) {
+            throw InputError("option " + option + " expects core numbers like 0 or 1,2, got '" +
+                             text + "'");
+        }
+    }
+    return cpus;
+}
+
+long long number(const std::string& option, const std::string& text, long long low) {
+    try {
+        size_t used = 0;
+        const long long value = std::stoll(text, &used);
+        if (used == text.size() && value >= low) return value;
+    } catch (const std::exception&) {
+    }
+    throw InputError("option " + option + " expects a whole number of at least " +
+                     std::to_string(low) + ", got '" + text + "'");
+}
+
+bool isExecutableFile(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    return !error && fs::is_regular_file(status) &&
+           (status.permissions() & fs::perms::owner_exec) != fs::perms::none;
+}
+
+/// The command, when argv[1] names one; returns the index of the first option.
+int readCommand(int argc, char** argv, Arguments& a) {
+    if (argc <= 1) return 1;
+    int first = 1;
+    const std::string command = argv[1];
+    for (const char* known : {"make-references", "submission", "batch", "merge", "rubric"})
+        if (command == known) a.command = command, first = 2;
+    // The instructor's commands compile or run the reference solutions.
+    if (!PATHLAB_HAS_SOLUTIONS && first == 2 && a.command != "merge" && a.command != "rubric")
+        throw InputError("grader " + a.command +
+                         " is the instructor's: it needs the reference "
+                         "solutions (solutions/), which the student release does not have; "
+                         "`make grade` grades your labs");
+    return first;
+}
+
+/// The options that set a flag.
+const std::map<std::string, bool Arguments::*>& flagOptions() {
+    static const std::map<std::string, bool Arguments::*> flags = {
+        {"--reveal-hidden", &Arguments::revealHidden},
+        {"--only-hidden", &Arguments::onlyHidden},
+        {"--keep-stale", &Arguments::keepStale},
+        {"--only-figures", &Arguments::onlyFigures},
+        {"--force", &Arguments::force},
+    };
+    return flags;
+}
+
+/// The options that take a text as it is (a path, a time, a name).
+const std::map<std::string, std::string Arguments::*>& textOptions() {
+    static const std::map<std::string, std::string Arguments::*> texts = {
+        {"--viewer", &Arguments::viewer},
+        {"--solution-viewer", &Arguments::solutionViewer},
+        {"--deadline", &Arguments::deadline},
+        {"--times", &Arguments::times},
+        {"--rubric", &Arguments::rubric},
+        {"--references", &Arguments::references},
+        {"--only-scene", &Arguments::onlyScene},
+        {"--json", &Arguments::json},
+        {"--junit", &Arguments::junit},
+        {"--gradescope", &Arguments::gradescope},
+        {"--html", &Arguments::html},
+        {"--report", &Arguments::report},
+        {"--out", &Arguments::out},
+        {"--kit", &Arguments::kit},
+        {"--reference-cache", &Arguments::referenceCache},
+        {"--timing-lock", &Arguments::timingLock},
+    };
+    return texts;
+}
+
+using Checked = std::function<void(const std::string& option, const std::string& value)>;
+
+/// The options whose value is checked before it is taken into `a`; --scenes also sets
+/// `scenesGiven`.
+std::map<std::string, Checked> checkedOptions(Arguments& a, bool& scenesGiven) {
+    return {
+        {"--lab",
+         [&](const std::string&, const std::string& name) {
+             const auto lab = labFromName(name);
+             if (!lab)
+                 throw InputError("option --lab expects one of " + labNames(", ") + ", got '" +
+                                  name + "'");
+             a.labs = {*lab};
+         }},
+        {"--scenes",
+         [&](const std::string&, const std::string& folder) {
+             a.scenesDir = folder;
+             scenesGiven = true;
+         }},
+        {"--only",
+         [&](const std::string&, const std::string& ids) {
+             if (ids.find_first_not_of(", ") == std::string::npos)
+                 throw InputError("option --only expects submission ids, like alice or alice,bob");
+             for (std::string_view id : splitAt(ids, ','))
+                 if (!id.empty()) a.only.emplace_back(id);
+         }},
+        {"--seed", [&](const std::string& o,
+                       const std::string& v) { a.seed = static_cast<uint64_t>(number(o, v, 0)); }},
+        {"--threads", [&](const std::string& o,
+                          const std::string& v) { a.threads = static_cast<int>(number(o, v, 0)); }},
+        {"--jobs", [&](const std::string& o,
+                       const std::string& v) { a.jobs = static_cast<int>(number(o, v, 1)); }},
+        {"--shard",
+         [&](const std::string& o, const std::string& text) {
+             const size_t slash = text.find('/');
+             if (slash == std::string::npos)
+                 throw InputError("option --shard expects K/N, got '" + text + "'");
+             a.shard = static_cast<int>(number(o, text.substr(0, slash), 0));
+             a.shards = static_cast<int>(number(o, text.substr(slash + 1), 1));
+             if (a.shard >= a.shards)
+                 throw InputError("option --shard: K must be below N in K/N, got '" + text + "'");
+         }},
+        {"--timing-cpus",
+         [&](const std::string& o, const std::string& v) { a.timingCpus = cpuList(o, v); }},
+        {"--work-cpus",
+         [&](const std::string& o, const std::string& v) { a.workCpus = cpuList(o, v); }},
+    };
+}
+
+/// Reads the options and inputs from argv[first] on into `a`, by what each option takes: a
+/// flag, a text, or a value to check.
+void readOptions(int argc, char** argv, int first, Arguments& a, bool& scenesGiven) {
+    const std::map<std::string, Checked> checked = checkedOptions(a, scenesGiven);
+    for (int i = first; i < argc; ++i) {
+        const std::string arg = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) throw InputError("option " + arg + " needs a value");
+            return argv[++i];
+        };
+        if (const auto flag = flagOptions().find(arg); flag != flagOptions().end())
+            a.*(flag->second) = true;
+        else if (const auto text = textOptions().find(arg); text != textOptions().end())
+            a.*(text->second) = value();
+        else if (const auto check = checked.find(arg); check != checked.end())
+            check->second(arg, value());
+        else if (arg == "--no-speed")
+            a.speed = false;
+        else if (arg == "--no-race-check")
+            a.raceCheck = false;
+        else if (arg == "--help" || arg == "-h")
+            a.command = "help";
+        else if (!arg.empty() && arg[0] == '-')
+            throw InputError("unknown option '" + arg + "' (grader --help lists the options)");
+        else if (a.command == "submission" || a.command == "batch" || a.command == "merge")
+            a.inputs.push_back(arg);
+        else
+            throw InputError("unexpected argument '" + arg +
+                             "' (grader --help lists the commands)");
+    }
+}
+
+/// The hidden scenes' folder: the default one unless --scenes names another or none; a folder
+/// named is checked now, before any grading starts.
+void settleHiddenScenes(Arguments& a, bool scenesGiven) {
+    if (!scenesGiven)
+        a.scenesDir = defaultHiddenScenesFolder();
+    else if (a.scenesDir == "none")
+        a.scenesDir.clear();
+    else if (!PATHLAB_HAS_SOLUTIONS)
+        throw InputError(
+            "option --scenes: a hidden scene's reference is measured from the reference "
+            "solutions, which the student release does not have");
+    else
+        hiddenScenePaths(a.scenesDir); // says now if the folder is wrong
+}
+
+/// Throws InputError when the command lacks what it needs (inputs, --out) or was given an
+/// option that is not its own.
+void requireWhatTheCommandNeeds(const Arguments& a) {
+    if (!a.only.empty() && a.command != "batch")
+        throw InputError("option --only is for grader batch");
+    if (a.command == "submission" && a.inputs.size() != 1)
+        throw InputError(
+            "grader submission expects one submission (a folder, .zip, .tar.gz or git repository)");
+    if ((a.command == "batch" || a.command == "merge") && a.inputs.empty())
+        throw InputError("grader " + a.command + " expects at least one folder");
+    if ((a.command == "submission" || a.command == "batch" || a.command == "merge") &&
+        a.out.empty())
+        throw InputError("grader " + a.command + " needs --out DIR");
+}
+
+/// The viewers: the one beside the grader unless named, checked to be programs before any
+/// render would fail on them.
+void settleViewers(Arguments& a) {
+    if (a.viewer.empty()) a.viewer = (thisProgram().parent_path() / "viewer").string();
+    if (a.solutionViewer.empty()) a.solutionViewer = a.viewer;
+    for (const std::string& v : {a.viewer, a.solutionViewer})
+        if (!isExecutableFile(v)) throw InputError("viewer '" + v + "' is not an executable file");
+}
+
+} // namespace
+
+Arguments parseArguments(int argc, char** argv) {
+    Arguments a;
+    a.rubric = std::string(PATHLAB_GRADER_DIR) + "/rubric.json";
+    a.references = std::string(PATHLAB_GRADER_DIR) + "/references";
+    const int first = readCommand(argc, argv, a);
+    bool scenesGiven = false;
+    readOptions(argc, argv, first, a, scenesGiven);
+    if (a.command == "help") return a;
+    settleHiddenScenes(a, scenesGiven);
+    if (a.command == "rubric") return a;
+    if (a.referenceCache.empty())
+        a.referenceCache = (thisProgram().parent_path() / "reference-cache").string();
+    requireWhatTheCommandNeeds(a);
+    settleViewers(a);
+    return a;
+}
+
+} // namespace pathlab::grader

@@ -1,0 +1,504 @@
+// grader submission / batch: submitted labs, graded in the sandbox (Linux only; batch_merge.cpp
+// merges the gradebooks of batch shards anywhere).
+//
+// A batch grades each submission in a child `grader submission` process of its own, so one
+// submission that breaks anything (the grader included) costs that submission only. Each writes
+// its result.json last and atomically; a restarted batch skips those that have one.
+//
+// Fair timing while other work goes on: the first core the grader may use is kept for timed
+// runs, taken by one grading at a time (an exclusive lock on /tmp/pathlab-timing-core-N.lock for
+// a lab's whole interleaved series, one thread per timed render, shared by every batch on the
+// machine); compiling and the correctness renders of every job share the other cores.
+#include "checks/grading_scenes.h"
+#include "checks/speed_check.h"
+#include "commands/batch_selection.h"
+#include "commands/commands.h"
+#include "commands/submission_grading.h"
+#include "isolation/time_limit.h"
+#include "reports/gradebook.h"
+#include "reports/lab_figures.h"
+#include "reports/submission_time.h"
+#include "similarity/class_similarity.h"
+
+#include "process/child_process.h"
+
+#include "pathlab/input_error.h"
+#include "pathlab/progress_bar.h"
+#include "pathlab/render_stats.h"
+#include "pathlab/this_process.h"
+#include "pathlab/whole_file.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sched.h>
+#include <unistd.h>
+
+namespace pathlab::grader {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+LabBuild labBuildOfThisGrader() {
+    return loadLabBuild((thisProgram().parent_path() / "lab_library_build.json").string());
+}
+
+/// The reference's start-up when the references were made; 0 if they hold none.
+double storedStartUpSeconds(const Arguments& a, const Rubric& rubric) {
+    try {
+        return loadLabFigures(a.references + "/lab_figures.json", rubric).startUpSeconds;
+    } catch (const InputError&) {
+        return 0;
+    }
+}
+
+void requireSandbox() {
+    const std::string reason = sandboxUnavailableReason();
+    if (!reason.empty()) throw InputError("the sandbox: " + reason);
+}
+
+/// The cores this process may use, in order.
+std::vector<int> allowedCpus() {
+    cpu_set_t set;
+    std::vector<int> cpus;
+    if (::sched_getaffinity(0, sizeof set, &set) == 0)
+        for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
+            if (CPU_ISSET(cpu, &set)) cpus.push_back(cpu);
+    return cpus;
+}
+
+std::string joinCpus(const std::vector<int>& cpus) {
+    std::string text;
+    for (int cpu : cpus) text += (text.empty() ? "" : ",") + std::to_string(cpu);
+    return text;
+}
+
+std::string timestamp() {
+    char text[32];
+    const std::time_t now = std::time(nullptr);
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S", std::localtime(&now));
+    return text;
+}
+
+/// The options a child `grader submission` shares with the batch.
+std::vector<std::string> sharedOptions(const Arguments& a) {
+    std::vector<std::string> options = {"--rubric",     a.rubric,
+                                        "--references", a.references,
+                                        "--seed",       std::to_string(a.seed),
+                                        "--scenes",     a.scenesDir.empty() ? "none" : a.scenesDir};
+    if (a.revealHidden) options.push_back("--reveal-hidden");
+    if (!a.speed) options.push_back("--no-speed");
+    if (!a.raceCheck) options.push_back("--no-race-check");
+    return options;
+}
+
+/// The most a submission can score under this rubric, as this batch grades (speed or not).
+double maxScoreNow(const Rubric& rubric, bool speed) {
+    double max = 0;
+    for (Lab lab : AllLabs) {
+        const LabPoints& p = rubric.forLab(lab).points;
+        max += p.correctness + p.noise + (speed ? p.speed : 0);
+    }
+    return max;
+}
+
+/// One lock per timing core for the whole machine: batches on one machine (two shards on one
+/// node, two classes) that time on the same core take turns, as the jobs of one batch do.
+std::string timingLockFor(const std::vector<int>& timingCpus) {
+    const std::string core = timingCpus.empty() ? "any" : std::to_string(timingCpus.front());
+    return (fs::temp_directory_path() / ("pathlab-timing-core-" + core + ".lock")).string();
+}
+
+/// What a batch's gradebook is written against; stored in OUT/batch.json for `grader merge`.
+/// `deadline` and `times` are the options', or those an earlier batch into OUT was given.
+GradingNow gradingNow(const Arguments& a, const Rubric& rubric, const std::string& deadline,
+                      const std::string& times) {
+    GradingNow now;
+    now.rubricHash = rubric.hash;
+    now.scenesHash = scenesHash(rubric, a.scenesDir);
+    now.maxScore = maxScoreNow(rubric, a.speed);
+    if (!deadline.empty()) {
+        now.deadline = parseTime(deadline);
+        if (!now.deadline)
+            throw InputError("option --deadline expects a time like 2026-12-01T23:59 (local), "
+                             "2026-12-01T23:59Z or 2026-12-01T23:59+01:00, got '" +
+                             deadline + "'");
+    }
+    if (!times.empty()) now.times = loadSubmissionTimes(times);
+    return now;
+}
+
+/// An earlier batch's setting in OUT/batch.json ("" if none).
+std::string earlierSetting(const std::string& out, const char* key) {
+    std::ifstream in(out + "/batch.json");
+    const nlohmann::json j = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+    return j.is_object() ? j.value(key, "") : "";
+}
+
+/// A child grading one submission.
+struct Job {
+    ChildProcess child;
+    Submission submission;
+    std::chrono::steady_clock::time_point start;
+};
+
+/// Starts `grader submission` (argv) for `s`, writing what it prints to `log`.
+Job startJob(const std::vector<std::string>& argv, const Submission& s, const std::string& log) {
+    ChildSetup setup;
+    setup.dieWithParent = true; // a killed batch leaves no grading behind
+    setup.outputFile = log;
+    return {ChildProcess(argv, setup), s, std::chrono::steady_clock::now()};
+}
+
+/// Before anyone is graded: the reference solutions, graded as a submission on every scene (speed
+/// left out: against themselves it measures only the machine), must get full marks, or the
+/// references, the scenes or the rubric are wrong and every grade would be too. Skipped while
+/// the grading it passed is unchanged (OUT/.canary/passed holds its fingerprint).
+void runCanary(const std::vector<std::string>& childBase, const std::string& solutions,
+               const std::string& out, const GradingNow& now, std::ofstream& log) {
+    const std::string folder = out + "/.canary";
+    const std::string fingerprint = now.rubricHash + " " + now.scenesHash + " " + PATHLAB_VERSION;
+    {
+        std::ifstream passed(folder + "/passed");
+        std::string previous;
+        if (passed && std::getline(passed, previous) && previous == fingerprint) return;
+    }
+    std::fprintf(stderr, "canary: grading the reference solutions on every scene ...\n");
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    std::vector<std::string> argv = childBase;
+    argv.insert(argv.end(), {solutions, "--out", folder, "--no-speed"});
+    const auto start = std::chrono::steady_clock::now();
+    Job job = startJob(argv, {solutions, "canary"}, folder + "/grader.log");
+    job.child.wait();
+    std::ifstream in(folder + "/result.json");
+    const nlohmann::json result = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!result.is_object())
+        throw InputError("canary: the reference solutions could not be graded (see " + folder +
+                         "/grader.log); nothing was graded");
+    const double score = result.value("score", 0.0), max = result.value("max_score", 0.0);
+    log << timestamp() << " canary: reference solutions " << score << " / " << max << ", "
+        << std::lround(seconds) << " s\n"
+        << std::flush;
+    if (score != max || max == 0) {
+        std::string why;
+        for (const auto& d : result.value("diagnoses", nlohmann::json::array()))
+            why += "\n  " + d.value("lab", "") + " " + d.value("check", "") + ": " +
+                   d.value("diagnosis", "");
+        char points[64];
+        std::snprintf(points, sizeof points, "%g / %g", score, max);
+        throw InputError(
+            "canary: the reference solutions score " + std::string(points) +
+            " on this grading, so its references, scenes or rubric are wrong; nothing was "
+            "graded. What failed:" +
+            why + "\n  (details: " + folder + "/index.html)");
+    }
+    writeFileAtomically(folder + "/passed", fingerprint + "\n");
+}
+
+/// The wall time since `start`, for the log and the last line.
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The ids, in order, as the gradebook and the similarity check name submissions.
+std::vector<std::string> idsOf(const std::vector<Submission>& submissions) {
+    std::vector<std::string> ids;
+    for (const Submission& s : submissions) ids.push_back(s.id);
+    return ids;
+}
+
+/// The deadline and the submission times (a CSV's path) a batch's gradebook is written against.
+struct DeadlineAndTimes {
+    std::string deadline, times;
+};
+
+/// A batch run again keeps the deadline and times it was given before, unless told others.
+DeadlineAndTimes deadlineAndTimes(const Arguments& a, const std::string& out) {
+    DeadlineAndTimes dates;
+    dates.deadline = a.deadline.empty() ? earlierSetting(out, "deadline") : a.deadline;
+    dates.times = a.times.empty() ? earlierSetting(out, "times") : fs::absolute(a.times).string();
+    if (a.deadline.empty() && !dates.deadline.empty())
+        std::fprintf(stderr, "deadline %s, as the batch before into %s (--deadline sets another)\n",
+                     dates.deadline.c_str(), out.c_str());
+    return dates;
+}
+
+/// A time for an id that is no submission is likely a typing error in the CSV (a shard, which
+/// sees only some of the ids, cannot tell).
+void noteTimesOfOthers(const GradingNow& grading, const std::vector<Submission>& submissions) {
+    for (const auto& [id, when] : grading.times)
+        if (!hasId(submissions, id))
+            std::fprintf(stderr,
+                         "note: the submission times name '%s', which is not a submission here\n",
+                         id.c_str());
+}
+
+/// The batch's first line in batch.log: what it grades, and against what.
+void logBatchStart(std::ofstream& log, const Arguments& a, size_t submissions,
+                   const GradingNow& grading) {
+    log << timestamp() << " batch of " << submissions << " submission(s), " << a.jobs << " job(s)"
+        << (a.shards > 1 ? ", shard " + std::to_string(a.shard) + "/" + std::to_string(a.shards)
+                         : "")
+        << ", rubric " << grading.rubricHash << ", scenes " << grading.scenesHash << "\n";
+}
+
+/// The cores of a batch, by what runs on them.
+struct Cores {
+    std::vector<int> timing, work;
+};
+
+/// The first core for timed runs, the rest for everything else.
+Cores splitCores(const std::vector<int>& cpus) {
+    Cores cores;
+    cores.timing = cpus.empty() ? std::vector<int>{} : std::vector<int>{cpus[0]};
+    cores.work = cpus.size() > 1 ? std::vector<int>(cpus.begin() + 1, cpus.end()) : cpus;
+    return cores;
+}
+
+/// Shared by every grading: the compiled kit, and the references of hidden scenes (kept with
+/// this batch's output, measured again when a scene's files change).
+struct SharedFiles {
+    std::string kit, referenceCache;
+};
+
+/// Whether the gradings run the race check: said once for the batch, on standard error and in
+/// its log, so that a grading told --no-race-check does not try again.
+bool batchRaceCheck(const Arguments& a, bool anyToGrade, const LabBuild& build,
+                    const std::vector<int>& workCpus, std::ofstream& log) {
+    if (!a.raceCheck || !anyToGrade) return false;
+    const RaceCheckRuntime runtime =
+        raceCheckRuntime(build, {workCpus, sandboxUserForThisProcess()});
+    const bool available = runtime.available();
+    std::fprintf(stderr, "race check: %s\n",
+                 available ? "each lab compiled with ThreadSanitizer and rendered with 2 threads"
+                           : ("skipped, no lab fails for it: " + runtime.unavailable).c_str());
+    log << timestamp() << " race check: " << (available ? "on" : "skipped: " + runtime.unavailable)
+        << "\n";
+    return available;
+}
+
+/// A child `grader submission`'s command line, but for the submission and its --out.
+std::vector<std::string> childCommand(const Arguments& a, bool raceCheck, const SharedFiles& shared,
+                                      const Cores& cores) {
+    std::vector<std::string> argv = {thisProgram().string(), "submission"};
+    std::vector<std::string> options = sharedOptions(a);
+    if (a.raceCheck && !raceCheck) options.push_back("--no-race-check");
+    argv.insert(argv.end(), options.begin(), options.end());
+    argv.insert(argv.end(), {"--kit", shared.kit, "--timing-lock", timingLockFor(cores.timing),
+                             "--timing-cpus", joinCpus(cores.timing), "--work-cpus",
+                             joinCpus(cores.work), "--viewer", a.viewer, "--solution-viewer",
+                             a.solutionViewer, "--reference-cache", shared.referenceCache});
+    return argv;
+}
+
+/// The hidden scenes' references, measured into the batch's cache before the first job, so that
+/// no job waits for them or measures them twice.
+void measureHiddenReferences(const Arguments& a, const Rubric& rubric,
+                             const std::string& referenceCache, const std::string& scratch) {
+    std::vector<std::string> notes;
+    const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
+    gradingScenes(rubric, {a.references, a.scenesDir, referenceCache, a.revealHidden}, solution,
+                  scratch, notes);
+}
+
+/// OUT/batch.json: what the batch's gradebook is written against, for `grader merge` and for
+/// the next batch into OUT.
+void writeBatchJson(const std::string& out, const GradingNow& grading,
+                    const DeadlineAndTimes& dates) {
+    writeFileAtomically(out + "/batch.json", nlohmann::json{{"rubric_hash", grading.rubricHash},
+                                                            {"scenes_hash", grading.scenesHash},
+                                                            {"max_score", grading.maxScore},
+                                                            {"deadline", dates.deadline},
+                                                            {"times", dates.times}}
+                                                     .dump(1) +
+                                                 "\n");
+}
+
+/// The gradebook's rows: each submission's stored result, pending while `queued` names it.
+std::vector<GradebookEntry> gradebookEntries(const std::string& out,
+                                             const std::vector<Submission>& submissions,
+                                             const std::vector<std::string>& queued) {
+    std::vector<GradebookEntry> list;
+    for (const Submission& s : submissions) {
+        list.push_back(readGradebookEntry(out, s.id, s.path));
+        list.back().pending = std::find(queued.begin(), queued.end(), s.id) != queued.end();
+    }
+    return list;
+}
+
+/// Starts grading `s` into OUT/submissions/ID; its earlier result goes first, since a job's
+/// result.json is the sign that it is done.
+Job startGrading(const std::vector<std::string>& childBase, const Submission& s,
+                 const std::string& out, std::ofstream& log) {
+    const std::string folder = out + "/submissions/" + s.id;
+    fs::remove(folder + "/result.json");
+    fs::create_directories(folder);
+    std::vector<std::string> argv = childBase;
+    argv.insert(argv.end(), {s.path, "--out", folder});
+    Job job = startJob(argv, s, folder + "/grader.log");
+    log << timestamp() << " start " << s.id << " (" << s.path << ")\n" << std::flush;
+    return job;
+}
+
+/// A job still running after far longer than any grading takes has hit a grader fault.
+void killOverdue(std::vector<Job>& running, std::chrono::steady_clock::time_point now) {
+    const double jobSeconds = 3600; // far beyond any grading: only a grader fault gets here
+    for (Job& j : running)
+        if (std::chrono::duration<double>(now - j.start).count() > jobSeconds)
+            j.child.kill(); // reaped on a later turn (nothing if it already has been)
+}
+
+/// A job's end in the batch's log: its status and score, or why it was not graded.
+void logJobEnd(std::ofstream& log, const Job& job, const GradebookEntry& entry, double seconds) {
+    log << timestamp() << " done " << job.submission.id << ": ";
+    if (entry.result.is_null())
+        log << "not graded, " << entry.problem;
+    else
+        log << entry.result.value("status", "") << ", " << entry.result.value("score", 0.0) << " / "
+            << entry.result.value("max_score", 0.0);
+    log << ", " << std::lround(seconds) << " s\n" << std::flush;
+}
+
+/// How a batch's jobs ended.
+struct JobCounts {
+    size_t done = 0, failed = 0; ///< failed: not graded (no result.json)
+};
+
+/// Grades `todo`, `jobs` at a time; after each job the gradebook is written again, those queued
+/// or being graded in it as pending (similarity waits until all are graded).
+JobCounts gradeInJobs(int jobs, const std::vector<std::string>& childBase,
+                      const std::vector<Submission>& todo,
+                      const std::vector<Submission>& submissions, const std::string& out,
+                      const GradingNow& grading, std::ofstream& log) {
+    std::vector<std::string> queued = idsOf(todo);
+    writeGradebook(out, gradebookEntries(out, submissions, queued), grading, std::nullopt);
+    ProgressBar progress("grading", "submissions");
+    std::vector<Job> running;
+    size_t next = 0;
+    JobCounts counts;
+    progress.update(0, static_cast<int>(todo.size()));
+    while (next < todo.size() || !running.empty()) {
+        while (next < todo.size() && static_cast<int>(running.size()) < jobs)
+            running.push_back(startGrading(childBase, todo[next++], out, log));
+        // The first job found to have ended, reaped; the others on later turns.
+        const auto job =
+            std::find_if(running.begin(), running.end(), [](Job& j) { return j.child.poll(); });
+        const auto now = std::chrono::steady_clock::now();
+        killOverdue(running, now);
+        if (job == running.end()) {
+            ::usleep(50000);
+            continue;
+        }
+        queued.erase(std::find(queued.begin(), queued.end(), job->submission.id));
+        const GradebookEntry entry =
+            readGradebookEntry(out, job->submission.id, job->submission.path);
+        ++counts.done;
+        if (entry.result.is_null()) ++counts.failed;
+        logJobEnd(log, *job, entry, std::chrono::duration<double>(now - job->start).count());
+        running.erase(job);
+        writeGradebook(out, gradebookEntries(out, submissions, queued), grading, std::nullopt);
+        progress.update(static_cast<int>(counts.done), static_cast<int>(todo.size()),
+                        counts.failed > 0 ? std::to_string(counts.failed) + " not graded" : "");
+    }
+    return counts;
+}
+
+} // namespace
+
+int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
+    requireSandbox();
+    fs::create_directories(a.out);
+    SubmissionGrader g;
+    g.build = labBuildOfThisGrader();
+    g.rubric = rubric;
+    g.workCpus = a.workCpus;
+    g.kit = a.kit.empty()
+                ? buildLabKit(g.build, a.out + "/kit", {a.workCpus, sandboxUserForThisProcess()})
+                : existingLabKit(a.kit);
+    // References of hidden scenes come from the solutions, linked into this build's viewer.
+    const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
+    std::vector<std::string> notes;
+    g.scenes = gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden},
+                             solution, scratch, notes);
+    g.scenesHash = scenesHash(rubric, a.scenesDir);
+    g.timing = {a.timingCpus, a.timingLock, a.timingCpus.empty() ? 0 : 1};
+    g.threads = a.workCpus.empty() ? a.threads : static_cast<int>(a.workCpus.size());
+    g.seedBase = a.seed;
+    g.measureSpeed = a.speed;
+    if (a.raceCheck) {
+        g.raceCheck = raceCheckRuntime(g.build, {a.workCpus, sandboxUserForThisProcess()});
+        if (!g.raceCheck.available())
+            std::fprintf(stderr, "race check skipped: %s\n", g.raceCheck.unavailable.c_str());
+    }
+    // The time limits, scaled to this machine's speed now: the solutions' start-up timed as it
+    // was when the references were made (outside the sandbox, on every core).
+    GraderSetup probe;
+    probe.rubric = rubric;
+    probe.scratch = scratch;
+    probe.threads = a.threads;
+    StartUpTimes startUps;
+    g.runSeconds =
+        scaledTimeLimit(rubric.secondsPerRun, speedSceneStartUpSeconds(probe, solution, startUps),
+                        storedStartUpSeconds(a, rubric));
+    if (g.runSeconds > rubric.secondsPerRun)
+        notes.push_back(timeLimitNote(rubric.secondsPerRun, g.runSeconds));
+    SubmissionOutcome outcome = gradeSubmission(g, a.inputs[0], a.out);
+    outcome.report.notes.insert(outcome.report.notes.begin(), notes.begin(), notes.end());
+    std::printf("%s: %s\n", outcome.id.c_str(), outcome.status.c_str());
+    std::fputs(terminalReport(outcome.report, false).c_str(), stdout);
+    writeReports(a, rubric, outcome.report);
+    return 0;
+}
+
+int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
+    requireSandbox();
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<Submission> submissions = listSubmissions(a);
+    requireKnownIds(a.only, submissions);
+    fs::create_directories(a.out + "/submissions");
+    const std::string out = fs::absolute(a.out).string();
+    const DeadlineAndTimes dates = deadlineAndTimes(a, out);
+    const GradingNow grading = gradingNow(a, rubric, dates.deadline, dates.times);
+    if (a.shards == 1) noteTimesOfOthers(grading, submissions);
+    std::ofstream log(out + "/batch.log", std::ios::app);
+    logBatchStart(log, a, submissions.size(), grading);
+    const Selection selection = selectSubmissions(a, submissions, out, grading);
+    const Cores cores = splitCores(allowedCpus());
+    const LabBuild build = labBuildOfThisGrader();
+    const SharedFiles shared{out + "/.kit", out + "/.references"};
+    const bool raceCheck = batchRaceCheck(a, !selection.todo.empty(), build, cores.work, log);
+    const std::vector<std::string> childBase = childCommand(a, raceCheck, shared, cores);
+    if (!selection.todo.empty()) {
+        std::fprintf(stderr, "compiling the lab kit (stubs, table, reference solutions) ...\n");
+        buildLabKit(build, shared.kit, {cores.work, sandboxUserForThisProcess()});
+        measureHiddenReferences(a, rubric, shared.referenceCache, scratch);
+        runCanary(childBase, build.solutions, out, grading, log);
+    }
+    sayWhatIsKept(selection); // once the scenes' references and the canary let the batch go on
+    // What this batch's gradebook is written against, for `grader merge`: only once the canary
+    // passed, so that a batch it stopped changes nothing.
+    writeBatchJson(out, grading, dates);
+    const JobCounts counts =
+        gradeInJobs(a.jobs, childBase, selection.todo, submissions, out, grading, log);
+    const std::vector<SimilarLabs> similar = similarSubmissions(out, idsOf(submissions));
+    writeGradebook(out, gradebookEntries(out, submissions, {}), grading, similar);
+    const double seconds = secondsSince(start);
+    log << timestamp() << " batch finished in " << seconds << " s\n";
+    std::printf(
+        "graded %zu submission(s) in %.0f s (%zu skipped, %zu not graded, %zu similar pair(s)): "
+        "%s/gradebook.csv, %s/lms.csv, %s/summary.html\n",
+        counts.done - counts.failed, seconds, submissions.size() - selection.todo.size(),
+        counts.failed, similar.size(), out.c_str(), out.c_str(), out.c_str());
+    return 0;
+}
+
+} // namespace pathlab::grader

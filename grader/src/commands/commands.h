@@ -1,0 +1,26 @@
+#pragma once
+/// The grader's commands; each returns the exit status.
+
+#include "checks/rubric.h"
+#include "commands/arguments.h"
+#include "reports/reports.h"
+
+#include <string>
+
+namespace pathlab::grader {
+
+/// Writes the reports the options ask for (--json, --junit, --gradescope, --html).
+void writeReports(const Arguments& a, const Rubric& rubric, const GradeReport& report);
+
+/// Grades the labs of this build (or of --viewer): exit 0 when every check passed, 1 if not.
+int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scratch);
+/// Measures grader/references/ (or --references) from the solutions.
+int makeReferences(const Arguments& a, const Rubric& rubric, const std::string& scratch);
+/// Grades one submission in the sandbox into --out: exit 0 when graded (whatever the score).
+int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::string& scratch);
+/// Grades a folder of submissions into --out; a submission that fails never stops it.
+int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratch);
+/// Merges the outputs of batch shards into one gradebook in --out.
+int mergeBatches(const Arguments& a);
+
+} // namespace pathlab::grader

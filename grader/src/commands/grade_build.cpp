@@ -1,0 +1,168 @@
+// grader (no command): the labs of this build, run directly, as a student runs it before
+// submitting; and make-references, which measures what they are compared with.
+#include "checks/expectation.h"
+#include "checks/grading_scenes.h"
+#include "checks/speed_check.h"
+#include "commands/commands.h"
+#include "commands/grade_lab.h"
+#include "isolation/time_limit.h"
+#include "reports/lab_figures.h"
+#include "reports/reports.h"
+
+#include "pathlab/input_error.h"
+#include "pathlab/progress_bar.h"
+#include "pathlab/render_stats.h"
+#include "pathlab/whole_file.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <unistd.h>
+
+namespace pathlab::grader {
+
+namespace {
+
+std::string labFiguresPath(const Arguments& a) { return a.references + "/lab_figures.json"; }
+
+/// The reference solutions' notebook figures and timed runs on this machine.
+void makeLabFigures(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
+    GraderSetup setup;
+    setup.solution = {a.solutionViewer, Implementation::Solution, {}, {}, {}};
+    setup.rubric = rubric;
+    setup.scratch = scratch;
+    setup.threads = a.threads;
+    LabFigures figures;
+    figures.machine = thisMachine(a.threads);
+    StartUpTimes startUps;
+    figures.startUpSeconds = speedSceneStartUpSeconds(setup, setup.solution, startUps);
+    {
+        ProgressBar bar("lab figures: timed runs", "labs");
+        int timed = 0;
+        for (Lab lab : AllLabs) {
+            figures.timedSamplesPerSecond[lab] =
+                timedSamplesPerSecond(setup, setup.solution, lab, startUps);
+            bar.update(++timed, static_cast<int>(AllLabs.size()));
+        }
+    }
+    std::fprintf(stderr, "lab figures: the notebook's renders ...\n");
+    figures.notebook = measureNotebook(setup.solution,
+                                       notebookEstimators({AllLabs.begin(), AllLabs.end()}, rubric),
+                                       rubric, a.threads, scratch);
+    for (const auto& [key, f] : figures.notebook)
+        if (!f.failure.empty())
+            throw std::runtime_error("the reference solution " + key + " failed: " + f.failure);
+    saveLabFigures(labFiguresPath(a), figures, rubric);
+    std::printf("wrote %s (%s)\n", labFiguresPath(a).c_str(), figures.machine.describe().c_str());
+}
+
+} // namespace
+
+int makeReferences(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
+    std::filesystem::create_directories(a.references);
+    if (a.onlyFigures) {
+        makeLabFigures(a, rubric, scratch);
+        return 0;
+    }
+    const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
+    if (a.onlyHidden) {
+        if (a.scenesDir.empty())
+            throw InputError(
+                "option --only-hidden: no hidden scenes (grader/hidden_scenes/ holds no .ecs; "
+                "or name a folder with --scenes DIR)");
+        std::vector<std::string> notes;
+        gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden},
+                      solution, scratch, notes);
+        std::printf("the hidden scenes' references are in %s\n", a.referenceCache.c_str());
+        return 0;
+    }
+    if (!a.onlyScene.empty() &&
+        std::find(rubric.scenes.begin(), rubric.scenes.end(), a.onlyScene) == rubric.scenes.end())
+        throw InputError("option --only-scene: '" + a.onlyScene +
+                         "' is not a scene of the rubric's "
+                         "correctness.scenes");
+    for (const std::string& scene : rubric.scenes) {
+        if (!a.onlyScene.empty() && scene != a.onlyScene) continue;
+        ProgressBar bar(scene, "renders");
+        const SceneReference ref = measureReference(
+            solution, std::string(PATHLAB_MODELS_DIR) + "/" + scene + ".ecs", rubric, 40, 8,
+            scratch, [&](int done, int total) { bar.update(done, total); });
+        saveReference(a.references, ref);
+        std::printf("wrote %s/%s.json\n", a.references.c_str(), scene.c_str());
+    }
+    if (a.onlyScene.empty()) makeLabFigures(a, rubric, scratch);
+    return 0;
+}
+
+void writeReports(const Arguments& a, const Rubric& rubric, const GradeReport& report) {
+    if (!a.json.empty()) writeFileAtomically(a.json, jsonReport(report));
+    if (!a.junit.empty()) writeFileAtomically(a.junit, junitReport(report));
+    if (!a.gradescope.empty())
+        writeFileAtomically(a.gradescope, gradescopeReport(report, rubric.hiddenScenesVisibility));
+    if (!a.html.empty()) writeHtmlReport(report, a.html);
+}
+
+int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
+    const auto start = std::chrono::steady_clock::now();
+    GraderSetup setup;
+    setup.student = {a.viewer, Implementation::Student, {}, {}, {}};
+    setup.solution = {a.solutionViewer, Implementation::Solution, {}, {}, {}};
+    setup.rubric = rubric;
+    setup.scratch = scratch;
+    setup.seedBase = a.seed;
+    setup.threads = a.threads;
+    setup.measureSpeed = a.speed && PATHLAB_HAS_SOLUTIONS;
+    GradeReport report;
+    std::optional<LabFigures> stored;
+    try {
+        stored = loadLabFigures(labFiguresPath(a), rubric);
+    } catch (const InputError& e) {
+        if (!setup.measureSpeed || !a.report.empty()) report.notes.push_back(e.what());
+    }
+    if (a.speed && !setup.measureSpeed) {
+        report.notes.push_back("speed is not checked: this build has no reference solutions to "
+                               "time your labs against (your instructor's grader does it)");
+        setup.timeWithoutSolutions = true;
+        if (stored) {
+            setup.storedSolutionSamplesPerSecond = stored->timedSamplesPerSecond;
+            report.ratiosReference = "the reference solutions on " + stored->machine.describe();
+        }
+    }
+    setup.scenes =
+        gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden},
+                      setup.solution, scratch, report.notes);
+    // The time limits, scaled to this machine's speed now: the reference's start-up where this
+    // build has the solutions, the student's own viewer's where it has not (the start-up is the
+    // scene and Embree's BVH, the same for any lab).
+    StartUpTimes startUps;
+    setup.runSeconds = scaledTimeLimit(
+        rubric.secondsPerRun,
+        speedSceneStartUpSeconds(setup, PATHLAB_HAS_SOLUTIONS ? setup.solution : setup.student,
+                                 startUps),
+        stored ? stored->startUpSeconds : 0);
+    if (setup.runSeconds > rubric.secondsPerRun)
+        report.notes.push_back(timeLimitNote(rubric.secondsPerRun, setup.runSeconds));
+    for (Lab lab : a.labs) {
+        std::fprintf(stderr, "grading %s ...\n", std::string(labName(lab)).c_str());
+        report.labs.push_back(gradeLab(setup, lab, startUps));
+    }
+    report.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fputs(terminalReport(report, ::isatty(STDOUT_FILENO)).c_str(), stdout);
+    writeReports(a, rubric, report);
+    if (!a.report.empty()) {
+        std::fprintf(stderr, "measuring the lab notebook's figures ...\n");
+        LabFigures yours;
+        yours.machine = thisMachine(a.threads);
+        yours.notebook = measureNotebook(setup.student, notebookEstimators(a.labs, rubric), rubric,
+                                         a.threads, scratch);
+        writeFileAtomically(a.report,
+                            labReport(report, rubric, yours, stored, observationsIn(a.report)));
+        std::printf("lab report: %s\n", a.report.c_str());
+    }
+    return report.score() == report.maxScore() ? 0 : 1;
+}
+
+} // namespace pathlab::grader

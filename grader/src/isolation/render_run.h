@@ -1,0 +1,86 @@
+#pragma once
+/// One render of one lab through a viewer process: the grader never runs lab code in its own
+/// process, so a crash, a hang or a runaway allocation costs one run, not the grading.
+
+#include "common/by_lab.h"
+#include "isolation/process_runner.h"
+#include "isolation/sandbox.h"
+
+#include "pathlab/lab_registry.h"
+#include "pathlab/ray_counters.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pathlab::grader {
+
+/// Whose labs a render runs, and how it is started.
+struct LabRunner {
+    std::string viewer; ///< the viewer binary
+    /// With the labs linked into `viewer`: which set (--solution or not).
+    Implementation implementation = Implementation::Student;
+    /// When set, `viewer` is the submission viewer, run in the sandbox with lab L compiled into
+    /// the shared library labLibraries[L] (grader batch, grader submission). A render loads the
+    /// library of the lab it renders and no other, so a lab file that hangs, crashes or exits
+    /// while it loads costs only its own lab.
+    ByLab<std::string> labLibraries;
+    SandboxPolicy sandbox; ///< for sandboxed runs
+    std::vector<int> cpus; ///< for direct runs: the cores to use (empty: any)
+
+    /// Any lab's library set: a submission that left a lab out has none for it, and must still
+    /// run in the sandbox.
+    bool sandboxed() const {
+        return std::any_of(labLibraries.begin(), labLibraries.end(),
+                           [](const std::string& library) { return !library.empty(); });
+    }
+    const std::string& libraryFor(Lab lab) const { return labLibraries[lab]; }
+};
+
+struct RenderRequest {
+    const LabRunner* runner = nullptr;
+    std::string scene; ///< .ecs path
+    Lab lab = Lab::Branching;
+    int width = 64, height = 64, spp = 16;
+    int maxDepth = 3;
+    float continueProb = 0.8f;
+    uint64_t seed = 0;
+    int seeds = 1; ///< images for seeds seed .. seed+seeds-1, in one process
+    int threads = 0;
+    std::string scratch;       ///< a folder for the images and stats
+    bool reverseTiles = false; ///< the viewer's --reverse-tiles
+};
+
+/// One seed's image, and where the viewer's --stats for it are. Those come from the lab's own
+/// process, which could write anything there: points are earned by the images and the wall
+/// clock alone. The ray counts explain (rays_per_sample.h), and can only cost a lab points: a
+/// roulette lab whose paths do not lengthen with continueProb fails (path_length.h).
+struct RenderedImage {
+    std::vector<float> rgb; ///< linear RGB, top row first
+    std::string statsFile;  ///< in the request's scratch folder, until the next render
+    RayCounters rays;       ///< the stats' ray counts: for explanations, never a score alone
+};
+
+/// RenderResult::failureKind of a render whose image holds NaN or infinite values.
+inline constexpr const char* NonfiniteRadianceFailure = "NaN or infinite radiance";
+
+struct RenderResult {
+    bool ok = false;
+    std::string failure;     ///< why not ok, in words for the student
+    std::string failureKind; ///< the same in a few words ("crashed", "time limit", ...)
+    ProcessOutcome process;
+    int width = 0, height = 0;
+    std::vector<RenderedImage> images; ///< one per seed, in order
+
+    const std::vector<float>& image() const { return images.front().rgb; }
+};
+
+/// Runs one viewer process for all the request's seeds; the limits hold for that process.
+RenderResult renderLab(const RenderRequest& request, const ProcessLimits& limits);
+
+/// Means of the image and of its tiles × tiles regions, per channel: region 0 is the whole
+/// image, then the tiles row by row. Returned flat: [region][channel].
+std::vector<double> regionMeans(const std::vector<float>& image, int width, int height, int tiles);
+
+} // namespace pathlab::grader

@@ -1,0 +1,101 @@
+#include "isolation/submission_intake.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+namespace pathlab::grader {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string unpackScript = std::string(PATHLAB_GRADER_DIR) + "/sandbox/unpack_submission.py";
+
+bool endsWith(const std::string& text, const std::string& end) {
+    return text.size() >= end.size() &&
+           text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+/// The archive extension of a submission file ("" for a folder), as the unpacker reads it.
+std::string archiveExtension(const std::string& path) {
+    std::string lower = fs::path(path).filename().string();
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (const char* extension : {".tar.gz", ".tgz", ".tar", ".zip"})
+        if (endsWith(lower, extension)) return extension;
+    return "";
+}
+
+} // namespace
+
+std::string submissionId(const std::string& submission) {
+    std::string name = fs::path(submission).lexically_normal().filename().string();
+    if (name.empty())
+        name = fs::path(submission).lexically_normal().parent_path().filename().string();
+    name = name.substr(0, name.size() - archiveExtension(name).size());
+    std::string id;
+    for (char c : name)
+        id += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' ? c
+                                                                                              : '_';
+    return id.empty() || id[0] == '.' ? "submission" + id : id;
+}
+
+Intake takeSubmission(const std::string& submission, const std::string& folder,
+                      const SandboxPolicy& policy) {
+    Intake intake;
+    std::error_code error;
+    const fs::file_status status = fs::symlink_status(submission, error);
+    if (error || !fs::exists(status)) {
+        intake.problems.push_back(submission + ": no such file or folder");
+        return intake;
+    }
+    if (fs::is_symlink(status)) {
+        intake.problems.push_back(
+            submission + ": a symbolic link; submissions are taken as they are, never followed");
+        return intake;
+    }
+    const std::string inside = "/in/submission" + archiveExtension(submission);
+    SandboxRun run;
+    run.command = {"/usr/bin/python3", "/pathlab/unpack_submission.py", inside,
+                   std::to_string(MaxLabFileBytes)};
+    run.files = {{fs::absolute(submission).string(), inside},
+                 {unpackScript, "/pathlab/unpack_submission.py"}};
+    run.collect = {"branching.cpp", "uniform.cpp", "importance.cpp", "roulette.cpp", "intake.json"};
+    run.scratchBytes = 16LL << 20;
+    const ProcessLimits limits{/*wallSeconds*/ 60, /*memoryBytes*/ 1LL << 30, /*cpuSeconds*/ 60,
+                               /*fileBytes*/ 4LL << 20, /*processes*/ 16};
+    const SandboxOutcome outcome = runInSandbox(run, limits, policy);
+    const auto report = outcome.files.find("intake.json");
+    if (!outcome.process.succeeded() || !outcome.problem.empty() || report == outcome.files.end()) {
+        intake.problems.push_back(
+            "the submission could not be read (" +
+            (outcome.problem.empty() ? outcome.process.describe() : outcome.problem) +
+            "): " + outcome.process.outputTail(2));
+        return intake;
+    }
+    try {
+        const nlohmann::json j = nlohmann::json::parse(report->second);
+        intake.kind = j.at("kind");
+        intake.problems = j.at("problems").get<std::vector<std::string>>();
+        intake.commit = j.value("commit", "");
+        if (j.contains("submitted_at") && j.at("submitted_at").is_number_integer())
+            intake.submittedAt = j.at("submitted_at").get<long long>();
+        intake.timeSource = j.value("time_source", "");
+        for (const auto& [name, where] : j.at("taken").items()) {
+            const auto file = outcome.files.find(name);
+            if (file == outcome.files.end() || file->second.size() > MaxLabFileBytes) continue;
+            std::ofstream(folder + "/" + name, std::ios::binary) << file->second;
+            fs::permissions(folder + "/" + name, fs::perms::owner_read | fs::perms::owner_write |
+                                                     fs::perms::group_read |
+                                                     fs::perms::others_read);
+            intake.taken[name] = where.get<std::string>();
+        }
+    } catch (const nlohmann::json::exception& e) {
+        intake.problems.push_back(std::string("the submission's report could not be read: ") +
+                                  e.what());
+    }
+    return intake;
+}
+
+} // namespace pathlab::grader

@@ -1,0 +1,263 @@
+#include "reports/gradebook.h"
+
+#include "checks/check_kind.h"
+#include "reports/histogram_svg.h"
+#include "reports/page_style.h"
+#include "reports/reports.h"
+#include "reports/submission_time.h"
+
+#include "pathlab/lab_registry.h"
+#include "pathlab/render_stats.h"
+#include "pathlab/whole_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+
+namespace pathlab::grader {
+
+namespace {
+
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+}
+
+std::string number(double value) {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+}
+
+/// When a result was submitted (seconds since 1970) and how that is known; 0 when unknown.
+std::pair<long long, std::string> submittedAt(const GradebookEntry& e, const GradingNow& now) {
+    if (const auto given = now.times.find(e.id); given != now.times.end())
+        return {given->second, "--times"};
+    if (e.result.is_null()) return {0, ""};
+    const nlohmann::json intake = e.result.value("intake", nlohmann::json::object());
+    return {intake.value("submitted_at", 0LL), intake.value("time_source", "")};
+}
+
+/// "yes", "no", or "" where there is no deadline or no time.
+std::string lateness(const GradebookEntry& e, const GradingNow& now) {
+    const long long at = submittedAt(e, now).first;
+    if (!now.deadline || at == 0) return "";
+    return at > *now.deadline ? "yes" : "no";
+}
+
+/// The total a gradebook may show: none for a result whose maximum is not today's.
+std::optional<double> shownTotal(const GradebookEntry& e, const GradingNow& now) {
+    if (e.result.is_null() || e.result.value("max_score", 0.0) != now.maxScore) return std::nullopt;
+    return e.result.value("score", 0.0);
+}
+
+std::string statusOf(const GradebookEntry& e, const GradingNow& now) {
+    if (e.pending) return "pending";
+    if (e.result.is_null()) return "not graded: " + e.problem;
+    std::string status = e.result.value("status", "");
+    if (const std::string stale = staleness(e.result, now); !stale.empty()) {
+        status = "stale: " + stale +
+                 "; grade it again: the batch run again without --keep-stale, or with --only " +
+                 e.id + " (" + status + ")";
+    }
+    return status;
+}
+
+/// The columns of the first gradebooks first, in their order (scripts read them by position),
+/// then a column per lab and check and what a registrar asks.
+std::string csv(const std::vector<GradebookEntry>& entries, const GradingNow& now) {
+    std::string text = "id";
+    for (Lab lab : AllLabs) text += "," + std::string(labName(lab));
+    text += ",total,max_total,status";
+    for (Lab lab : AllLabs)
+        for (CheckKind check : AllChecks)
+            text += "," + std::string(labName(lab)) + "_" + std::string(checkName(check));
+    text += ",missing_labs,submitted_at,time_source,late,commit,files_hash,rubric_hash\n";
+    for (const GradebookEntry& e : entries) {
+        const std::optional<double> total = shownTotal(e, now);
+        const nlohmann::json labs =
+            total ? e.result.value("labs", nlohmann::json::object()) : nlohmann::json::object();
+        auto labResult = [&](Lab lab) {
+            return labs.value(std::string(labName(lab)), nlohmann::json::object());
+        };
+        text += csvField(e.id);
+        for (Lab lab : AllLabs)
+            text += "," + (total ? number(labResult(lab).value("score", 0.0)) : "");
+        text += "," + (total ? number(*total) : "") + "," + number(now.maxScore) + "," +
+                csvField(statusOf(e, now));
+        for (Lab lab : AllLabs)
+            for (CheckKind check : AllChecks) {
+                const nlohmann::json c =
+                    labResult(lab)
+                        .value("checks", nlohmann::json::object())
+                        .value(std::string(checkName(check)), nlohmann::json());
+                text += "," + (c.is_object() && c.value("graded_here", true)
+                                   ? number(c.value("score", 0.0))
+                                   : "");
+            }
+        const nlohmann::json intake = e.result.is_null()
+                                          ? nlohmann::json::object()
+                                          : e.result.value("intake", nlohmann::json::object());
+        std::string missing;
+        if (!e.result.is_null())
+            for (const auto& lab : e.result.value("missing_labs", nlohmann::json::array()))
+                missing += (missing.empty() ? "" : " ") + lab.get<std::string>();
+        const auto [at, source] = submittedAt(e, now);
+        const nlohmann::json under = e.result.is_null()
+                                         ? nlohmann::json::object()
+                                         : e.result.value("graded_under", nlohmann::json::object());
+        text += "," + csvField(missing) + "," + (at ? isoTime(at) : "") + "," + csvField(source) +
+                "," + lateness(e, now) + "," + csvField(intake.value("commit", "")) + "," +
+                csvField(intake.value("files_hash", "")) + "," +
+                csvField(under.value("rubric_hash", "")) + "\n";
+    }
+    return text;
+}
+
+/// For an LMS's grade import (Canvas, Moodle): a row per submission with a total today's
+/// maximum; the id stands for the student's login (name submissions after it).
+std::string lmsCsv(const std::vector<GradebookEntry>& entries, const GradingNow& now) {
+    std::string text = "Student,SIS Login ID,PathLab (" + number(now.maxScore) + " points)\n";
+    for (const GradebookEntry& e : entries)
+        if (const std::optional<double> total = shownTotal(e, now))
+            text += csvField(e.id) + "," + csvField(e.id) + "," + number(*total) + "\n";
+    return text;
+}
+
+/// A bar chart of the totals in tenths of the maximum, as inline SVG.
+std::string histogram(const std::vector<GradebookEntry>& entries) {
+    std::array<int, 10> bins{};
+    for (const GradebookEntry& e : entries) {
+        if (e.result.is_null()) continue;
+        const double max = e.result.value("max_score", 0.0);
+        const double fraction = max > 0 ? e.result.value("score", 0.0) / max : 0;
+        ++bins[std::min(9, static_cast<int>(std::floor(fraction * 10)))];
+    }
+    return histogramSvg(bins, "total score, % of the maximum");
+}
+
+/// The pairs of submissions whose files of a lab are alike: a hint to look, never a verdict.
+std::string similarityTable(const std::optional<std::vector<SimilarLabs>>& pairs) {
+    if (!pairs) return "<p>Compared once every submission is graded.</p>\n";
+    const std::vector<SimilarLabs>& similar = *pairs;
+    if (similar.empty())
+        return "<p>No two submissions' files of a lab are alike beyond the threshold.</p>\n";
+    std::ostringstream html;
+    html << "<p>Files of the same lab whose normalised token streams (names, numbers and layout "
+            "ignored, the stub's code left out) are alike: a hint to read them side by side, never "
+            "a "
+            "grade. \"reference solutions\" is the kit's own.</p>\n<table><tr><th>similarity</th>"
+            "<th>lab</th><th>submission</th><th>submission</th></tr>\n";
+    for (const SimilarLabs& pair : similar)
+        html << "<tr><td>" << number(std::round(100 * pair.similarity)) << "%</td><td>"
+             << escapeXml(pair.lab) << "</td><td>" << escapeXml(pair.first) << "</td><td>"
+             << escapeXml(pair.second) << "</td></tr>\n";
+    html << "</table>\n";
+    return html.str();
+}
+
+std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const GradingNow& now,
+                        const std::optional<std::vector<SimilarLabs>>& similar) {
+    int graded = 0, pending = 0, stale = 0, late = 0;
+    double sum = 0;
+    std::map<std::pair<std::string, std::string>, int> diagnoses; // (lab, diagnosis) -> count
+    std::vector<GradebookEntry> entries; // those with a total out of today's maximum
+    for (const GradebookEntry& e : allEntries) {
+        pending += e.pending;
+        late += lateness(e, now) == "yes";
+        if (e.result.is_null()) continue;
+        stale += !staleness(e.result, now).empty();
+        if (!shownTotal(e, now)) continue;
+        entries.push_back(e);
+        ++graded;
+        const double max = e.result.value("max_score", 0.0);
+        sum += max > 0 ? e.result.value("score", 0.0) / max : 0;
+        for (const auto& d : e.result.value("diagnoses", nlohmann::json::array()))
+            if (d.value("check", "") == std::string(checkName(CheckKind::Correctness)) ||
+                d.value("diagnosis", "") == "too noisy" || d.value("diagnosis", "") == "too slow")
+                ++diagnoses[{d.value("lab", ""), d.value("diagnosis", "")}];
+    }
+    std::vector<std::pair<int, std::pair<std::string, std::string>>> common;
+    for (const auto& [key, count] : diagnoses) common.push_back({count, key});
+    std::sort(common.begin(), common.end(), [](const auto& a, const auto& b) {
+        return a.first != b.first ? a.first > b.first : a.second < b.second;
+    });
+
+    std::ostringstream html;
+    html << "<!doctype html><html><head><meta charset=\"utf-8\"><title>PathLab batch</title><style>"
+         << pageStyle() << "</style></head><body>\n"
+         << "<h1>PathLab batch: " << graded << " of " << allEntries.size()
+         << " submissions graded</h1>\n";
+    if (graded > 0)
+        html << "<p>Mean total: " << number(std::round(1000 * sum / graded) / 10)
+             << "% of the maximum (" << number(now.maxScore) << " points).</p>\n";
+    if (pending + stale + late > 0)
+        html << "<p>" << pending << " pending, " << stale
+             << " stale (graded under another rubric or other "
+             << "scenes), " << late << " late.</p>\n";
+    html << "<h2>Scores</h2>\n"
+         << histogram(entries) << "<h2>Most common diagnoses</h2>\n"
+         << "<table><tr><th>submissions</th><th>lab</th><th>diagnosis</th></tr>\n";
+    for (const auto& [count, key] : common)
+        html << "<tr><td>" << count << "</td><td>" << escapeXml(key.first) << "</td><td>"
+             << escapeXml(key.second) << "</td></tr>\n";
+    html << "</table>\n<h2>Similar submissions</h2>\n"
+         << similarityTable(similar)
+         << "<h2>Submissions</h2>\n<table><tr><th>id</th><th>score</th><th>late</th><th>status</"
+            "th></tr>\n";
+    for (const GradebookEntry& e : allEntries) {
+        const std::string link = "submissions/" + e.id + "/index.html";
+        const std::optional<double> total = shownTotal(e, now);
+        html << "<tr><td>"
+             << (e.result.is_null()
+                     ? escapeXml(e.id)
+                     : "<a href=\"" + escapeXml(link) + "\">" + escapeXml(e.id) + "</a>")
+             << "</td><td>" << (total ? number(*total) + " / " + number(now.maxScore) : "")
+             << "</td><td>" << lateness(e, now) << "</td><td>" << escapeXml(statusOf(e, now))
+             << "</td></tr>\n";
+    }
+    html << "</table></body></html>\n";
+    return html.str();
+}
+
+} // namespace
+
+GradebookEntry readGradebookEntry(const std::string& out, const std::string& id,
+                                  const std::string& submission) {
+    GradebookEntry entry{id, submission, nullptr, ""};
+    std::ifstream in(out + "/submissions/" + id + "/result.json");
+    if (!in) {
+        entry.problem = "no result (see submissions/" + id + "/grader.log)";
+        return entry;
+    }
+    try {
+        entry.result = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::exception& e) {
+        entry.problem = std::string("its result.json is unreadable: ") + e.what();
+    }
+    return entry;
+}
+
+std::string staleness(const nlohmann::json& result, const GradingNow& now) {
+    const nlohmann::json under = result.value("graded_under", nlohmann::json::object());
+    if (under.value("rubric_hash", "") != now.rubricHash) return "graded under another rubric";
+    if (under.value("scenes_hash", "") != now.scenesHash) return "graded on other scenes";
+    if (result.value("max_score", 0.0) != now.maxScore)
+        return "graded out of " + number(result.value("max_score", 0.0)) + ", not " +
+               number(now.maxScore);
+    return "";
+}
+
+void writeGradebook(const std::string& out, const std::vector<GradebookEntry>& entries,
+                    const GradingNow& now, const std::optional<std::vector<SimilarLabs>>& similar) {
+    writeFileAtomically(out + "/gradebook.csv", csv(entries, now));
+    writeFileAtomically(out + "/lms.csv", lmsCsv(entries, now));
+    writeFileAtomically(out + "/summary.html", summaryPage(entries, now, similar));
+}
+
+} // namespace pathlab::grader

@@ -1,0 +1,208 @@
+#include "reports/lab_figures.h"
+
+#include "pathlab/input_error.h"
+#include "pathlab/render_stats.h"
+#include "pathlab/whole_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <thread>
+
+namespace pathlab::grader {
+
+namespace {
+
+/// The value of `key` ("model name", "PRETTY_NAME") in a Linux system file, or "".
+std::string systemValue(const char* file, const std::string& key, char separator) {
+    std::ifstream in(file);
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind(key, 0) != 0) continue;
+        std::string value = line.substr(line.find(separator) + 1);
+        value.erase(0, value.find_first_not_of(" \t\""));
+        value.erase(value.find_last_not_of(" \t\"") + 1);
+        return value;
+    }
+    return "";
+}
+
+std::string today() {
+    char date[32];
+    const std::time_t now = std::time(nullptr);
+    std::strftime(date, sizeof date, "%Y-%m-%d", std::localtime(&now));
+    return date;
+}
+
+nlohmann::json machineJson(const Machine& m) {
+    return {{"cpu", m.cpu},
+            {"system", m.system},
+            {"cores", m.cores},
+            {"threads", m.threads},
+            {"load_average", m.loadAverage},
+            {"date", m.date},
+            {"kit_version", m.kitVersion}};
+}
+
+} // namespace
+
+std::vector<NotebookEstimator> notebookEstimators(const std::vector<Lab>& labs,
+                                                  const Rubric& rubric) {
+    std::vector<NotebookEstimator> rows;
+    // Roulette's rows, one per continueProb, are labelled below.
+    const ByLab<const char*> labels = {"branching (lab 1)", "uniform pick (lab 2)",
+                                       "importance pick (lab 3)", nullptr};
+    for (Lab lab : labs) {
+        if (lab != Lab::Roulette) {
+            rows.push_back({std::string(labName(lab)), labels[lab], lab, 0.1f});
+            continue;
+        }
+        rows.push_back({"roulette", "roulette, continueProb 0.1 (lab 4's default)", lab, 0.1f});
+        char label[96];
+        std::snprintf(label, sizeof label, "roulette, continueProb %g (as graded)",
+                      rubric.continueProb);
+        rows.push_back({"roulette_graded", label, lab, rubric.continueProb});
+    }
+    return rows;
+}
+
+std::string Machine::describe() const {
+    char text[512];
+    std::snprintf(text, sizeof text, "%s (%d cores, %d threads), %s, load %.1f, %s, PathLab %s",
+                  cpu.c_str(), cores, threads, system.c_str(), loadAverage, date.c_str(),
+                  kitVersion.c_str());
+    return text;
+}
+
+Machine thisMachine(int threads) {
+    Machine m;
+    m.cpu = systemValue("/proc/cpuinfo", "model name", ':');
+    if (m.cpu.empty()) m.cpu = "an unknown processor";
+    m.system = systemValue("/etc/os-release", "PRETTY_NAME", '=');
+    if (m.system.empty()) m.system = "an unknown system";
+    m.cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    m.threads = threads > 0 ? threads : m.cores;
+    double load[1] = {0};
+    if (::getloadavg(load, 1) == 1) m.loadAverage = load[0];
+    m.date = today();
+    m.kitVersion = PATHLAB_VERSION;
+    return m;
+}
+
+std::map<std::string, EstimatorFigures> measureNotebook(const LabRunner& runner,
+                                                        const std::vector<NotebookEstimator>& rows,
+                                                        const Rubric& rubric, int threads,
+                                                        const std::string& scratch) {
+    const std::string scene = std::string(PATHLAB_MODELS_DIR) + "/" + rubric.noiseScene + ".ecs";
+    // Longer than a grading render: 64 spp of 512×512 is 1000 times the pixels of one.
+    const ProcessLimits limits{rubric.secondsPerRun * 4, rubric.memoryBytes};
+    std::map<std::string, EstimatorFigures> figures;
+    for (const NotebookEstimator& row : rows) {
+        // Seed 0, the viewer's default: the command a student types gives these very numbers.
+        const RenderRequest request{&runner,
+                                    scene,
+                                    row.lab,
+                                    NotebookSize,
+                                    NotebookSize,
+                                    NotebookSpp,
+                                    rubric.maxDepth,
+                                    row.continueProb,
+                                    0,
+                                    1,
+                                    threads,
+                                    scratch};
+        const RenderResult result = renderLab(request, limits);
+        EstimatorFigures& f = figures[row.key];
+        if (!result.ok) {
+            f.failure = result.failureKind;
+            continue;
+        }
+        try {
+            const RenderStats s = readRenderStats(result.images.front().statsFile);
+            f.samplesPerSecond = s.samplesPerSecond();
+            f.framesPerSecond = s.framesPerSecond;
+            f.noise = s.noise;
+            f.efficiency = s.efficiency();
+            f.raysPerSample = static_cast<double>(s.rays.total()) /
+                              (static_cast<double>(s.spp) * s.width * s.height);
+        } catch (const InputError& e) {
+            f.failure = "unreadable stats";
+        }
+    }
+    return figures;
+}
+
+void saveLabFigures(const std::string& path, const LabFigures& figures, const Rubric& rubric) {
+    nlohmann::json notebook = nlohmann::json::object();
+    for (const auto& [key, f] : figures.notebook)
+        notebook[key] = {{"samples_per_second", f.samplesPerSecond},
+                         {"frames_per_second", f.framesPerSecond},
+                         {"noise", f.noise},
+                         {"efficiency", f.efficiency},
+                         {"rays_per_sample", f.raysPerSample}};
+    nlohmann::json timed = nlohmann::json::object(), timedSpp = nlohmann::json::object();
+    for (Lab lab : AllLabs) {
+        timed[std::string(labName(lab))] = figures.timedSamplesPerSecond[lab];
+        timedSpp[std::string(labName(lab))] = rubric.forLab(lab).speedSpp;
+    }
+    const nlohmann::json j = {
+        {"made_by", "grader make-references"},
+        {"about", "the reference solutions' lab-notebook figures (handouts/00-setup.md) and "
+                  "their median samples/s in the grader's timed runs, on the machine named; "
+                  "compare ratios between labs with these, not absolute numbers"},
+        {"machine", machineJson(figures.machine)},
+        {"notebook",
+         {{"scene", rubric.noiseScene},
+          {"width", NotebookSize},
+          {"height", NotebookSize},
+          {"spp", NotebookSpp},
+          {"max_depth", rubric.maxDepth},
+          {"graded_continue_prob", rubric.continueProb},
+          {"estimators", notebook}}},
+        {"timed_runs",
+         {{"scene", rubric.speedScene},
+          {"width", rubric.speedWidth},
+          {"height", rubric.speedHeight},
+          {"spp", timedSpp},
+          {"runs", rubric.speedRuns},
+          {"samples_per_second", timed},
+          {"start_up_seconds", figures.startUpSeconds}}}};
+    writeFileAtomically(path, j.dump(1) + "\n");
+}
+
+LabFigures loadLabFigures(const std::string& path, const Rubric& rubric) {
+    std::ifstream in(path);
+    if (!in)
+        throw InputError(path +
+                         ": no stored reference figures (grader make-references makes them)");
+    LabFigures figures;
+    try {
+        const nlohmann::json j = nlohmann::json::parse(in);
+        const nlohmann::json& m = j.at("machine");
+        figures.machine = {m.at("cpu"),   m.at("system"),  m.at("date"),        m.at("kit_version"),
+                           m.at("cores"), m.at("threads"), m.at("load_average")};
+        for (const auto& [key, f] : j.at("notebook").at("estimators").items())
+            figures.notebook[key] = {
+                f.at("samples_per_second"), f.at("frames_per_second"), f.at("noise"),
+                f.at("efficiency"),         f.at("rays_per_sample"),   ""};
+        const nlohmann::json& t = j.at("timed_runs");
+        const bool sameRuns = t.at("scene") == rubric.speedScene &&
+                              t.at("width") == rubric.speedWidth &&
+                              t.at("height") == rubric.speedHeight;
+        for (Lab lab : AllLabs) {
+            const std::string name(labName(lab));
+            if (sameRuns && t.at("spp").at(name) == rubric.forLab(lab).speedSpp)
+                figures.timedSamplesPerSecond[lab] = t.at("samples_per_second").at(name);
+        }
+        if (t.at("scene") == rubric.speedScene)
+            figures.startUpSeconds = t.value("start_up_seconds", 0.0);
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(path + ": " + e.what());
+    }
+    return figures;
+}
+
+} // namespace pathlab::grader

@@ -1,0 +1,77 @@
+#pragma once
+/// The figures a student writes in the lab notebook (handouts/00-setup.md): each estimator's
+/// frame rate, noise and efficiency on the labs' scene at 512×512 after 64 samples per pixel,
+/// from the viewer's --stats of a headless render (the same figures its panel shows).
+/// `grader --report` measures the student's labs; `grader make-references` stores the reference
+/// solutions' in grader/references/lab_figures.json, with the machine they were measured on,
+/// so that a student without the solutions compares ratios with the reference's.
+
+#include "checks/rubric.h"
+#include "common/by_lab.h"
+#include "isolation/render_run.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace pathlab::grader {
+
+/// One row of the notebook: a lab at one continueProb.
+struct NotebookEstimator {
+    std::string key;   ///< "branching", "uniform", "importance", "roulette", "roulette_graded"
+    std::string label; ///< for tables: "roulette, continueProb 0.8 (as graded)"
+    Lab lab;
+    float continueProb;
+};
+
+/// The notebook's rows for `labs` in order: lab 4 twice, at its default continueProb 0.1 and at
+/// the rubric's (graded) one.
+std::vector<NotebookEstimator> notebookEstimators(const std::vector<Lab>& labs,
+                                                  const Rubric& rubric);
+
+/// The render a notebook figure comes from.
+constexpr int NotebookSize = 512, NotebookSpp = 64;
+
+struct EstimatorFigures {
+    double samplesPerSecond = 0, framesPerSecond = 0, noise = 0, efficiency = 0;
+    double raysPerSample = 0;
+    std::string failure; ///< why it could not be measured, in words; "" when measured
+};
+
+/// Where figures were measured.
+struct Machine {
+    std::string cpu, system, date, kitVersion;
+    int cores = 0, threads = 0;
+    double loadAverage = 0; ///< over the minute before the measurement started
+
+    /// "Intel Xeon ... (2 cores, 2 threads), Debian GNU/Linux 12, load 0.3, 2026-12-01, PathLab
+    /// 0.1.0"
+    std::string describe() const;
+};
+Machine thisMachine(int threads);
+
+struct LabFigures {
+    Machine machine;
+    std::map<std::string, EstimatorFigures> notebook; ///< by NotebookEstimator::key
+    /// The grader's timed runs (the speed check's renders, rubric "speed"): median samples/s by
+    /// lab, 0 where not measured. For the reference solutions these stand in for timing them
+    /// next to the student's labs where the solutions are not part of the build.
+    ByLab<double> timedSamplesPerSecond;
+    /// The start-up of a render on the speed scene (speedSceneStartUpSeconds), 0 where not
+    /// measured: the yardstick of how much slower a machine runs when grading (time_limit.h).
+    double startUpSeconds = 0;
+};
+
+/// Renders the notebook's rows with `runner`'s labs on the rubric's noise scene.
+std::map<std::string, EstimatorFigures> measureNotebook(const LabRunner& runner,
+                                                        const std::vector<NotebookEstimator>& rows,
+                                                        const Rubric& rubric, int threads,
+                                                        const std::string& scratch);
+
+/// grader/references/lab_figures.json. Atomic.
+void saveLabFigures(const std::string& path, const LabFigures& figures, const Rubric& rubric);
+/// Throws InputError when missing, unreadable, or measured for other timed runs than the
+/// rubric's (then timedSamplesPerSecond would not compare).
+LabFigures loadLabFigures(const std::string& path, const Rubric& rubric);
+
+} // namespace pathlab::grader

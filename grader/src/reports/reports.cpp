@@ -1,0 +1,333 @@
+#include "reports/reports.h"
+
+#include "reports/page_style.h"
+
+#include "pathlab/false_colour.h"
+#include "pathlab/image_io.h"
+#include "pathlab/render_stats.h"
+#include "pathlab/whole_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace pathlab::grader {
+
+std::string escapeXml(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
+double GradeReport::score() const {
+    double s = 0;
+    for (const LabGrade& l : labs) s += l.score();
+    return s;
+}
+
+double GradeReport::maxScore() const {
+    double s = 0;
+    for (const LabGrade& l : labs) s += l.maxScore();
+    return s;
+}
+
+double GradeReport::pointsNotGradedHere() const {
+    double s = 0;
+    for (const LabGrade& l : labs) s += l.pointsNotGradedHere();
+    return s;
+}
+
+namespace {
+
+/// "8/8", or "8/8 (+2 speed: graded by the instructor)" where a check is not graded here.
+std::string scoreText(double score, double maxScore, double notGradedHere) {
+    char text[128];
+    if (notGradedHere > 0)
+        std::snprintf(text, sizeof text, "%g/%g (+%g speed: graded by the instructor)", score,
+                      maxScore, notGradedHere);
+    else
+        std::snprintf(text, sizeof text, "%g/%g", score, maxScore);
+    return text;
+}
+
+/// A check's summary and details; with the hidden scenes' pass or fail unless `withHidden` is
+/// false (Gradescope shows those in a test of their own).
+std::string checkText(const CheckResult& c, bool withHidden = true) {
+    std::string text = c.summary;
+    for (const std::string& d : c.details) text += "\n  " + d;
+    if (!c.hiddenSceneDetails.empty())
+        text += withHidden ? "" : "\n  hidden scenes: in the test \"hidden scenes\" of this lab";
+    for (const std::string& d : c.hiddenSceneDetails)
+        if (withHidden) text += "\n  " + d;
+    return text;
+}
+
+std::string base64(const std::string& bytes) {
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    size_t i = 0;
+    for (; i + 2 < bytes.size(); i += 3) {
+        const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
+                           (static_cast<unsigned char>(bytes[i + 1]) << 8) |
+                           static_cast<unsigned char>(bytes[i + 2]);
+        for (int k = 3; k >= 0; --k) out += table[(v >> (6 * k)) & 63];
+    }
+    if (i < bytes.size()) {
+        unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
+        if (i + 1 < bytes.size()) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+        out += table[(v >> 18) & 63];
+        out += table[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
+        out += '=';
+    }
+    return out;
+}
+
+} // namespace
+
+std::vector<LabRatio> labRatios(const GradeReport& report) {
+    const LabGrade* branching = nullptr;
+    for (const LabGrade& l : report.labs)
+        if (l.lab == Lab::Branching) branching = &l;
+    std::vector<LabRatio> ratios;
+    if (!branching || !(branching->studentSamplesPerSecond > 0)) return ratios;
+    for (const LabGrade& l : report.labs) {
+        if (l.lab == Lab::Branching || !(l.studentSamplesPerSecond > 0)) continue;
+        const bool referenceKnown =
+            l.solutionSamplesPerSecond > 0 && branching->solutionSamplesPerSecond > 0;
+        ratios.push_back({std::string(labName(l.lab)) + "/branching",
+                          l.studentSamplesPerSecond / branching->studentSamplesPerSecond,
+                          referenceKnown
+                              ? l.solutionSamplesPerSecond / branching->solutionSamplesPerSecond
+                              : 0});
+    }
+    return ratios;
+}
+
+std::string terminalReport(const GradeReport& report, bool colour, bool withHidden) {
+    const char* green = colour ? "\033[32m" : "";
+    const char* red = colour ? "\033[31m" : "";
+    const char* reset = colour ? "\033[0m" : "";
+    std::ostringstream out;
+    char line[512];
+    // A column per check, 13 wide as its cells; the lab's 12.
+    out << std::left << std::setw(12) << "lab";
+    for (CheckKind check : AllChecks) out << std::setw(13) << checkName(check);
+    out << "score\n" << std::right;
+    for (const LabGrade& lab : report.labs) {
+        out << std::string(labName(lab.lab)) << std::string(12 - labName(lab.lab).size(), ' ');
+        for (const CheckResult& c : lab.checks) {
+            if (c.gradedHere)
+                std::snprintf(line, sizeof line, "%s %g/%g", c.passed ? "pass" : "FAIL", c.score,
+                              c.maxScore);
+            else
+                std::snprintf(line, sizeof line, "(+%g)", c.maxScore);
+            std::string cell = line;
+            cell.resize(std::max<size_t>(cell.size() + 1, 13), ' ');
+            out << (!c.gradedHere ? "" : c.passed ? green : red) << cell << reset;
+        }
+        out << scoreText(lab.score(), lab.maxScore(), lab.pointsNotGradedHere()) << "\n";
+    }
+    out << "total " << scoreText(report.score(), report.maxScore(), report.pointsNotGradedHere());
+    std::snprintf(line, sizeof line, " in %.0f s\n", report.seconds);
+    out << line;
+    for (const LabGrade& lab : report.labs)
+        for (const CheckResult& c : lab.checks)
+            out << "\n"
+                << labName(lab.lab) << " " << c.name() << ": "
+                << (c.passed || !c.gradedHere ? "" : red) << checkText(c, withHidden) << reset;
+    out << "\n";
+    const auto ratios = labRatios(report);
+    if (!ratios.empty()) {
+        out << "\nspeed ratios between labs: samples/s in the grader's timed runs (roulette as "
+               "graded) ÷ branching's\n"
+            << "                              yours   reference\n";
+        for (const LabRatio& r : ratios) {
+            std::snprintf(line, sizeof line, "  %-26s %6.2f   ", r.name.c_str(), r.student);
+            out << line;
+            if (r.reference > 0)
+                std::snprintf(line, sizeof line, "%6.2f\n", r.reference);
+            else
+                std::snprintf(line, sizeof line, "%6s\n", "-");
+            out << line;
+        }
+        out << "  reference: "
+            << (report.ratiosReference.empty()
+                    ? "the reference solutions, timed now beside your labs"
+                    : report.ratiosReference)
+            << "\n  (compare the ratios, not the samples/s: those depend on the machine; on a busy "
+               "machine they vary by tens of percent from run to run)\n";
+    }
+    for (const std::string& note : report.notes) out << "note: " << note << "\n";
+    return out.str();
+}
+
+std::string jsonReport(const GradeReport& report) {
+    nlohmann::json labs = nlohmann::json::array();
+    for (const LabGrade& lab : report.labs) {
+        nlohmann::json checks = nlohmann::json::array();
+        for (const CheckResult& c : lab.checks)
+            checks.push_back({{"name", c.name()},
+                              {"score", c.score},
+                              {"max_score", c.maxScore},
+                              {"passed", c.passed},
+                              {"graded_here", c.gradedHere},
+                              {"summary", c.summary},
+                              {"details", c.details},
+                              {"hidden_scenes", c.hiddenSceneDetails}});
+        auto rays = [](const RaysPerSample& r) {
+            return nlohmann::json{{"camera", r.camera}, {"bounce", r.bounce}, {"shadow", r.shadow}};
+        };
+        labs.push_back(
+            {{"lab", labName(lab.lab)},
+             {"score", lab.score()},
+             {"max_score", lab.maxScore()},
+             {"checks", checks},
+             {"samples_per_second",
+              {{"student", lab.studentSamplesPerSecond},
+               {"solution", lab.solutionSamplesPerSecond}}},
+             {"rays_per_sample",
+              {{"student", rays(lab.studentRays)}, {"solution", rays(lab.solutionRays)}}},
+             {"variance_per_sample",
+              {{"student", lab.studentVariance}, {"solution", lab.solutionVariance}}},
+             {"efficiency_ratio", lab.efficiencyRatio}});
+    }
+    nlohmann::json ratios = nlohmann::json::object();
+    for (const LabRatio& r : labRatios(report))
+        ratios[r.name] = {{"student", r.student}, {"reference", r.reference}};
+    const nlohmann::json j = {
+        {"kit_version", PATHLAB_VERSION}, {"score", report.score()},
+        {"max_score", report.maxScore()}, {"points_not_graded_here", report.pointsNotGradedHere()},
+        {"seconds", report.seconds},      {"labs", labs},
+        {"speed_ratios", ratios},         {"notes", report.notes}};
+    return j.dump(2) + "\n";
+}
+
+std::string junitReport(const GradeReport& report) {
+    int tests = 0, failures = 0;
+    for (const LabGrade& lab : report.labs)
+        for (const CheckResult& c : lab.checks) ++tests, failures += c.gradedHere && !c.passed;
+    std::ostringstream out;
+    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        << "<testsuites tests=\"" << tests << "\" failures=\"" << failures << "\" time=\""
+        << report.seconds << "\">\n"
+        << "  <testsuite name=\"pathlab-grader\" tests=\"" << tests << "\" failures=\"" << failures
+        << "\">\n";
+    for (const LabGrade& lab : report.labs) {
+        for (const CheckResult& c : lab.checks) {
+            out << "    <testcase classname=\"" << labName(lab.lab) << "\" name=\""
+                << escapeXml(c.name()) << "\">\n";
+            if (!c.gradedHere)
+                out << "      <skipped message=\"" << escapeXml(c.summary) << "\"/>\n";
+            else if (!c.passed)
+                out << "      <failure message=\"" << escapeXml(c.summary) << "\">"
+                    << escapeXml(checkText(c)) << "</failure>\n";
+            else
+                out << "      <system-out>" << escapeXml(checkText(c)) << "</system-out>\n";
+            out << "    </testcase>\n";
+        }
+    }
+    out << "  </testsuite>\n</testsuites>\n";
+    return out.str();
+}
+
+std::string gradescopeReport(const GradeReport& report, const std::string& hiddenVisibility) {
+    nlohmann::json tests = nlohmann::json::array();
+    for (const LabGrade& lab : report.labs) {
+        for (const CheckResult& c : lab.checks)
+            if (c.gradedHere)
+                tests.push_back({{"name", std::string(labName(lab.lab)) + ": " + c.name()},
+                                 {"score", c.score},
+                                 {"max_score", c.maxScore},
+                                 {"status", c.passed ? "passed" : "failed"},
+                                 {"output", checkText(c, false)},
+                                 {"visibility", "visible"}});
+        // The hidden scenes' verdicts, without points of their own (they are in correctness's),
+        // shown when the instructor's rubric says.
+        for (const CheckResult& c : lab.checks) {
+            if (c.hiddenSceneDetails.empty()) continue;
+            std::string output;
+            bool passed = true;
+            for (const std::string& d : c.hiddenSceneDetails) {
+                output += (output.empty() ? "" : "\n") + d;
+                passed = passed && d.find(HiddenSceneDiffers) == std::string::npos;
+            }
+            tests.push_back({{"name", std::string(labName(lab.lab)) + ": hidden scenes"},
+                             {"score", 0},
+                             {"max_score", 0},
+                             {"status", passed ? "passed" : "failed"},
+                             {"output", output},
+                             {"visibility", hiddenVisibility}});
+        }
+    }
+    const nlohmann::json j = {{"score", report.score()},
+                              {"execution_time", static_cast<int>(report.seconds + 0.5)},
+                              {"output", terminalReport(report, false, false)},
+                              {"tests", tests}};
+    return j.dump(2) + "\n";
+}
+
+void writeHtmlReport(const GradeReport& report, const std::string& folder) {
+    namespace fs = std::filesystem;
+    fs::create_directories(folder);
+    auto png = [&](int w, int h, const std::vector<float>& rgb) {
+        const std::string path = folder + "/.picture.png";
+        writeImage(path, w, h, rgb);
+        const std::string data = base64(readFile(path));
+        fs::remove(path);
+        return renderImage(data, w, h);
+    };
+    auto heat = [&](int w, int h, const std::vector<float>& a, const std::vector<float>& b) {
+        std::vector<unsigned char> rgba, rgb;
+        relativeDifferenceImage(a, b, 0.5f, rgba);
+        for (size_t i = 0; i < rgba.size(); i += 4)
+            rgb.insert(rgb.end(), {rgba[i], rgba[i + 1], rgba[i + 2]});
+        const std::string path = folder + "/.heat.png";
+        writeDisplayImage(path, w, h, rgb);
+        const std::string data = base64(readFile(path));
+        fs::remove(path);
+        return renderImage(data, w, h);
+    };
+    std::ostringstream html;
+    html << "<!doctype html><html><head><meta charset=\"utf-8\"><title>PathLab grade</title><style>"
+         << pageStyle() << "</style></head><body>\n<h1>PathLab grade: "
+         << escapeXml(scoreText(report.score(), report.maxScore(), report.pointsNotGradedHere()))
+         << "</h1>\n"
+         << "<table><tr><th>lab</th><th>check</th><th>score</th><th>result</th></tr>\n";
+    for (const LabGrade& lab : report.labs)
+        for (const CheckResult& c : lab.checks)
+            html << "<tr><td>" << labName(lab.lab) << "</td><td>" << c.name() << "</td><td>"
+                 << c.score << " / " << c.maxScore << "</td><td class=\""
+                 << (!c.gradedHere ? "\">graded by the instructor"
+                     : c.passed    ? "pass\">pass"
+                                   : "fail\">FAIL")
+                 << "</td></tr>\n";
+    html << "</table>\n";
+    for (const LabGrade& lab : report.labs) {
+        html << "<h2>" << labName(lab.lab) << "</h2>\n";
+        for (const CheckResult& c : lab.checks)
+            html << "<h3>" << c.name() << "</h3><pre>" << escapeXml(checkText(c)) << "</pre>\n";
+        for (const auto& p : lab.pictures) {
+            if (p.student.empty() || p.reference.size() != p.student.size()) continue;
+            html << "<p>" << p.scene << ": yours, the reference, |yours − reference| / reference "
+                 << "(black 0, blue 0.125, green 0.25, yellow 0.375, red ≥ 0.5)</p><p>"
+                 << png(p.width, p.height, p.student) << " " << png(p.width, p.height, p.reference)
+                 << " " << heat(p.width, p.height, p.student, p.reference) << "</p>\n";
+        }
+    }
+    html << "</body></html>\n";
+    writeFileAtomically(folder + "/index.html", html.str());
+}
+
+} // namespace pathlab::grader

@@ -1,0 +1,59 @@
+#pragma once
+/// The grader's verdict in the formats people and platforms read.
+
+#include "checks/check_result.h"
+#include "reports/lab_figures.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pathlab::grader {
+
+struct GradeReport {
+    std::vector<LabGrade> labs;
+    double seconds = 0;
+    std::vector<std::string> notes; ///< e.g. references measured on the fly
+    /// Where the reference's side of the speed ratios comes from, when not from timing the
+    /// solutions beside the student's labs now: "the reference solutions on <machine>".
+    std::string ratiosReference;
+
+    double score() const;
+    double maxScore() const; ///< of the checks graded here
+    double pointsNotGradedHere() const;
+};
+
+/// `text` with & < > " escaped, for XML and HTML.
+std::string escapeXml(const std::string& text);
+
+/// A table for the terminal, coloured when `colour`; the hidden scenes' verdicts unless
+/// `withHidden` is false.
+std::string terminalReport(const GradeReport& report, bool colour, bool withHidden = true);
+std::string jsonReport(const GradeReport& report);
+std::string junitReport(const GradeReport& report);
+/// Gradescope's results.json: score, execution_time, output, tests[] (name, score, max_score,
+/// status, output, visibility). Each lab graded on hidden scenes has a test "LAB: hidden scenes"
+/// (no points of its own) with `hiddenVisibility` (rubric: hidden_scenes.gradescope_visibility).
+std::string gradescopeReport(const GradeReport& report, const std::string& hiddenVisibility);
+/// A Markdown lab report for a student to hand in: the notebook's figures (frame rate, noise,
+/// efficiency) of each lab beside the reference solutions' stored ones, the ratios between labs,
+/// and the grader's verdicts; then the student's own section, "What I observed": `observations`
+/// as it stands in the report being replaced (observationsIn), or a prompt when there is none.
+std::string labReport(const GradeReport& report, const Rubric& rubric, const LabFigures& yours,
+                      const std::optional<LabFigures>& reference, const std::string& observations);
+/// What a student wrote under "## What I observed" in the report at `path` ("" if none): kept when
+/// `make report` writes the report again.
+std::string observationsIn(const std::string& path);
+/// Writes DIR/index.html, one self-contained page (images embedded).
+void writeHtmlReport(const GradeReport& report, const std::string& folder);
+
+/// The speed ratios between labs the notebook asks for (each lab's samples/s ÷ branching's), from
+/// the grader's timed runs of the labs graded: {name, student ratio, reference ratio (0 when
+/// unknown)}.
+struct LabRatio {
+    std::string name;
+    double student, reference;
+};
+std::vector<LabRatio> labRatios(const GradeReport& report);
+
+} // namespace pathlab::grader

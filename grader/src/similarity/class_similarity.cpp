@@ -1,0 +1,38 @@
+#include "similarity/class_similarity.h"
+
+#include "similarity/similarity.h"
+
+#include "pathlab/lab_registry.h"
+#include "pathlab/whole_file.h"
+
+#include <filesystem>
+#include <map>
+
+namespace pathlab::grader {
+
+namespace fs = std::filesystem;
+
+std::vector<SimilarLabs> similarSubmissions(const std::string& out,
+                                            const std::vector<std::string>& ids) {
+    const fs::path kit = fs::path(PATHLAB_GRADER_DIR).parent_path();
+    std::vector<SubmittedFile> files;
+    std::map<std::string, std::string> stubs;
+    for (Lab lab : AllLabs) {
+        const std::string name = std::string(labName(lab)), file = name + ".cpp";
+        stubs[name] = readFile((kit / "labs" / file).string());
+        if (fs::is_regular_file(kit / "solutions" / file))
+            files.push_back(
+                {"reference solutions", name, readFile((kit / "solutions" / file).string())});
+        for (const std::string& id : ids) {
+            const fs::path submitted = fs::path(out) / "submissions" / id / "submitted" / file;
+            if (fs::is_regular_file(submitted))
+                files.push_back({id, name, readFile(submitted.string())});
+        }
+    }
+    std::vector<SimilarLabs> similar;
+    for (const SimilarPair& pair : similarPairs(files, stubs, DefaultSimilarityThreshold))
+        similar.push_back({pair.first, pair.second, pair.lab, pair.similarity});
+    return similar;
+}
+
+} // namespace pathlab::grader
