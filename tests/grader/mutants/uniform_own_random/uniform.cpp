@@ -1,5 +1,7 @@
-// Mutant: lab 2 that picks its component with rand(), not ctx.sampler. Unbiased, so every mean
-// matches; but its image depends on which thread ran which tile, not on the seed alone.
+// Mutant: lab 2 that picks its component with rand(), not ctx.sampler. Unbiased, yet its image
+// depends on which thread ran which tile, not on the seed alone; and rand() starts alike in
+// every render process, so the grader's renders on different seeds are not independent and its
+// means may also be rejected. Either way the grader must say the same seed gives other images.
 #include "pathlab/lab.h"
 
 #include <algorithm>
