@@ -26,13 +26,14 @@ void printScene(const SceneFigures& s, std::FILE* out) {
     std::fprintf(out,
                  "\n%s: %zu triangles, %dx%d, %d spp per pass, fastest of %d passes, max-depth "
                  "%d, continue-prob %g\n",
-                 s.name.c_str(), s.triangles, s.width, s.height, s.spp, s.passes,
-                 s.parameters.maxDepth, s.parameters.continueProb);
+                 s.name.c_str(), s.triangles, s.settings.width, s.settings.height, s.settings.spp,
+                 s.settings.passes, s.settings.parameters.maxDepth,
+                 s.settings.parameters.continueProb);
 
     const TraversalTimes one = s.rawOneThread(), all = s.raw();
     std::fprintf(out,
                  "\n  Embree alone, on the rays the solutions traced   1 thread  %2d threads\n",
-                 s.threads);
+                 s.settings.threads);
     const auto rawRow = [&](const char* what, size_t rays1, double seconds1, size_t raysN,
                             double secondsN) {
         std::fprintf(out, "    %-30s rays/s  %9s  %10s\n", what,
@@ -58,10 +59,10 @@ void printScene(const SceneFigures& s, std::FILE* out) {
     for (const SolutionFigures& f : s.solutions) {
         const std::string lab(labName(f.lab));
         solutionRow(lab.c_str(), 1, f.renderOneThread, f.rawOneThread, f.efficiencyOneThread());
-        solutionRow("", s.threads, f.render, f.raw, f.efficiency());
+        solutionRow("", s.settings.threads, f.render, f.raw, f.efficiency());
     }
     std::fprintf(out, "  efficiency: rays/s achieved / Embree's rays/s on the same rays alone\n");
-    std::fprintf(out, "  thread scaling, samples/s with %d threads / 1:", s.threads);
+    std::fprintf(out, "  thread scaling, samples/s with %d threads / 1:", s.settings.threads);
     for (const SolutionFigures& f : s.solutions)
         std::fprintf(out, "  %s %.2fx", std::string(labName(f.lab)).c_str(), f.scaling());
     std::fprintf(out, "\n");
@@ -169,13 +170,13 @@ json sceneJson(const SceneFigures& s) {
     }
     return {{"scene", s.name},
             {"triangles", s.triangles},
-            {"width", s.width},
-            {"height", s.height},
-            {"spp", s.spp},
-            {"passes", s.passes},
-            {"threads", s.threads},
-            {"max_depth", s.parameters.maxDepth},
-            {"continue_prob", s.parameters.continueProb},
+            {"width", s.settings.width},
+            {"height", s.settings.height},
+            {"spp", s.settings.spp},
+            {"passes", s.settings.passes},
+            {"threads", s.settings.threads},
+            {"max_depth", s.settings.parameters.maxDepth},
+            {"continue_prob", s.settings.parameters.continueProb},
             {"raw", {{"one_thread", rawJson(s.rawOneThread())}, {"threads", rawJson(s.raw())}}},
             {"solutions", solutions}};
 }

@@ -34,12 +34,7 @@ SceneFigures measureScene(const BenchScene& benchScene, const SceneSettings& set
     SceneFigures figures;
     figures.name = benchScene.name;
     figures.triangles = scene.scene().triangles.size();
-    figures.width = settings.width;
-    figures.height = settings.height;
-    figures.spp = settings.spp;
-    figures.passes = settings.passes;
-    figures.threads = settings.threads;
-    figures.parameters = settings.parameters;
+    figures.settings = settings;
     for (Lab lab : AllLabs) {
         const RenderJob job{scene,
                             camera,

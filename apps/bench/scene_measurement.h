@@ -29,22 +29,21 @@ struct SolutionFigures {
     static double ratio(double a, double b) { return b > 0 ? a / b : 0; }
 };
 
+/// What to measure on a scene.
+struct SceneSettings {
+    int width, height, spp, passes, threads;
+    LabParameters parameters;
+};
+
 struct SceneFigures {
     std::string name;
     size_t triangles = 0;
-    int width = 0, height = 0, spp = 0, passes = 0, threads = 0;
-    LabParameters parameters;
+    SceneSettings settings; ///< what it was measured at
     std::vector<SolutionFigures> solutions;
 
     /// Embree alone on the rays of all solutions together, by kind.
     TraversalTimes raw() const;
     TraversalTimes rawOneThread() const;
-};
-
-/// What to measure on a scene.
-struct SceneSettings {
-    int width, height, spp, passes, threads;
-    LabParameters parameters;
 };
 
 /// Times every reference solution on `scene` and replays the rays each one traced.
