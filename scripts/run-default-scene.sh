@@ -28,9 +28,10 @@ if [ -z "${handout[$lab]:-}" ]; then
     exit 2
 fi
 
-# The steps of the student's lab still marked PATHLAB_TODO, in one line.
+# The steps of the student's lab still marked PATHLAB_TODO, in one line (a marker may go on to
+# name the variables its step uses: PATHLAB_TODO("lab1.2", depth)).
 if [ ${#whose[@]} -eq 0 ]; then
-    todo=$(grep -o 'PATHLAB_TODO("lab[0-9.]*")' "$kit/labs/$lab.cpp" | grep -o 'lab[0-9.]*' | tr '\n' ' ')
+    todo=$(grep -o 'PATHLAB_TODO("lab[0-9.]*"' "$kit/labs/$lab.cpp" | grep -o 'lab[0-9.]*' | tr '\n' ' ')
     if [ -n "$todo" ]; then
         echo "make run: labs/$lab.cpp has steps still to write: ${todo% } (handouts/${handout[$lab]});" \
              "each adds nothing to the image until you write it (the stub renders direct light only)"
