@@ -4,12 +4,15 @@
 #include "window_options.h"
 
 #include "runner/headless_render.h"
+#include "runner/pixel_replay.h"
 
 #include "pathlab/image_io.h"
+#include "pathlab/inspection_json.h"
 #include "pathlab/input_error.h"
 #include "pathlab/program_main.h"
 #include "pathlab/render_options.h"
 #include "pathlab/render_scene.h"
+#include "pathlab/whole_file.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -54,8 +57,7 @@ std::string noiseFigures(const RenderStats& s) {
     return text;
 }
 
-int renderToFile(const RenderOptions& options) {
-    const RenderScene scene(loadScene(options));
+int renderToFile(const RenderOptions& options, const RenderScene& scene) {
     for (int k = 0; k < options.seedCount; ++k) {
         RenderOptions one = options;
         one.seed = options.seed + static_cast<uint64_t>(k);
@@ -81,6 +83,32 @@ int renderToFile(const RenderOptions& options) {
     return 0;
 }
 
+/// --inspect: the pixel's paths, as a table or into --inspect-out's JSON.
+void inspectPixel(const RenderOptions& options, const RenderScene& scene) {
+    const PixelReplay replay = replayPixel(options, scene);
+    const bool toFile = !options.inspectOut.empty();
+    if (toFile) {
+        writeFileAtomically(options.inspectOut,
+                            inspectionJson(replay.lab,
+                                           replay.reference ? &*replay.reference : nullptr,
+                                           replay.comparison ? &*replay.comparison : nullptr));
+        std::printf("wrote %s: %zu sample(s) of pixel (%d, %d), lab %s (%s)%s\n",
+                    options.inspectOut.c_str(), replay.lab.samples.size(), options.inspectX,
+                    options.inspectY, replay.lab.lab.c_str(), replay.lab.implementation.c_str(),
+                    replay.reference ? " beside the reference solution's" : "");
+    }
+    std::printf("%s", pixelReplayText(replay, !toFile).c_str());
+    std::fflush(stdout);
+}
+
+/// The headless runs: -o's render, --inspect's replay, or both (render first).
+int runHeadless(const RenderOptions& options) {
+    const RenderScene scene(loadScene(options));
+    if (!options.outputImage.empty()) renderToFile(options, scene);
+    if (options.inspect) inspectPixel(options, scene);
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -98,7 +126,8 @@ int main(int argc, char** argv) {
         if (options.objFiles.empty())
             throw InputError("no scene given: use -c FILE.ecs or -i FILE.obj (viewer --help)");
         checkOutputs(options, window);
-        if (!options.outputImage.empty()) return renderToFile(options);
+        checkInspectOptions(options);
+        if (!options.outputImage.empty() || options.inspect) return runHeadless(options);
         return runViewerWindow(options, window);
     });
 }

@@ -127,6 +127,16 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
         {"stats", [&](const Token& t) { o.statsFile = in.value(t, "a .json file name").text; }},
         {"seeds",
          [&](const Token& t) { o.seedCount = in.positive(t, "a number of seeds", 100000); }},
+        {"inspect",
+         [&](const Token& t) {
+             o.inspect = true;
+             o.inspectX = static_cast<int>(in.integer(t, "a pixel's X and Y"));
+             o.inspectY = static_cast<int>(in.integer(t, "a pixel's X and Y"));
+         }},
+        {"inspect-samples",
+         [&](const Token& t) { o.inspectSamples = in.positive(t, "a number of samples", 4096); }},
+        {"inspect-out",
+         [&](const Token& t) { o.inspectOut = in.value(t, "a .json file name").text; }},
         {"help", [&](const Token&) { o.help = true; }},
         {"h", [&](const Token&) { o.help = true; }},
     };
@@ -197,6 +207,16 @@ headless
   --seeds K              render K independent images, for seeds S to S+K-1: -o a.pfm writes
                          a-S.pfm ..., and --stats s.json writes s-S.json ... (one process,
                          one scene load: how the grader renders its seeds)
+path inspector
+  --inspect X Y          replay pixel (X,Y)'s first samples path by path: each vertex's
+                         material, ray, emission and direct light added, the lab's throughput,
+                         the component it picked and the probability it divided by; beside the
+                         reference solution's on the same random numbers, where the build has
+                         it, with the first vertex where they differ (after -o's render, or
+                         alone without -o)
+  --inspect-samples N    how many of the pixel's samples (default 8)
+  --inspect-out FILE.json
+                         write them as JSON instead of printing the table
 )";
 }
 

@@ -15,6 +15,7 @@ class RenderScene;
 struct CameraPacket;
 struct LabParameters;
 struct RayLog;
+class PathRecorder;
 
 /// The scene to trace against, the path's random numbers and the lab's parameters. The renderer
 /// makes one per tile and drives it through a PathDriver (its own side, pathlab/path_driver.h);
@@ -42,11 +43,15 @@ public:
 private:
     friend class PathDriver;
     PathContext(const RenderScene& scene, const LabParameters& parameters);
+    // The path inspector's versions of trace() and directLight(): the same work, recorded.
+    Hit recordedTrace(const Ray& ray, CallSite caller);
+    Color recordedDirectLight(const Hit& hit, CallSite caller);
 
     const RenderScene& scene_;
     uint64_t closestHitRays_ = 0;          ///< rays trace() sent, camera rays included
     uint64_t shadowRays_ = 0;              ///< rays directLight() sent
     RayLog* log_ = nullptr;                ///< where to record rays, if anywhere
+    PathRecorder* recorder_ = nullptr;     ///< the path inspector's record of this path, if any
     const CameraPacket* packet_ = nullptr; ///< primed by the renderer for the next trace()
     int lane_ = 0;
 };

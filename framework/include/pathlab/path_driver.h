@@ -49,6 +49,10 @@ public:
     }
     /// Also appends every ray traced from now on to `log` (null: stop recording).
     void recordRaysInto(RayLog* log) { ctx_.log_ = log; }
+    /// Records every call of trace() and directLight() from now on in `recorder` (null: stop),
+    /// for the path inspector (pathlab/pixel_inspector.h). A render that records nothing pays
+    /// one untaken branch per call.
+    void recordPathInto(PathRecorder* recorder) { ctx_.recorder_ = recorder; }
     /// Rays traced through the context so far.
     RayCounters rayCounters() const { return {ctx_.closestHitRays_, ctx_.shadowRays_}; }
 

@@ -40,6 +40,12 @@ public:
     /// A float uniform in [0,1): the top 24 bits scaled exactly, so 1.0f is never returned.
     float nextFloat() { return static_cast<float>(nextUint() >> 8) * 0x1p-24f; }
 
+    /// Whether two generators are at the same point of the same stream (the path inspector
+    /// counts a lab's draws between two calls by stepping one until it meets the other).
+    bool operator==(const Pcg32& other) const {
+        return state_ == other.state_ && increment_ == other.increment_;
+    }
+
 private:
     uint64_t state_ = 0;
     uint64_t increment_ = 1;

@@ -45,6 +45,11 @@ struct RenderOptions {
     int spp = 16;            ///< --spp
     std::string statsFile;   ///< --stats
     int seedCount = 1;       ///< --seeds: that many images, for seeds seed, seed+1, ...
+    // Path inspector (headless; with -o, after the render)
+    bool inspect = false; ///< --inspect X Y
+    int inspectX = 0, inspectY = 0;
+    int inspectSamples = 8; ///< --inspect-samples
+    std::string inspectOut; ///< --inspect-out FILE.json; empty: print the table
 
     bool help = false; ///< --help
 };

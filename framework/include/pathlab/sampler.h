@@ -25,6 +25,7 @@ public:
 
 private:
     friend class PathDriver;
+    friend class PathRecorder; // reads where the stream stands, to count a lab's draws
     explicit Sampler(const Pcg32& rng) : rng_(rng) {}
     Pcg32 rng_;
 };

@@ -7,6 +7,7 @@
 #include "checks/reproducibility_check.h"
 #include "checks/run_limits.h"
 #include "checks/seed_variance.h"
+#include "checks/worst_tile_replay.h"
 #include "diagnosis/diagnosis.h"
 
 #include "pathlab/input_error.h"
@@ -296,7 +297,7 @@ void explainScene(const GraderSetup& setup, Lab lab, const GradingScene& scene, 
 /// observed/expected per channel with a confidence interval, the tiles that differ, and a likely
 /// cause where the furnace can tell.
 void explainRejection(const GraderSetup& setup, Lab lab, const SceneComparisons& found,
-                      const std::vector<bool>& rejected, Attempt& attempt) {
+                      const std::vector<bool>& rejected, uint64_t seed, Attempt& attempt) {
     const std::vector<std::vector<bool>> regionsRejected =
         rejectionsByScene(found.scenes, rejected);
     std::vector<bool> sceneRejected;
@@ -328,6 +329,15 @@ void explainRejection(const GraderSetup& setup, Lab lab, const SceneComparisons&
             attempt.diagnosis = causeName(causes.front());
         }
     }
+    // One pixel of the first public scene that differs, replayed beside the reference: where the
+    // paths part names a step the furnaces' numbers cannot (worst_tile_replay.h).
+    for (size_t s = 0; s < setup.scenes.size(); ++s) {
+        if (setup.scenes[s].hidden || !sceneRejected[s]) continue;
+        const std::string replay =
+            replayWorstTile(setup, lab, setup.scenes[s], found.scenes[s].t, seed);
+        if (!replay.empty()) attempt.details.push_back("replay: " + replay);
+        break;
+    }
 }
 
 /// One attempt of the correctness check over all scenes. `noise`: the figure of an earlier
@@ -354,7 +364,7 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
         attempt.passed = true;
         return attempt;
     }
-    explainRejection(setup, lab, found, rejected, attempt);
+    explainRejection(setup, lab, found, rejected, seedBase, attempt);
     return attempt;
 }
 

@@ -4,6 +4,7 @@
 
 #include "pathlab/image_io.h"
 #include "pathlab/input_error.h"
+#include "pathlab/whole_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -17,8 +18,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// Where the viewer writes the path inspector's JSON, in the scratch folder (or the sandbox's).
+constexpr const char* ReplayFile = "replay.json";
+
 std::vector<std::string> viewerArguments(const RenderRequest& r, const std::string& image,
-                                         const std::string& stats) {
+                                         const std::string& stats, const std::string& replay) {
     std::vector<std::string> argv = {"-c",
                                      r.scene,
                                      "--size",
@@ -48,6 +52,10 @@ std::vector<std::string> viewerArguments(const RenderRequest& r, const std::stri
         argv.push_back("--solution");
     if (r.threads > 0) argv.insert(argv.end(), {"--threads", std::to_string(r.threads)});
     if (r.reverseTiles) argv.push_back("--reverse-tiles");
+    if (r.inspectSamples > 0)
+        argv.insert(argv.end(), {"--inspect", std::to_string(r.inspectX),
+                                 std::to_string(r.inspectY), "--inspect-samples",
+                                 std::to_string(r.inspectSamples), "--inspect-out", replay});
     return argv;
 }
 
@@ -65,7 +73,7 @@ std::string renderSandboxed(const RenderRequest& r, const ProcessLimits& limits,
                             ProcessOutcome& process) {
     SandboxRun run;
     run.command = {"/pathlab/viewer"};
-    const auto arguments = viewerArguments(r, "render.pfm", "render.json");
+    const auto arguments = viewerArguments(r, "render.pfm", "render.json", ReplayFile);
     run.command.insert(run.command.end(), arguments.begin(), arguments.end());
     // No image-file plug-in: the viewer writes the .pfm it is asked for without one.
     run.files = {{r.runner->viewer, "/pathlab/viewer"},
@@ -76,6 +84,7 @@ std::string renderSandboxed(const RenderRequest& r, const ProcessLimits& limits,
         const auto [image, stats] = outputNames(r, r.seed + static_cast<uint64_t>(k));
         run.collect.insert(run.collect.end(), {image, stats});
     }
+    if (r.inspectSamples > 0) run.collect.push_back(ReplayFile);
     run.scratchBytes = 64LL << 20;
     ProcessLimits sandboxLimits = limits;
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
@@ -131,13 +140,14 @@ RenderResult renderLab(const RenderRequest& r, const ProcessLimits& limits) {
         fs::remove(r.scratch + "/" + image);
         fs::remove(r.scratch + "/" + stats);
     }
+    fs::remove(r.scratch + "/" + ReplayFile);
     std::string problem;
     if (r.runner->sandboxed()) {
         problem = renderSandboxed(r, limits, result.process);
     } else {
         std::vector<std::string> argv = {r.runner->viewer};
-        const auto arguments =
-            viewerArguments(r, r.scratch + "/render.pfm", r.scratch + "/render.json");
+        const auto arguments = viewerArguments(
+            r, r.scratch + "/render.pfm", r.scratch + "/render.json", r.scratch + "/" + ReplayFile);
         argv.insert(argv.end(), arguments.begin(), arguments.end());
         ProcessOptions options;
         options.cpus = r.runner->cpus;
@@ -164,6 +174,15 @@ RenderResult renderLab(const RenderRequest& r, const ProcessLimits& limits) {
         result.failure = readRendered(r, r.seed + static_cast<uint64_t>(k),
                                       result.images.emplace_back(), result.failureKind);
         if (!result.failure.empty()) return result;
+    }
+    if (r.inspectSamples > 0) {
+        try {
+            result.replayJson = readFile(r.scratch + "/" + ReplayFile);
+        } catch (const InputError&) {
+            result.failureKind = "unreadable output";
+            result.failure = std::string("it wrote no ") + ReplayFile;
+            return result;
+        }
     }
     result.width = r.width;
     result.height = r.height;

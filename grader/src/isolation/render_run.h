@@ -50,6 +50,9 @@ struct RenderRequest {
     int threads = 0;
     std::string scratch;       ///< a folder for the images and stats
     bool reverseTiles = false; ///< the viewer's --reverse-tiles
+    /// The viewer's --inspect after the render, when `inspectSamples` > 0: the path inspector's
+    /// JSON of pixel (inspectX, inspectY) is then in RenderResult::replayJson.
+    int inspectX = 0, inspectY = 0, inspectSamples = 0;
 };
 
 /// One seed's image, and where the viewer's --stats for it are. Those come from the lab's own
@@ -72,6 +75,7 @@ struct RenderResult {
     ProcessOutcome process;
     int width = 0, height = 0;
     std::vector<RenderedImage> images; ///< one per seed, in order
+    std::string replayJson;            ///< the path inspector's, when the request asked for it
 
     const std::vector<float>& image() const { return images.front().rgb; }
 };

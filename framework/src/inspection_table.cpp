@@ -1,0 +1,84 @@
+#include "pathlab/inspection_table.h"
+
+#include <cstdio>
+
+namespace pathlab {
+
+namespace {
+
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value);
+    return text;
+}
+
+/// A colour as one number when it is grey, else its three channels.
+std::string colour(const Color& c) {
+    if (c.r == c.g && c.g == c.b) return number(c.r);
+    return number(c.r) + "," + number(c.g) + "," + number(c.b);
+}
+
+std::string material(const Material& m) {
+    std::string text;
+    const auto add = [&text](const char* name, const Color& c) {
+        if (isBlack(c)) return;
+        if (!text.empty()) text += " ";
+        text += std::string(name) + " " + colour(c);
+    };
+    add("Kd", m.Kd);
+    add("Ks", m.Ks);
+    add("Kt", m.Kt);
+    add("Ke", m.Ke);
+    return text.empty() ? "black" : text;
+}
+
+std::string wentOn(const InspectedVertex& v) {
+    std::string text;
+    for (const PathContinuation& c : v.continuedBy) {
+        if (!text.empty()) text += " ";
+        text += c.component + "→" + std::to_string(c.child) + " /" +
+                (c.probability ? number(*c.probability) : std::string("?"));
+    }
+    if (v.roulette)
+        text += std::string(text.empty() ? "" : " ") + "(roulette " + number(v.roulette->draw) +
+                (v.roulette->wentOn ? " < " : " >= ") + number(v.roulette->continueProb) + ")";
+    return text.empty() ? "ends" : text;
+}
+
+void appendRow(std::string& out, const char* format, const std::string& a, const std::string& b,
+               const std::string& c, const std::string& d, const std::string& e,
+               const std::string& f, const std::string& g, const std::string& h) {
+    char line[512];
+    std::snprintf(line, sizeof line, format, a.c_str(), b.c_str(), c.c_str(), d.c_str(), e.c_str(),
+                  f.c_str(), g.c_str(), h.c_str());
+    out += line;
+}
+
+} // namespace
+
+std::string inspectionTable(const PixelInspection& inspection) {
+    const char* format = "  %-3s %-11s %-4s %-24s %-13s %-13s %-13s %s\n";
+    std::string out = inspection.lab + " (" + inspection.implementation + "), pixel (" +
+                      std::to_string(inspection.x) + ", " + std::to_string(inspection.y) +
+                      "), seed " + std::to_string(inspection.seed) + "\n";
+    for (const InspectedSample& sample : inspection.samples) {
+        out += "sample " + std::to_string(sample.index) + ": value " + colour(sample.contribution) +
+               "\n";
+        appendRow(out, format, "v", "arrived by", "from", "material", "throughput", "emission +",
+                  "direct +", "went on by / divided by");
+        for (const InspectedVertex& v : sample.vertices) {
+            const std::string from = v.parent < 0 ? "-" : std::to_string(v.parent);
+            if (!v.found) {
+                appendRow(out, format, std::to_string(v.index), v.arrivedBy, from,
+                          "(left the scene)", "", "", "", "");
+                continue;
+            }
+            appendRow(out, format, std::to_string(v.index), v.arrivedBy, from, material(v.material),
+                      v.throughput ? colour(*v.throughput) : "?", colour(v.emissionAdded),
+                      v.directLightCalled ? colour(v.directLightAdded) : "not asked", wentOn(v));
+        }
+    }
+    return out;
+}
+
+} // namespace pathlab

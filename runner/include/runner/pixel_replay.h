@@ -1,0 +1,31 @@
+#pragma once
+/// `viewer --inspect X Y`: a pixel's samples through the chosen lab and, where the build has the
+/// reference solutions and the lab is the student's, through the reference on the same random
+/// numbers, compared.
+
+#include "pathlab/inspected_path.h"
+#include "pathlab/path_comparison.h"
+#include "pathlab/render_options.h"
+
+#include <optional>
+
+namespace pathlab {
+
+class RenderScene;
+
+struct PixelReplay {
+    PixelInspection lab;
+    std::optional<PixelInspection> reference; ///< none without the reference solutions
+    std::optional<PathComparison> comparison;
+};
+
+/// Throws InputError, naming the option, for an --inspect the render cannot do (a pixel
+/// outside the image, --inspect-samples or --inspect-out without --inspect): before any render.
+void checkInspectOptions(const RenderOptions& options);
+
+PixelReplay replayPixel(const RenderOptions& options, const RenderScene& scene);
+
+/// What `viewer --inspect` prints: the tables (without --inspect-out) and the comparison.
+std::string pixelReplayText(const PixelReplay& replay, bool withTables);
+
+} // namespace pathlab

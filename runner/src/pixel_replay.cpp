@@ -1,0 +1,89 @@
+#include "runner/pixel_replay.h"
+
+#include "runner/lab_tables.h"
+
+#include "pathlab/camera.h"
+#include "pathlab/input_error.h"
+#include "pathlab/inspection_table.h"
+#include "pathlab/pixel_inspector.h"
+#include "pathlab/render_progress.h"
+#include "pathlab/render_scene.h"
+#include "pathlab/render_watchdog.h"
+#include "pathlab/whole_file.h"
+
+namespace pathlab {
+
+void checkInspectOptions(const RenderOptions& options) {
+    if (!options.inspect) {
+        if (!options.inspectOut.empty())
+            throw InputError("option --inspect-out: needs --inspect X Y, the pixel to inspect");
+        return;
+    }
+    if (options.inspectX < 0 || options.inspectX >= options.width || options.inspectY < 0 ||
+        options.inspectY >= options.height)
+        throw InputError("option --inspect: pixel (" + std::to_string(options.inspectX) + ", " +
+                         std::to_string(options.inspectY) + ") is outside the " +
+                         std::to_string(options.width) + "x" + std::to_string(options.height) +
+                         " image (X from 0 to " + std::to_string(options.width - 1) +
+                         ", Y from 0 to " + std::to_string(options.height - 1) + ")");
+    if (!options.inspectOut.empty()) checkWritable(options.inspectOut);
+}
+
+namespace {
+
+PixelInspection inspect(const RenderOptions& options, const RenderScene& scene,
+                        Implementation implementation) {
+    const Camera camera(scene.scene().camera.value_or(scene.scene().framingCamera()), options.width,
+                        options.height);
+    InspectionRequest request;
+    request.x = options.inspectX;
+    request.y = options.inspectY;
+    request.width = options.width;
+    request.samples = options.inspectSamples;
+    request.seed = options.seed;
+    request.parameters = options.parameters;
+    request.lab = labName(options.lab);
+    request.implementation = implementation == Implementation::Student ? "student" : "solution";
+    request.usesRoulette = options.lab == Lab::Roulette;
+    // A lab that never returns hangs a replay as it hangs a render: the same watchdog ends it.
+    RenderProgress progress;
+    request.progress = &progress;
+    const WatchedLab watched{options.lab, implementation};
+    const RenderWatchdog watchdog(progress, options.watchdogSeconds, [watched] { return watched; });
+    progress.passStarts(static_cast<uint64_t>(options.inspectSamples));
+    PixelInspection inspection =
+        inspectPixel(scene, camera, findPathTrace(options.lab, implementation), request);
+    progress.passEnds();
+    return inspection;
+}
+
+} // namespace
+
+PixelReplay replayPixel(const RenderOptions& options, const RenderScene& scene) {
+    PixelReplay replay{inspect(options, scene, options.implementation), {}, {}};
+    if (options.implementation == Implementation::Student && solution::available()) {
+        replay.reference = inspect(options, scene, Implementation::Solution);
+        replay.comparison = comparePaths(replay.lab, *replay.reference);
+    }
+    return replay;
+}
+
+std::string pixelReplayText(const PixelReplay& replay, bool withTables) {
+    std::string text;
+    if (withTables) {
+        text +=
+            (replay.lab.implementation == "student" ? "Your lab: " : "The reference solution: ") +
+            inspectionTable(replay.lab);
+        if (replay.reference)
+            text += "\nThe reference solution: " + inspectionTable(*replay.reference);
+        text += "\n";
+    }
+    if (replay.comparison)
+        text += describeComparison(*replay.comparison, replay.lab) + "\n";
+    else if (replay.lab.implementation == "student")
+        text += "The reference solution is not in this build (the student release has none): "
+                "the table shows your lab alone.\n";
+    return text;
+}
+
+} // namespace pathlab
