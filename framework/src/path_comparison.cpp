@@ -112,6 +112,14 @@ private:
                                          ? " (roulette draw " + number(theirs->roulette->draw) +
                                                " < continueProb " + number(lab_.continueProb) + ")"
                                          : "";
+            if (end.drawsBefore.empty() && depth < lab_.maxDepth)
+                return divergence(at, "roulette", step(2),
+                                  "your path ended at " + where +
+                                      " without a random number from ctx.sampler, where the "
+                                      "reference drew its roulette number and went on" +
+                                      draw +
+                                      ": does your roulette draw come from "
+                                      "ctx.sampler.get1D()?");
             if (depth >= lab_.maxDepth)
                 return divergence(at, "depth", step(2),
                                   "your path ended at " + where + ", the reference went on" + draw +
