@@ -9,21 +9,17 @@
 
 namespace pathlab::viewer {
 
-namespace {
-
-bool isPng(const std::string& path) {
-    if (path.size() < 4) return false;
-    std::string ext = path.substr(path.size() - 4);
+MapFormat mapFormatOf(const std::string& path) {
+    const size_t dot = path.find_last_of('.');
+    std::string ext = dot == std::string::npos ? "" : path.substr(dot);
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext == ".png";
+    return ext == ".exr" ? MapFormat::Exr : ext == ".png" ? MapFormat::Png : MapFormat::Unknown;
 }
-
-} // namespace
 
 std::string writeMapFile(const std::string& path, int width, int height,
                          const std::vector<float>& values, const std::string& what) {
-    if (!isPng(path)) {
+    if (mapFormatOf(path) != MapFormat::Png) {
         std::vector<float> rgb(3 * values.size());
         for (size_t i = 0; i < values.size(); ++i) std::fill_n(&rgb[3 * i], 3, values[i]);
         writeImage(path, width, height, rgb);

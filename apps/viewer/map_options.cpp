@@ -1,30 +1,19 @@
 #include "map_options.h"
 
+#include "map_files.h"
 #include "window_options.h"
 
 #include "pathlab/image_io.h"
 #include "pathlab/input_error.h"
 
-#include <algorithm>
-#include <cctype>
-
 namespace pathlab::viewer {
 
 namespace {
 
-std::string lowerExtensionOf(const std::string& path) {
-    const size_t dot = path.find_last_of('.');
-    std::string ext = dot == std::string::npos ? "" : path.substr(dot);
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
-
 /// A map is values, not radiance: .exr keeps them, .png shows them in false colour; .pfm and
 /// .hdr would pass for images.
 void checkMapPath(const std::string& path, const std::string& option) {
-    const std::string ext = lowerExtensionOf(path);
-    if (ext != ".exr" && ext != ".png")
+    if (mapFormatOf(path) == MapFormat::Unknown)
         throw InputError("option " + option + ": '" + path +
                          "' must end in .exr (the values) or .png (false colour with a scale "
                          "bar); give the option twice for both");
