@@ -3,6 +3,8 @@
 #include "runner/progressive_renderer.h"
 
 #include "pathlab/false_colour.h"
+#include "pathlab/pixel_efficiency_map.h"
+#include "pathlab/pixel_noise_map.h"
 
 #include <GLFW/glfw3.h>
 
@@ -21,6 +23,15 @@ std::vector<float> splitImage(const Frame& frame) {
     return composed;
 }
 
+/// The noise or efficiency view's values, one per pixel (pathlab/pixel_noise_map.h,
+/// pixel_efficiency_map.h).
+std::vector<float> mapValues(const Frame& frame, ViewMode mode) {
+    std::vector<float> noise =
+        relativeStandardErrorMap(frame.image, frame.variance, frame.stats.spp);
+    if (mode == ViewMode::Noise) return noise;
+    return efficiencyMap(noise, frame.stats.seconds);
+}
+
 } // namespace
 
 FrameTexture::FrameTexture() { glGenTextures(1, &texture_); }
@@ -29,7 +40,12 @@ FrameTexture::~FrameTexture() { glDeleteTextures(1, &texture_); }
 
 void FrameTexture::upload(const Frame& frame, ViewMode mode, const Image& reference) {
     const int w = frame.settings.width, h = frame.settings.height;
-    if (mode == ViewMode::Difference && reference.width == w && reference.height == h)
+    mapScale_.reset();
+    if (isMapMode(mode) && frame.variance.size() == frame.image.size()) {
+        const std::vector<float> values = mapValues(frame, mode);
+        mapScale_ = decadeScale(values);
+        logScaleImage(values, *mapScale_, rgba_);
+    } else if (mode == ViewMode::Difference && reference.width == w && reference.height == h)
         medianDifference_ = relativeDifferenceImage(frame.image, reference.rgb, 0.5f, rgba_);
     else if (mode == ViewMode::Split && !frame.otherImage.empty())
         toDisplay(splitImage(frame), rgba_);

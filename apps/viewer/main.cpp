@@ -1,5 +1,8 @@
 // viewer: PathLab's renderer. With -o it renders headless and writes an image; without, it opens
 // the progressive window. Run `viewer --help` for the options.
+#include "map_files.h"
+#include "map_options.h"
+#include "reference_figures.h"
 #include "viewer_window.h"
 #include "window_options.h"
 
@@ -9,6 +12,8 @@
 #include "pathlab/image_io.h"
 #include "pathlab/inspection_json.h"
 #include "pathlab/input_error.h"
+#include "pathlab/pixel_noise_map.h"
+#include "pathlab/relative_error_map.h"
 #include "pathlab/program_main.h"
 #include "pathlab/render_options.h"
 #include "pathlab/render_scene.h"
@@ -17,10 +22,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace {
 
 using namespace pathlab;
+using pathlab::viewer::MapOptions;
 using pathlab::viewer::WindowOptions;
 
 /// Checks output paths before any rendering, so a typo costs nothing and leaves nothing behind.
@@ -57,7 +64,44 @@ std::string noiseFigures(const RenderStats& s) {
     return text;
 }
 
-int renderToFile(const RenderOptions& options, const RenderScene& scene) {
+/// What a headless render writes and prints besides its image: the figures against --reference
+/// and the maps asked for, the reference read (and its size checked) before anything renders.
+struct HeadlessExtras {
+    MapOptions maps;
+    std::string referenceFile;
+    Image reference;
+};
+
+/// The maps of one render, each file the extras name (with the seed's suffix for --seeds);
+/// returns the lines to print.
+std::vector<std::string> writeMaps(const HeadlessExtras& extras, const RenderOptions& options,
+                                   const HeadlessResult& result) {
+    const auto named = [&](const std::string& path) {
+        return options.seedCount > 1 ? withSeed(path, options.seed) : path;
+    };
+    std::vector<std::string> lines;
+    const std::vector<float> image = result.image.meanImage();
+    if (!extras.maps.errorImages.empty()) {
+        const std::vector<float> error = relativeErrorMap(image, extras.reference.rgb);
+        for (const std::string& path : extras.maps.errorImages)
+            lines.push_back(
+                viewer::writeMapFile(named(path), options.width, options.height, error,
+                                     "relative squared error against " + extras.referenceFile));
+    }
+    if (!extras.maps.noiseImages.empty()) {
+        std::vector<float> variance;
+        result.image.varianceImage(variance);
+        const std::vector<float> noise =
+            relativeStandardErrorMap(image, variance, result.image.samplesPerPixel());
+        for (const std::string& path : extras.maps.noiseImages)
+            lines.push_back(viewer::writeMapFile(named(path), options.width, options.height, noise,
+                                                 "relative standard error per pixel"));
+    }
+    return lines;
+}
+
+int renderToFile(const RenderOptions& options, const HeadlessExtras& extras,
+                 const RenderScene& scene) {
     for (int k = 0; k < options.seedCount; ++k) {
         RenderOptions one = options;
         one.seed = options.seed + static_cast<uint64_t>(k);
@@ -66,6 +110,9 @@ int renderToFile(const RenderOptions& options, const RenderScene& scene) {
             if (!options.statsFile.empty()) one.statsFile = withSeed(options.statsFile, one.seed);
         }
         HeadlessResult result = renderHeadless(one, scene);
+        if (!extras.referenceFile.empty())
+            result.stats.reference = viewer::compareWithReference(
+                extras.referenceFile, result.image.meanImage(), extras.reference);
         // A lab's NaN is what a student must hear of first: the warning comes before the figures.
         if (result.stats.nonfinitePixels > 0)
             std::fprintf(stderr, "%s\n", result.stats.nonfiniteWarning().c_str());
@@ -78,6 +125,9 @@ int renderToFile(const RenderOptions& options, const RenderScene& scene) {
                     one.outputImage.c_str(), s.scene.c_str(), s.lab.c_str(), s.impl.c_str(),
                     s.width, s.height, s.spp, s.seconds, s.samplesPerSecond(), s.framesPerSecond,
                     s.width, s.height, s.raysPerSecond(), noiseFigures(s).c_str());
+        if (s.reference) std::printf("%s\n", viewer::referenceLine(*s.reference).c_str());
+        for (const std::string& line : writeMaps(extras, one, result))
+            std::printf("%s\n", line.c_str());
         std::fflush(stdout);
     }
     return 0;
@@ -102,9 +152,9 @@ void inspectPixel(const RenderOptions& options, const RenderScene& scene) {
 }
 
 /// The headless runs: -o's render, --inspect's replay, or both (render first).
-int runHeadless(const RenderOptions& options) {
+int runHeadless(const RenderOptions& options, const HeadlessExtras& extras) {
     const RenderScene scene(loadScene(options));
-    if (!options.outputImage.empty()) renderToFile(options, scene);
+    if (!options.outputImage.empty()) renderToFile(options, extras, scene);
     if (options.inspect) inspectPixel(options, scene);
     return 0;
 }
@@ -114,20 +164,31 @@ int runHeadless(const RenderOptions& options) {
 int main(int argc, char** argv) {
     return runMain("viewer", [&] {
         WindowOptions window;
-        const RenderOptions options =
-            parseRenderOptions(argc, argv, viewer::windowOptionReaders(window));
+        HeadlessExtras extras;
+        ExtraOptions readers = viewer::windowOptionReaders(window);
+        readers.merge(viewer::mapOptionReaders(extras.maps));
+        const RenderOptions options = parseRenderOptions(argc, argv, readers);
         viewer::completeWindowOptions(window);
         if (options.help) {
-            std::printf("usage: viewer -c SCENE.ecs [options]\n\n%s%s"
+            std::printf("usage: viewer -c SCENE.ecs [options]\n\n%s%s%s"
                         "Single-dash spellings (-vp, -size, ...) work too, as in .ecs files.\n",
-                        renderOptionsHelp().c_str(), viewer::windowOptionsHelp());
+                        renderOptionsHelp().c_str(), viewer::windowOptionsHelp(),
+                        viewer::mapOptionsHelp());
             return 0;
         }
         if (options.objFiles.empty())
             throw InputError("no scene given: use -c FILE.ecs or -i FILE.obj (viewer --help)");
         checkOutputs(options, window);
+        viewer::checkMapOptions(extras.maps, options, window);
         checkInspectOptions(options);
-        if (!options.outputImage.empty() || options.inspect) return runHeadless(options);
+        if (!options.outputImage.empty() || options.inspect) {
+            if (!options.outputImage.empty() && !window.referenceImage.empty()) {
+                extras.referenceFile = window.referenceImage;
+                extras.reference = viewer::readReferenceOfSize(window.referenceImage, options.width,
+                                                               options.height);
+            }
+            return runHeadless(options, extras);
+        }
         return runViewerWindow(options, window);
     });
 }

@@ -5,6 +5,8 @@
 
 #include "runner/progressive_renderer.h"
 
+#include "pathlab/scale_bar.h"
+
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl2.h>
@@ -23,9 +25,34 @@ std::string firstNonfiniteText(const RenderStats& stats) {
            "), sample " + std::to_string(f.sampleIndex);
 }
 
+/// The heat palette's five stops (pathlab/false_colour.h), as ImGui colours.
+ImU32 paletteStop(int stop) {
+    unsigned char rgba[4];
+    heatColour(static_cast<float>(stop) / 4, rgba);
+    return IM_COL32(rgba[0], rgba[1], rgba[2], 255);
+}
+
+/// The map view's scale: the palette as a bar, its ends' values beneath, and what grey means.
+void drawScaleBar(const LogScale& scale) {
+    const float width = 240, height = 12;
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    for (int segment = 0; segment < 4; ++segment) {
+        const ImU32 left = paletteStop(segment), right = paletteStop(segment + 1);
+        const float x0 = origin.x + width * static_cast<float>(segment) / 4;
+        draw->AddRectFilledMultiColor(ImVec2(x0, origin.y),
+                                      ImVec2(x0 + width / 4, origin.y + height), left, right, right,
+                                      left);
+    }
+    ImGui::Dummy(ImVec2(width, height));
+    ImGui::Text("%-10s log scale %10s", scaleLabel(scale.low).c_str(),
+                scaleLabel(scale.high).c_str());
+    ImGui::Text("grey: no value (no noise)");
+}
+
 /// The figures of the frame shown and the settings asked for, one line each.
 void drawFigures(const Frame& frame, const ViewSettings& settings, ViewMode mode,
-                 float medianDifference) {
+                 float medianDifference, const std::optional<LogScale>& mapScale) {
     const ViewSettings& s = frame.settings;
     ImGui::Text("%.2f fps  %.1f ms/frame (median)", perSecond(frame.medianFrameSeconds),
                 1000.0 * frame.medianFrameSeconds);
@@ -43,6 +70,12 @@ void drawFigures(const Frame& frame, const ViewSettings& settings, ViewMode mode
         ImGui::Text("|image - ref| / ref: black 0, blue .125, green .25, yellow .375, red .5+;"
                     " median %.3f",
                     medianDifference);
+    if (isMapMode(mode)) {
+        if (mapScale)
+            drawScaleBar(*mapScale);
+        else
+            ImGui::Text("(the map comes with the next frame)");
+    }
     if (frame.stats.nonfinitePixels > 0)
         ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "%d pixels got NaN/inf samples%s",
                            frame.stats.nonfinitePixels, firstNonfiniteText(frame.stats).c_str());
@@ -52,14 +85,14 @@ void drawFigures(const Frame& frame, const ViewSettings& settings, ViewMode mode
 } // namespace
 
 void ViewerPanel::draw(const Frame& frame, const ViewSettings& settings, ViewMode mode,
-                       float medianDifference) {
+                       float medianDifference, const std::optional<LogScale>& mapScale) {
     ImGui_ImplOpenGL2_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.6f);
     ImGui::Begin("PathLab", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-    drawFigures(frame, settings, mode, medianDifference);
+    drawFigures(frame, settings, mode, medianDifference, mapScale);
     ImGui::End();
     if (showHelp_) {
         ImGui::SetNextWindowPos(ImVec2(8, 200), ImGuiCond_FirstUseEver);

@@ -1,7 +1,10 @@
 #pragma once
 /// The panel over the image: the figures a student writes down, and the keys on request (h).
 
+#include "pathlab/false_colour.h"
 #include "view_mode.h"
+
+#include <optional>
 
 namespace pathlab {
 struct Frame;
@@ -16,8 +19,9 @@ public:
 
     /// Draws the panel with ImGui over what is drawn. The lab and its parameters are those of
     /// `settings`, asked for, so that a key shows at once; the figures are those of `frame`.
+    /// With a `mapScale` (the noise and efficiency views), a scale bar of it too.
     void draw(const Frame& frame, const ViewSettings& settings, ViewMode mode,
-              float medianDifference);
+              float medianDifference, const std::optional<LogScale>& mapScale);
 
 private:
     bool showHelp_ = false; ///< the keys' window, which its own close button also hides

@@ -64,7 +64,13 @@ public:
           reference_(referenceImage(windowOptions)),
           renderer_(scene, options.threads, settings_, frameLines(windowOptions),
                     windowOptions.frames, options.watchdogSeconds),
-          input_(window, settings_) {}
+          input_(window, settings_) {
+        if (windowOptions.view) {
+            mode_ = *windowOptions.view;
+            showMode();
+            renderer_.update(settings_);
+        }
+    }
 
     /// Runs until the window closes; returns the exit status.
     int run() {
@@ -99,11 +105,18 @@ public:
     }
 
 private:
-    /// The split view renders both implementations, the student's as the one shown.
+    /// The v key: the next mode this run can show.
     void nextMode() {
         mode_ = nextViewMode(mode_, reference_.width > 0, solution::available());
+        showMode();
+    }
+
+    /// The split view renders both implementations, the student's as the one shown; the maps
+    /// need each frame's variance.
+    void showMode() {
         settings_.split = mode_ == ViewMode::Split;
         if (settings_.split) settings_.implementation = Implementation::Student;
+        renderer_.setVarianceWanted(isMapMode(mode_));
     }
 
     /// The frame on screen, and with --frames, the end of the run once the last one is in.
@@ -126,7 +139,7 @@ private:
         glClearColor(0, 0, 0, 1);
         glClear(GL_COLOR_BUFFER_BIT);
         texture_.draw();
-        panel_.draw(frame_, settings_, mode_, texture_.medianDifference());
+        panel_.draw(frame_, settings_, mode_, texture_.medianDifference(), texture_.mapScale());
         if (finishing_) {
             if (!windowOptions_.windowCapture.empty() &&
                 !captureWindow(windowOptions_.windowCapture, width, height))

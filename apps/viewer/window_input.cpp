@@ -24,7 +24,7 @@ std::string keyHelp() {
            "Tab      your code <-> reference solution\n"
            "+ / -    continueProb up / down (lab 4)\n"
            "[ / ]    maxDepth down / up (labs 1-3)\n"
-           "v        view: image, difference, split\n"
+           "v        view: image, difference, split, noise, efficiency\n"
            "r        restart accumulation\n"
            "Space    screenshot (.exr linear + .png)\n"
            "c        print the camera as .ecs options\n"

@@ -1,5 +1,9 @@
 #include "window_options.h"
 
+#include "runner/lab_tables.h"
+
+#include "pathlab/input_error.h"
+
 namespace pathlab::viewer {
 
 ExtraOptions windowOptionReaders(WindowOptions& w) {
@@ -23,11 +27,25 @@ ExtraOptions windowOptionReaders(WindowOptions& w) {
          [&w](OptionReader& in, const Token& t) {
              w.referenceImage = in.value(t, "an image file name").text;
          }},
+        {"view",
+         [&w](OptionReader& in, const Token& t) {
+             const Token& word = in.value(t, "image, difference, split, noise or efficiency");
+             w.view = viewModeNamed(word.text);
+             if (!w.view)
+                 OptionReader::fail(word, "option --view: '" + word.text +
+                                              "' is not a view: image, difference, split, noise "
+                                              "or efficiency");
+         }},
     };
 }
 
 void completeWindowOptions(WindowOptions& w) {
     if ((!w.screenshot.empty() || !w.windowCapture.empty()) && w.frames == 0) w.frames = 16;
+    if (w.view == ViewMode::Difference && w.referenceImage.empty())
+        throw InputError("option --view difference: needs --reference FILE.exr");
+    if (w.view == ViewMode::Split && !solution::available())
+        throw InputError("option --view split: the reference solutions are not part of this "
+                         "build");
 }
 
 const char* windowOptionsHelp() {
@@ -41,6 +59,9 @@ const char* windowOptionsHelp() {
   --capture-window FILE.png
                          with --frames: also save the window as shown, panel included
   --reference FILE.exr   image for the difference view
+  --view MODE            the view shown first: image, difference, split, noise (each
+                         pixel's relative standard error) or efficiency (each pixel's
+                         1 / (relative variance x seconds per sample)); v cycles on
 )";
 }
 

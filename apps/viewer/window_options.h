@@ -1,25 +1,31 @@
 #pragma once
 /// The options of the interactive window, read beside the shared ones (pathlab/render_options.h).
 
+#include "view_mode.h"
+
 #include "pathlab/render_options.h"
 
+#include <optional>
 #include <string>
 
 namespace pathlab::viewer {
 
 struct WindowOptions {
-    int sppPerFrame = 1;         ///< --spp-per-frame
-    bool printFrameRate = false; ///< --print-frame-rate
-    int frames = 0;              ///< --frames: quit after this many (0 = run until closed)
-    std::string screenshot;      ///< --screenshot: save after --frames, then quit
-    std::string windowCapture;   ///< --capture-window: the window as shown, panel included
-    std::string referenceImage;  ///< --reference: image for the difference view
+    int sppPerFrame = 1;          ///< --spp-per-frame
+    bool printFrameRate = false;  ///< --print-frame-rate
+    int frames = 0;               ///< --frames: quit after this many (0 = run until closed)
+    std::string screenshot;       ///< --screenshot: save after --frames, then quit
+    std::string windowCapture;    ///< --capture-window: the window as shown, panel included
+    std::string referenceImage;   ///< --reference: image for the difference view
+    std::optional<ViewMode> view; ///< --view: the mode shown first (then v as usual)
 };
 
 /// The readers of the window's options, into `window`, for parseRenderOptions.
 ExtraOptions windowOptionReaders(WindowOptions& window);
 
 /// What the options mean together: a screenshot or capture without --frames comes after 16.
+/// Throws InputError for a --view this run cannot show (difference without --reference, split
+/// without the reference solutions).
 void completeWindowOptions(WindowOptions& window);
 
 /// The summary of the window's options, for --help.

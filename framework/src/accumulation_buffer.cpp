@@ -64,4 +64,12 @@ void AccumulationBuffer::meanImage(std::vector<float>& rgb) const {
     }
 }
 
+void AccumulationBuffer::varianceImage(std::vector<float>& rgb) const {
+    rgb.resize(3 * sum_.size());
+    for (size_t i = 0; i < sum_.size(); ++i) {
+        const Color v = variance(static_cast<int>(i));
+        rgb[3 * i] = v.r, rgb[3 * i + 1] = v.g, rgb[3 * i + 2] = v.b;
+    }
+}
+
 } // namespace pathlab

@@ -109,6 +109,11 @@ void writeRenderStats(const std::string& path, const RenderStats& s) {
         {"frames_per_second", s.framesPerSecond},
         {"frames_per_second_source", s.framesPerSecondSource},
     };
+    if (s.reference)
+        json["reference"] = {{"file", s.reference->file},
+                             {"rel_mse", s.reference->relMse},
+                             {"rel_mse_epsilon", s.reference->relMseEpsilon},
+                             {"relative_rmse", s.reference->relativeRmse}};
     if (s.firstNonfinite) {
         const NonfiniteSample& f = *s.firstNonfinite;
         // As text: JSON has no NaN or infinity.
@@ -157,6 +162,12 @@ RenderStats readRenderStats(const std::string& path) {
         s.noise = j.at("noise").get<double>();
         s.framesPerSecond = j.at("frames_per_second").get<double>();
         s.framesPerSecondSource = j.at("frames_per_second_source").get<std::string>();
+        if (j.contains("reference")) {
+            const nlohmann::json& r = j.at("reference");
+            s.reference = ReferenceFigures{
+                r.at("file").get<std::string>(), r.at("rel_mse").get<double>(),
+                r.at("rel_mse_epsilon").get<double>(), r.at("relative_rmse").get<double>()};
+        }
         if (j.contains("first_nonfinite")) {
             const nlohmann::json& f = j.at("first_nonfinite");
             const auto component = [&](int i) {

@@ -218,7 +218,12 @@ void ProgressiveRenderer::publish(const Accumulation& accumulation, Frame frame)
     // under this lock: at full HD a third full-size image would be 25 MB more.
     std::vector<float> image = std::move(latest_.image);
     std::vector<float> otherImage = std::move(latest_.otherImage);
+    std::vector<float> variance = std::move(latest_.variance);
     accumulation.buffers[0].meanImage(image);
+    if (varianceWanted_)
+        accumulation.buffers[0].varianceImage(variance);
+    else
+        variance.clear();
     if (accumulation.settings.split)
         accumulation.buffers[1].meanImage(otherImage);
     else
@@ -226,6 +231,7 @@ void ProgressiveRenderer::publish(const Accumulation& accumulation, Frame frame)
     latest_ = std::move(frame);
     latest_.image = std::move(image);
     latest_.otherImage = std::move(otherImage);
+    latest_.variance = std::move(variance);
     latestGeneration_ = accumulation.generation;
 }
 

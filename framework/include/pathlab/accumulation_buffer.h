@@ -55,6 +55,9 @@ public:
     std::vector<float> meanImage() const;
     /// The same into `rgb`, reusing its memory (the viewer does this every frame).
     void meanImage(std::vector<float>& rgb) const;
+    /// Each pixel's sample variance (variance()) laid out as meanImage lays out the means: what
+    /// the noise maps are made from (pathlab/pixel_noise_map.h).
+    void varianceImage(std::vector<float>& rgb) const;
 
 private:
     int width_, height_;

@@ -14,6 +14,14 @@
 
 namespace pathlab {
 
+/// How a render compares with a --reference image (pathlab/relative_mse.h).
+struct ReferenceFigures {
+    std::string file;  ///< the reference as named on the command line
+    double relMse = 0; ///< relativeMse, with relMseEpsilon
+    double relMseEpsilon = 0;
+    double relativeRmse = 0; ///< relativeRmse: RMSE over the reference's mean
+};
+
 struct RenderStats {
     std::string scene, lab, impl;
     int spp = 0, width = 0, height = 0;
@@ -32,6 +40,8 @@ struct RenderStats {
     /// median when the window measured it, samples/s ÷ (width × height) for a headless render.
     double framesPerSecond = 0;
     std::string framesPerSecondSource; ///< which of the two, in words
+    /// With viewer -o ... --reference: the render against it (--stats' "reference").
+    std::optional<ReferenceFigures> reference;
 
     double samplesPerSecond() const;
     double raysPerSecond() const;

@@ -49,6 +49,12 @@ struct LabGrade {
         std::string scene;
         int width = 0, height = 0;
         std::vector<float> student, reference;
+        /// The correctness check's t statistics of this scene and their two-sided p-values,
+        /// [region][channel] as regionMeans lays them out (region 0 the whole image, then the
+        /// tiles row by row), and the tiles per side: the HTML report's map of the tiles'
+        /// z-scores.
+        std::vector<double> regionT, regionP;
+        int tilesPerSide = 0;
     };
     std::vector<Pictures> pictures;
 

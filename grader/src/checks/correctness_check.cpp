@@ -158,8 +158,11 @@ SceneComparisons renderAndCompare(const GraderSetup& setup, Lab lab, uint64_t se
                           found.scenes.back().p.end());
         if (scene.hidden) continue; // its images are the instructor's
         LabGrade::Pictures pictures{
-            scene.name, r.width, r.height, {}, scene.reference.forLab(lab).image};
+            scene.name, r.width, r.height, {}, scene.reference.forLab(lab).image, {}, {}, 0};
         pictures.student = runs.meanImage();
+        pictures.regionT = found.scenes.back().t;
+        pictures.regionP = found.scenes.back().p;
+        pictures.tilesPerSide = r.tiles;
         attempt.pictures.push_back(std::move(pictures));
     }
     return found;

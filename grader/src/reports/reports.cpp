@@ -1,8 +1,8 @@
 #include "reports/reports.h"
 
 #include "reports/page_style.h"
+#include "reports/tile_z_map.h"
 
-#include "pathlab/false_colour.h"
 #include "pathlab/image_io.h"
 #include "pathlab/render_stats.h"
 #include "pathlab/whole_file.h"
@@ -288,12 +288,8 @@ void writeHtmlReport(const GradeReport& report, const std::string& folder) {
         fs::remove(path);
         return renderImage(data, w, h);
     };
-    auto heat = [&](int w, int h, const std::vector<float>& a, const std::vector<float>& b) {
-        std::vector<unsigned char> rgba, rgb;
-        relativeDifferenceImage(a, b, 0.5f, rgba);
-        for (size_t i = 0; i < rgba.size(); i += 4)
-            rgb.insert(rgb.end(), {rgba[i], rgba[i + 1], rgba[i + 2]});
-        const std::string path = folder + "/.heat.png";
+    auto tileMap = [&](int w, int h, const std::vector<unsigned char>& rgb) {
+        const std::string path = folder + "/.tiles.png";
         writeDisplayImage(path, w, h, rgb);
         const std::string data = base64(readFile(path));
         fs::remove(path);
@@ -320,10 +316,18 @@ void writeHtmlReport(const GradeReport& report, const std::string& folder) {
             html << "<h3>" << c.name() << "</h3><pre>" << escapeXml(checkText(c)) << "</pre>\n";
         for (const auto& p : lab.pictures) {
             if (p.student.empty() || p.reference.size() != p.student.size()) continue;
-            html << "<p>" << p.scene << ": yours, the reference, |yours − reference| / reference "
-                 << "(black 0, blue 0.125, green 0.25, yellow 0.375, red ≥ 0.5)</p><p>"
-                 << png(p.width, p.height, p.student) << " " << png(p.width, p.height, p.reference)
-                 << " " << heat(p.width, p.height, p.student, p.reference) << "</p>\n";
+            const std::vector<unsigned char> tileZs =
+                tileZImage(p.regionT, p.regionP, p.tilesPerSide, p.width, p.height);
+            const bool tiles = !tileZs.empty();
+            html << "<p>" << p.scene << ": yours, the reference"
+                 << (tiles ? ", and each tile's z-score of its mean against the reference: what "
+                             "the correctness check tests (a correct lab's tiles stay pale)"
+                           : "")
+                 << "</p><p>" << png(p.width, p.height, p.student) << " "
+                 << png(p.width, p.height, p.reference);
+            if (tiles) html << " " << tileMap(p.width, p.height, tileZs);
+            html << "</p>\n";
+            if (tiles) html << tileZLegendHtml();
         }
     }
     html << "</body></html>\n";

@@ -43,8 +43,11 @@ struct Frame {
     int number = 0;                ///< frames finished since the last restart
     std::vector<float> image;      ///< mean radiance, linear RGB, top row first
     std::vector<float> otherImage; ///< split view: the other implementation's image
-    int otherSpp = 0;              ///< split view: the other implementation's spp
-    double frameSeconds = 0;       ///< wall time of the last pass
+    /// `image`'s per-pixel sample variance, laid out like it, for the window's noise and
+    /// efficiency maps; empty unless asked for (setVarianceWanted), which costs a copy per frame.
+    std::vector<float> variance;
+    int otherSpp = 0;        ///< split view: the other implementation's spp
+    double frameSeconds = 0; ///< wall time of the last pass
     /// The median wall time of the last 31 passes since the restart (FrameRate): the frame rate
     /// the panel and --print-frame-rate show, steady enough to write down.
     double medianFrameSeconds = 0;
@@ -75,6 +78,9 @@ public:
     bool takeFrame(Frame& frame, uint64_t& generation);
     /// Why rendering stopped for good (a broken check in a lab, say), or "" while it runs.
     std::string failure();
+    /// Whether frames carry their per-pixel variance (Frame::variance) from the next one on;
+    /// unlike the settings, it does not restart accumulation.
+    void setVarianceWanted(bool wanted) { varianceWanted_ = wanted; }
     /// Frames finished since the renderer started, over all restarts.
     int framesFinished() const { return framesFinished_.load(); }
 
@@ -102,6 +108,7 @@ private:
     uint64_t generation_ = 1; ///< bumped by every restart
     bool stopping_ = false;
     std::atomic<bool> cancel_{false};
+    std::atomic<bool> varianceWanted_{false};
     std::atomic<int> framesFinished_{0};
     Frame latest_;
     uint64_t latestGeneration_ = 0;
