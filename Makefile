@@ -61,7 +61,7 @@ grade: configure
 	cd $(BUILD) && ./grader $(if $(LAB),--lab $(LAB))
 
 # Grade them and write lab-report.md: your notebook's figures (frame rate, noise, efficiency) and
-# the ratios between labs, beside the reference solutions'.
+# the ratios between labs, beside the reference solutions', and the plots of make sweep (below).
 report: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target $(GRADER_TARGETS)
 	cd $(BUILD) && ./grader --report $(CURDIR)/lab-report.md
