@@ -103,10 +103,11 @@ TEST_CASE("the lab report shows the plots make sweep wrote, linked from the repo
 
     const std::string md =
         labReport(branchingAndRoulette(), Rubric{}, LabFigures{}, std::nullopt, "", found);
-    CHECK(md.find("![roulette-continue-prob: frame rate, noise and efficiency against "
-                  "continue_prob](build/sweep/roulette-continue-prob/sweep.png)") !=
+    CHECK(md.find("### roulette: continueProb\n") != std::string::npos);
+    CHECK(md.find("![roulette: frame rate, noise and efficiency against "
+                  "continueProb](build/sweep/roulette-continue-prob/sweep.png)") !=
           std::string::npos);
     CHECK(md.find("3 values, numbers in [build/sweep/roulette-continue-prob/sweep.csv]") !=
           std::string::npos);
-    CHECK(md.find("the most efficient: continue_prob 0.8") != std::string::npos);
+    CHECK(md.find("the most efficient: continueProb 0.8") != std::string::npos);
 }

@@ -183,8 +183,8 @@ void writeExperiments(std::ostream& md, const std::vector<SweepFigure>& sweeps) 
     md << "Made by `make sweep` (scripts/sweep.py): your labs rendered at each value, beside the "
           "handout's figures of the reference solution.\n";
     for (const SweepFigure& sweep : sweeps) {
-        md << "\n### " << sweep.name << "\n\n"
-           << "![" << sweep.name << ": frame rate, noise and efficiency against " << sweep.parameter
+        md << "\n### " << sweep.lab << ": " << sweep.parameter << "\n\n"
+           << "![" << sweep.lab << ": frame rate, noise and efficiency against " << sweep.parameter
            << "](" << sweep.plot << ")\n\n"
            << sweep.values << " values, numbers in [" << sweep.table << "](" << sweep.table << ")";
         if (!sweep.mostEfficient.empty())

@@ -26,6 +26,8 @@ void readTable(const fs::path& csv, SweepFigure& sweep) {
     if (!std::getline(in, line)) return;
     const std::vector<std::string> header = csvFields(line);
     if (!header.empty()) sweep.parameter = header[0];
+    if (sweep.parameter == "continue_prob") sweep.parameter = "continueProb";
+    if (sweep.parameter == "max_depth") sweep.parameter = "maxDepth";
     const auto column = std::find(header.begin(), header.end(), "efficiency");
     const size_t efficiency = static_cast<size_t>(column - header.begin());
     float best = -1;
@@ -50,6 +52,7 @@ std::vector<SweepFigure> findSweeps(const std::string& folder, const std::string
         if (!fs::is_regular_file(plot, error) || !fs::is_regular_file(csv, error)) continue;
         SweepFigure sweep;
         sweep.name = entry.path().filename().string();
+        sweep.lab = sweep.name.substr(0, sweep.name.find('-'));
         sweep.plot = fs::proximate(plot, reportFolder, error).generic_string();
         sweep.table = fs::proximate(csv, reportFolder, error).generic_string();
         readTable(csv, sweep);

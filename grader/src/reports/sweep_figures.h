@@ -10,8 +10,11 @@ namespace pathlab::grader {
 
 /// One sweep as the report shows it.
 struct SweepFigure {
-    std::string name;          ///< its folder's name: "roulette-continue-prob"
-    std::string parameter;     ///< sweep.csv's first column: "continue_prob", "max_depth"
+    std::string name; ///< its folder's name: "roulette-continue-prob"
+    std::string lab;  ///< the folder's name up to its first '-': "roulette"
+    /// As the handouts write it, "continueProb" or "maxDepth", from sweep.csv's first column
+    /// ("continue_prob", "max_depth"; another is taken as it is).
+    std::string parameter;
     std::string plot;          ///< sweep.png, relative to the report's folder
     std::string table;         ///< sweep.csv, relative to the report's folder
     int values = 0;            ///< rows of sweep.csv
