@@ -203,14 +203,23 @@ def todo_line(sweep):
 
 
 def estimate_seconds(viewer, sweep, folder):
-    """Seconds the sweep should take: a short probe at its dearest value (the largest: longer
-    paths), its start-up and its time per sample per pixel counted for every value."""
-    dearest = max(sweep.values)
+    """Seconds the sweep should take, from two short probes at its cheapest and dearest values
+    (the smallest and the largest: longer paths cost more): each value's start-up, and its time
+    per sample per pixel interpolated between theirs. The cost grows faster than linearly with
+    continueProb, so this errs on the long side."""
     probe_spp = min(sweep.spp, 4)
-    stats = render(viewer, sweep, dearest, probe_spp, folder, "probe")
-    start_up = max(stats["wall_seconds"] - stats["seconds"], 0)
-    per_spp = stats["seconds"] / probe_spp
-    return len(sweep.values) * (start_up + per_spp * sweep.spp), dearest
+    low, high = min(sweep.values), max(sweep.values)
+    probes = {}
+    for value in sorted({low, high}):
+        stats = render(viewer, sweep, value, probe_spp, folder, "probe")
+        probes[value] = (max(stats["wall_seconds"] - stats["seconds"], 0),
+                         stats["seconds"] / probe_spp)
+    total = 0
+    for value in sweep.values:
+        t = (value - low) / (high - low) if high > low else 0
+        start_up, per_spp = [(1 - t) * a + t * b for a, b in zip(probes[low], probes[high])]
+        total += start_up + per_spp * sweep.spp
+    return total
 
 
 def figures_row(stats, column, value):
@@ -308,12 +317,12 @@ def run_sweep(viewer, sweep, out):
         todo = todo_line(sweep)
         if todo:
             print(todo)
-        seconds, dearest = estimate_seconds(viewer, sweep, work)
+        seconds = estimate_seconds(viewer, sweep, work)
         whose = "reference solution" if sweep.solution else f"labs/{sweep.lab}.cpp"
         print(f"make sweep: {len(sweep.values)} renders of {whose} at {sweep.size}x{sweep.size} "
               f"pixels, {sweep.spp} spp each, {sweep.parameter.label} "
-              f"{' '.join(f'{v:g}' for v in sweep.values)}: about {max(seconds, 1):.0f} s "
-              f"(at most: timed at {sweep.describe(dearest)}, the dearest)", flush=True)
+              f"{' '.join(f'{v:g}' for v in sweep.values)}: about {max(seconds, 1):.0f} s",
+              flush=True)
         for name in ("probe.png", "probe.json"):
             os.remove(os.path.join(work, name))
         started = time.monotonic()

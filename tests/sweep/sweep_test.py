@@ -16,6 +16,7 @@ import argparse
 import csv
 import math
 import os
+import re
 import struct
 import subprocess
 import sys
@@ -60,7 +61,8 @@ def check_sweep(scratch, lab, param, values, column):
     if result.returncode != 0:
         return
     lines = result.stdout.splitlines()
-    estimate = next((i for i, line in enumerate(lines) if " s (at most" in line), None)
+    estimate = next((i for i, line in enumerate(lines) if re.search(r": about \d+ s$", line)),
+                    None)
     first_render = next((i for i, line in enumerate(lines) if line.startswith("  ")), None)
     check(estimate is not None and first_render is not None and estimate < first_render,
           f"{name}: a time estimate line before the renders")
