@@ -9,8 +9,8 @@ NATIVE ?= ON
 # off by default, so that a newer compiler's new warning does not stop a student's build.
 WARNINGS_AS_ERRORS ?= OFF
 
-.PHONY: run configure build test test-labs test-slow grade report bench profile deps clean handouts handouts-html \
-        student-release gradescope
+.PHONY: run configure build test test-labs test-slow grade report sweep bench profile deps clean \
+        handouts handouts-html student-release gradescope
 
 # The student release has no solutions/: there the lab tests (ctest label `labs`) check your own
 # labs/, which fail until you finish them, so `make test` leaves them to `make test-labs`.
@@ -61,10 +61,26 @@ grade: configure
 	cd $(BUILD) && ./grader $(if $(LAB),--lab $(LAB))
 
 # Grade them and write lab-report.md: your notebook's figures (frame rate, noise, efficiency) and
-# the ratios between labs, beside the reference solutions'.
+# the ratios between labs, beside the reference solutions', and the plots of make sweep (below).
 report: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target $(GRADER_TARGETS)
 	cd $(BUILD) && ./grader --report $(CURDIR)/lab-report.md
+
+# Your own lab rendered at a range of one parameter's values, with CSV and PNG plots (frame rate,
+# noise, efficiency) beside the handout's figures, into $(BUILD)/sweep/LAB-PARAM/ (scripts/sweep.py):
+# LAB=roulette (the default) sweeps continueProb, LAB=branching, uniform or importance maxDepth.
+# VALUES="0.1 0.5 0.9" for other values, SIZE=256 and SPP=64 for another render. The options are
+# checked before anything is configured, built or written.
+SWEEP_OPTIONS = --lab='$(LAB)' --param='$(PARAM)' --values='$(VALUES)' --size='$(SIZE)' --spp='$(SPP)'
+sweep:
+	@python3 scripts/sweep.py --check $(SWEEP_OPTIONS)
+	@$(MAKE) --no-print-directory configure
+	@cmake --build $(BUILD) -j $(JOBS) --target viewer
+	@python3 scripts/sweep.py --build $(BUILD) $(SWEEP_OPTIONS)
+
+# (make convergence, the error-versus-time plot of your four labs as
+# handouts/figures/convergence.png shows the reference's, is to come here, into
+# $(BUILD)/convergence/: make report shows it beside the sweeps.)
 
 # Only the HTML pages (self-contained, in $(BUILD)/handouts/), from the figures as they are.
 handouts-html:

@@ -17,6 +17,9 @@ handouts/figures/ (each plot beside the .csv of its numbers):
   roulette_sweep.png, roulette_sweep.csv
                                         samples/s, relative RMSE at equal time and efficiency
                                         1/(relative MSE * time) over continueProb
+  depth_sweep.csv                       labs 1-3 over maxDepth, measured as `make sweep`
+                                        measures a student's lab (scripts/sweep.py), whose plot
+                                        draws these beside the student's
 
 Errors are relative, as the viewer's noise figure is (framework/include/pathlab/image_noise.h):
 an RMSE over the reference image's mean radiance. The noise figure estimates that same relative
@@ -25,7 +28,8 @@ RMSE from a render's own samples, so the two columns of convergence.csv can be c
 
 and rewrites the handouts' generated blocks (between "<!-- BEGIN generated: NAME -->" and
 "<!-- END generated: NAME -->") with the new numbers. Seeds are fixed: apart from timing, a run
-renders the same images. --quick renders tiny versions into a scratch folder, to try the script.
+renders the same images. --quick renders tiny versions into a scratch folder, to try the script;
+--only-depth-sweep remakes depth_sweep.csv alone (a few minutes), leaving the rest as it is.
 
 Python 3 standard library, gnuplot and Xvfb only.
 """
@@ -45,6 +49,9 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from pfm import mean_squared_error, read_pfm  # noqa: E402
 from viewer_runs import Viewer, start_xvfb, window_measurement  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+import sweep as student_sweep  # noqa: E402
 
 TOOLS = os.path.dirname(os.path.abspath(__file__))
 HANDOUTS = os.path.dirname(TOOLS)
@@ -78,13 +85,16 @@ FULL = {
     "sweep": [0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9],
     "sweep_budget": 3.0,         # seconds per sweep render
     "sweep_seeds": 2,            # independent renders per continueProb, MSE averaged
+    "depth_sweep": [1, 2, 3, 4, 5, 6, 7, 8],  # maxDepth values of labs 1-3
+    "depth_sweep_spp": student_sweep.DEFAULT_SPP,  # as make sweep renders a student's lab
+    "depth_sweep_rounds": 3,     # renders per value; the median samples/s is kept
     "image_size": 512,           # the equal-time images
     "image_budget": 8.0,
     "window_size": 512,          # the frame-rate table: the window as a student sees it
     "window_frames": [64, 256],  # the panel is read after these frames
 }
 QUICK = dict(FULL, study_size=32, reference_spp=64, budgets=[0.02, 0.05], sweep_budget=0.05,
-             sweep_seeds=1, image_size=48, image_budget=0.05, window_size=64, window_frames=[4, 16])
+             sweep_seeds=1, depth_sweep=[1, 2], depth_sweep_spp=2, depth_sweep_rounds=2, image_size=48, image_budget=0.05, window_size=64, window_frames=[4, 16])
 
 REFERENCE_Q = 0.8        # continueProb of the unbiased reference: finite variance on this scene
 REFERENCE_SEEDS = {"depth_limited": 900001, "unbiased": 900002}
@@ -186,6 +196,31 @@ def roulette_sweep(viewer, p, references):
                      "relative_rmse": round(math.sqrt(mse), 6),
                      "efficiency": round(1 / (mse * seconds), 3)})
         print(f"sweep continueProb {q}: {spp[q]} spp, relative RMSE {math.sqrt(mse):.4f}", flush=True)
+    return rows
+
+
+def depth_sweep(viewer, p):
+    """The reference solutions of labs 1-3 at each maxDepth, rendered and measured as `make
+    sweep` renders a student's lab (the same size, spp, seed and figures), so that its plot puts
+    the two side by side. The images, and so the noise, are the same in every round; of the
+    timings, each value keeps its round of median samples/s. The rounds take turns over all the
+    labs, so a change in the machine's load hits all alike."""
+    labs = [lab for lab, estimate in student_sweep.labs_and_estimates().items()
+            if estimate == "depth-limited"]
+    rounds = {lab: [] for lab in labs}
+    for turn in range(p["depth_sweep_rounds"]):
+        for lab in labs:
+            sweep = student_sweep.Sweep(lab, student_sweep.PARAMETERS["max-depth"],
+                                        p["depth_sweep"], p["study_size"], p["depth_sweep_spp"],
+                                        solution=True)
+            rounds[lab].append(student_sweep.measure(
+                viewer.executable, sweep, viewer.work,
+                lambda line: print(f"depth sweep {lab}, round {turn + 1}:{line}", flush=True)))
+    rows = []
+    for lab in labs:
+        for index in range(len(p["depth_sweep"])):
+            runs = sorted((r[index] for r in rounds[lab]), key=lambda r: r["samples_per_second"])
+            rows.append({"lab": lab, **runs[len(runs) // 2]})
     return rows
 
 
@@ -414,6 +449,8 @@ def main():
                         help="tiny renders into BUILD/handouts-quick, handouts left as they are")
     parser.add_argument("--blocks-only", action="store_true",
                         help="render nothing: rewrite the handouts' tables from handouts/figures/")
+    parser.add_argument("--only-depth-sweep", action="store_true",
+                        help="remake depth_sweep.csv alone")
     args = parser.parse_args()
     figures = os.path.join(HANDOUTS, "figures")
     if args.blocks_only:
@@ -429,6 +466,10 @@ def main():
     if not shutil.which("gnuplot"):
         raise SystemExit("make_figures: gnuplot is needed (scripts/install-deps.sh installs it)")
     viewer = Viewer(os.path.join(build, "viewer"), SCENE, os.path.join(build, "handouts-renders"))
+    if args.only_depth_sweep:
+        write_csv(os.path.join(figures, "depth_sweep.csv"), depth_sweep(viewer, p))
+        print(f"make_figures: {os.path.join(figures, 'depth_sweep.csv')}")
+        return
     started = time.time()
     if os.getloadavg()[0] > 0.5:
         print(f"make_figures: the machine is busy (load average {os.getloadavg()[0]:.1f}); "
@@ -439,12 +480,14 @@ def main():
     references = make_references(viewer, p)
     convergence = convergence_study(viewer, p, references)
     sweep = roulette_sweep(viewer, p, references)
+    depths = depth_sweep(viewer, p)
     window = window_table(viewer, p)
     images = equal_time_images(viewer, p, figures)
 
     bias = depth_limit_bias(references)
     write_csv(os.path.join(figures, "convergence.csv"), convergence)
     write_csv(os.path.join(figures, "roulette_sweep.csv"), sweep)
+    write_csv(os.path.join(figures, "depth_sweep.csv"), depths)
     write_csv(os.path.join(figures, "estimators.csv"), estimator_rows(convergence, window, p))
     write_json(os.path.join(figures, "equal_time.json"), images)
     write_json(os.path.join(figures, "references.json"), {

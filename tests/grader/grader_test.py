@@ -68,15 +68,29 @@ def solutions_pass(tmp):
           and not suites.findall(".//failure"), "the JUnit XML parses: 12 test cases, no failures")
     # The lab report: each notebook row's figures, yours and the reference's, the ratios between
     # labs, and the checks; its noise is the figure a headless render of the same lab prints.
-    rows = [[cell.strip() for cell in line.split("|")[1:-1]] for line in open(out["md"])
-            if line.startswith("| ") and "---" not in line]
+    sections = {}  # the table rows under each "## " heading
+    heading = ""
+    for line in open(out["md"]):
+        if line.startswith("## "):
+            heading = line[3:].strip()
+        elif line.startswith("| ") and "---" not in line:
+            sections.setdefault(heading, []).append(
+                [cell.strip() for cell in line.split("|")[1:-1]])
+    rows = [row for table in sections.values() for row in table]
     figures = [r for r in rows if len(r) == 8 and r[1] in ("yes", "**no**")]
     check(len(figures) == 5 and all(r[1] == "yes" and "fps" in r[2] and "fps" in r[3]
                                     and float(r[4]) > 0 and float(r[5]) > 0 for r in figures),
           f"the lab report has the five notebook rows, yours and the reference's: {figures}")
-    ratios = [r for r in rows if len(r) == 7 and r[0] != "estimator"]
+    ratios = sections.get("Ratios between the labs", [])[1:]
     check(len(ratios) == 5 and all(float(r[1]) > 0 for r in ratios),
           "the lab report has the ratios between labs")
+    # Lab 4 at 64 and 256 spp, the solution as the reference: the same deterministic noise, and
+    # at the graded continueProb (finite variance) a ratio of about 0.5.
+    late = sections.get("Lab 4: the noise at 64 and at 256 spp", [])[1:]
+    graded = next((r for r in late if "as graded" in r[0]), None)
+    check(len(late) == 2 and all(r[3] == r[4] and float(r[3]) > 0 for r in late) and graded
+          and 0.4 < float(graded[5]) < 0.6,
+          f"the lab report has lab 4's noise at 64 and 256 spp, yours as the reference's: {late}")
     importance = next((r for r in figures if r[0].startswith("importance")), None)
     stats = os.path.join(tmp, "report-importance.json")
     subprocess.run([os.path.join(args.build, "viewer_solutions_as_student"), "-c",

@@ -1,10 +1,13 @@
 // make report writes lab-report.md again at every run: what the student wrote under "What I
-// observed" must survive it, and the prompt alone is not kept as if it were theirs.
+// observed" must survive it, and the prompt alone is not kept as if it were theirs. Its figures
+// compare small efficiencies, lab 4's noise at 64 and 256 spp, and the plots of make sweep.
 #include "catch.h"
 #include "test_support.h"
 
 #include "reports/reports.h"
+#include "reports/sweep_figures.h"
 
+#include <filesystem>
 #include <fstream>
 
 using namespace pathlab;
@@ -31,4 +34,80 @@ TEST_CASE("make report keeps what the student wrote under What I observed", "[gr
         labReport(GradeReport{}, Rubric{}, LabFigures{}, std::nullopt, notes);
     std::ofstream(path) << second;
     CHECK(observationsIn(path) == notes);
+}
+
+namespace {
+
+/// A report of labs 1 and 4, yours and the reference's figures as given.
+GradeReport branchingAndRoulette() {
+    GradeReport report;
+    for (Lab lab : {Lab::Branching, Lab::Roulette}) {
+        LabGrade grade;
+        grade.lab = lab;
+        report.labs.push_back(grade);
+    }
+    return report;
+}
+
+EstimatorFigures figures(double efficiency, double noise, double noiseLate) {
+    EstimatorFigures f;
+    f.samplesPerSecond = 1e6, f.framesPerSecond = 4, f.noise = noise, f.efficiency = efficiency;
+    f.noiseLate = noiseLate;
+    return f;
+}
+
+} // namespace
+
+TEST_CASE("the lab report compares small efficiencies and lab 4's noise at 64 and 256 spp",
+          "[grader]") {
+    LabFigures yours, theirs;
+    yours.notebook = {{"branching", figures(2.53, 0.234, 0)},
+                      {"roulette", figures(0.0236, 6.14, 10.1)},
+                      {"roulette_graded", figures(1.24, 0.382, 0.191)}};
+    theirs.notebook = yours.notebook;
+    theirs.notebook["roulette"].efficiency = 0.0118;
+    const std::string md = labReport(branchingAndRoulette(), Rubric{}, yours, theirs, "");
+    // Efficiency ÷ lab 1's: 0.0236/2.53 and 0.0118/2.53, which two decimals both made 0.01.
+    CHECK(md.find("| 0.00933 | 0.00466 |") != std::string::npos);
+    CHECK(md.find("## Lab 4: the noise at 64 and at 256 spp") != std::string::npos);
+    // q = 0.1: 6.14 then 10.1, a ratio of 1.64 (infinite variance); the graded q halves it.
+    CHECK(md.find("| 6.140 | 6.140 | 10.100 | 10.100 | 1.64 | 1.64 |") != std::string::npos);
+    CHECK(md.find("| 0.382 | 0.382 | 0.191 | 0.191 | 0.500 | 0.500 |") != std::string::npos);
+    // Without a sweep, the report says how to make one.
+    CHECK(md.find("No sweep run yet: `make sweep LAB=roulette`") != std::string::npos);
+
+    // A reference stored before lab_figures.json had the late noise: says how to get it.
+    theirs.notebook["roulette"].noiseLate = 0;
+    const std::string older = labReport(branchingAndRoulette(), Rubric{}, yours, theirs, "");
+    CHECK(older.find("not stored (grader make-references --only-figures)") != std::string::npos);
+}
+
+TEST_CASE("the lab report shows the plots make sweep wrote, linked from the report's folder",
+          "[grader]") {
+    const std::string dir = test::temporaryFolder("lab-report-sweeps");
+    const std::string sweeps = dir + "/build/sweep";
+    std::filesystem::create_directories(sweeps + "/roulette-continue-prob");
+    std::filesystem::create_directories(sweeps + "/not-a-sweep"); // no plot: left out
+    std::ofstream(sweeps + "/roulette-continue-prob/sweep.png") << "png";
+    std::ofstream(sweeps + "/roulette-continue-prob/sweep.csv")
+        << "continue_prob,samples_per_second,frame_rate,rays_per_sample,noise_per_sample,"
+           "efficiency,noise,spp,seconds,width,height\n"
+           "0.1,1,1,1,1,0.0104,1,64,1,256,256\n0.8,1,1,1,1,1.46,1,64,1,256,256\n"
+           "0.9,1,1,1,1,1.40,1,64,1,256,256\n";
+    const std::vector<SweepFigure> found = findSweeps(sweeps, dir);
+    REQUIRE(found.size() == 1);
+    CHECK(found[0].plot == "build/sweep/roulette-continue-prob/sweep.png");
+    CHECK(found[0].values == 3);
+    CHECK(found[0].mostEfficient == "0.8");
+    CHECK(findSweeps(dir + "/nowhere", dir).empty());
+
+    const std::string md =
+        labReport(branchingAndRoulette(), Rubric{}, LabFigures{}, std::nullopt, "", found);
+    CHECK(md.find("### roulette: continueProb\n") != std::string::npos);
+    CHECK(md.find("![roulette: frame rate, noise and efficiency against "
+                  "continueProb](build/sweep/roulette-continue-prob/sweep.png)") !=
+          std::string::npos);
+    CHECK(md.find("3 values, numbers in [build/sweep/roulette-continue-prob/sweep.csv]") !=
+          std::string::npos);
+    CHECK(md.find("the most efficient: continueProb 0.8") != std::string::npos);
 }

@@ -27,8 +27,9 @@ Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
    diagnosis "direct light only" and a note that speed is not checked without the solutions;
    once labs/branching.cpp is done (the solution copied in), estimators.lab1 passes while the
    other labs' tests still fail; and with all four labs done, `make grade` passes with the speed
-   points shown apart and prints the speed ratios between labs beside the reference's, and `make
-   report` writes lab-report.md with every figure filled in.
+   points shown apart and prints the speed ratios between labs beside the reference's, `make
+   sweep LAB=roulette` plots the student's lab 4, and `make report` writes lab-report.md with
+   every figure filled in and that plot shown.
 5. The targets that need the solutions say so in one line and exit non-zero (`make bench`).
 """
 import glob
@@ -139,7 +140,9 @@ def check_contents(root, files):
                  "handouts/01-branching.md", "models/cornell_box_VI2_Specular.ecs",
                  "tests/support/test_support.cpp", "tests/estimators/furnace_test.cpp",
                  "tests/handouts/handouts_test.py", "handouts/tools/make_html.py",
-                 "grader/references/lab_figures.json", "scripts/run-default-scene.sh"):
+                 "grader/references/lab_figures.json", "scripts/run-default-scene.sh",
+                 "scripts/sweep.py", "scripts/sweep.gp", "tests/sweep/sweep_test.py",
+                 "handouts/figures/roulette_sweep.csv", "handouts/figures/depth_sweep.csv"):
         check(present(path), f"the release holds {path}")
     references = {os.path.relpath(p, KIT)
                   for p in glob.glob(os.path.join(KIT, "grader", "references", "*"))}
@@ -239,7 +242,7 @@ def check_builds_and_tests(root, logs):
     results = ctest_results(output)
     check(status == 0, "make test succeeds in the release" + ("" if status == 0 else
                                                               ":\n" + tail(output)))
-    framework = ("sampling", "scene", "render", "grader", "handouts")
+    framework = ("sampling", "scene", "render", "grader", "handouts", "sweep")
     check(all(results.get(t) == "Passed" for t in framework),
           f"make test ran the framework's and the handouts' tests, which pass: {results}")
     check(not any(name.startswith("estimators") for name in results),
@@ -292,6 +295,13 @@ def check_finished_labs(root, logs):
                             os.path.join(root, "build"), os.path.join(logs, "grader-submission.log"))
     check(status == 2 and "is the instructor's" in output,
           f"grader submission says it is the instructor's: {output.strip()[-160:]!r}")
+    # The student's own experiment, small, so that the report below has a plot to show.
+    status, output, _ = run(["make", "sweep", "LAB=roulette", "VALUES=0.3 0.8", "SIZE=32",
+                             "SPP=4"], root, os.path.join(logs, "make-sweep.log"))
+    plot = os.path.join(root, "build", "sweep", "roulette-continue-prob", "sweep.png")
+    check(status == 0 and os.path.isfile(plot) and "the figures are in" in output,
+          "make sweep LAB=roulette renders the student's lab 4 and plots it" +
+          ("" if status == 0 else ":\n" + tail(output)))
     status, output, _ = run(["make", "report"], root, os.path.join(logs, "make-report.log"))
     report_path = os.path.join(root, "lab-report.md")
     report = open(report_path).read() if os.path.exists(report_path) else ""
@@ -302,6 +312,8 @@ def check_finished_labs(root, logs):
           f"every figure of lab-report.md is filled in ({len(rows)} table rows): {empty[:3]}")
     check("grader/references/lab_figures.json" in report and "cores" in report,
           "the report names the machine the reference's figures were measured on")
+    check("](build/sweep/roulette-continue-prob/sweep.png)" in report,
+          "the report shows the plot of make sweep")
 
 
 def main():

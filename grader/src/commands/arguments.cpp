@@ -43,6 +43,8 @@ options
                       reports (the terminal table is always printed)
   --report FILE.md    a lab report: your notebook's figures (frame rate, noise, efficiency) and
                       the ratios between labs, beside the reference solutions'
+  --sweeps DIR        the plots of make sweep the lab report shows (default: sweep/ beside
+                      the grader, where make sweep writes them)
 
 make-references
   --only-figures      measure only lab_figures.json: the reference solutions' notebook figures
@@ -145,6 +147,7 @@ const std::map<std::string, std::string Arguments::*>& textOptions() {
         {"--gradescope", &Arguments::gradescope},
         {"--html", &Arguments::html},
         {"--report", &Arguments::report},
+        {"--sweeps", &Arguments::sweeps},
         {"--out", &Arguments::out},
         {"--kit", &Arguments::kit},
         {"--reference-cache", &Arguments::referenceCache},
@@ -287,6 +290,7 @@ Arguments parseArguments(int argc, char** argv) {
     if (a.command == "rubric") return a;
     if (a.referenceCache.empty())
         a.referenceCache = (thisProgram().parent_path() / "reference-cache").string();
+    if (a.sweeps.empty()) a.sweeps = (thisProgram().parent_path() / "sweep").string();
     requireWhatTheCommandNeeds(a);
     settleViewers(a);
     return a;

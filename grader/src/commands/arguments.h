@@ -20,6 +20,8 @@ struct Arguments {
     bool revealHidden = false; ///< feedback may name hidden scenes and show their images
     std::string rubric, references;
     std::string json, junit, gradescope, html, report;
+    /// --report: where `make sweep` wrote its plots (default: sweep/ beside the grader).
+    std::string sweeps;
     std::string out; ///< submission, batch, merge: the output folder
     uint64_t seed = 1;
     int threads = 0;

@@ -8,6 +8,7 @@
 #include "isolation/time_limit.h"
 #include "reports/lab_figures.h"
 #include "reports/reports.h"
+#include "reports/sweep_figures.h"
 
 #include "pathlab/input_error.h"
 #include "pathlab/progress_bar.h"
@@ -158,8 +159,10 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
         yours.machine = thisMachine(a.threads);
         yours.notebook = measureNotebook(setup.student, notebookEstimators(a.labs, rubric), rubric,
                                          a.threads, scratch);
+        const std::string reportFolder = std::filesystem::absolute(a.report).parent_path().string();
         writeFileAtomically(a.report,
-                            labReport(report, rubric, yours, stored, observationsIn(a.report)));
+                            labReport(report, rubric, yours, stored, observationsIn(a.report),
+                                      findSweeps(a.sweeps, reportFolder)));
         std::printf("lab report: %s\n", a.report.c_str());
     }
     return report.score() == report.maxScore() ? 0 : 1;

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
+#include <optional>
 #include <thread>
 
 namespace pathlab::grader {
@@ -92,57 +93,70 @@ Machine thisMachine(int threads) {
     return m;
 }
 
+bool measuresLateNoise(const NotebookEstimator& row) { return row.lab == Lab::Roulette; }
+
+namespace {
+
+/// One notebook render of `row` at `spp`: its stats, or why there are none.
+std::optional<RenderStats> notebookRender(const LabRunner& runner, const NotebookEstimator& row,
+                                          int spp, const Rubric& rubric, int threads,
+                                          const std::string& scratch, std::string& failure) {
+    const std::string scene = std::string(PATHLAB_MODELS_DIR) + "/" + rubric.noiseScene + ".ecs";
+    // Longer than a grading render: 64 spp of 512×512 is 1000 times the pixels of one.
+    const ProcessLimits limits{rubric.secondsPerRun * 4 * spp / NotebookSpp, rubric.memoryBytes};
+    // Seed 0, the viewer's default: the command a student types gives these very numbers.
+    const RenderRequest request{
+        &runner,          scene, row.lab, NotebookSize, NotebookSize, spp, rubric.maxDepth,
+        row.continueProb, 0,     1,       threads,      scratch};
+    const RenderResult result = renderLab(request, limits);
+    if (!result.ok) {
+        failure = result.failureKind;
+        return std::nullopt;
+    }
+    try {
+        return readRenderStats(result.images.front().statsFile);
+    } catch (const InputError& e) {
+        failure = "unreadable stats";
+        return std::nullopt;
+    }
+}
+
+} // namespace
+
 std::map<std::string, EstimatorFigures> measureNotebook(const LabRunner& runner,
                                                         const std::vector<NotebookEstimator>& rows,
                                                         const Rubric& rubric, int threads,
                                                         const std::string& scratch) {
-    const std::string scene = std::string(PATHLAB_MODELS_DIR) + "/" + rubric.noiseScene + ".ecs";
-    // Longer than a grading render: 64 spp of 512×512 is 1000 times the pixels of one.
-    const ProcessLimits limits{rubric.secondsPerRun * 4, rubric.memoryBytes};
     std::map<std::string, EstimatorFigures> figures;
     for (const NotebookEstimator& row : rows) {
-        // Seed 0, the viewer's default: the command a student types gives these very numbers.
-        const RenderRequest request{&runner,
-                                    scene,
-                                    row.lab,
-                                    NotebookSize,
-                                    NotebookSize,
-                                    NotebookSpp,
-                                    rubric.maxDepth,
-                                    row.continueProb,
-                                    0,
-                                    1,
-                                    threads,
-                                    scratch};
-        const RenderResult result = renderLab(request, limits);
         EstimatorFigures& f = figures[row.key];
-        if (!result.ok) {
-            f.failure = result.failureKind;
-            continue;
-        }
-        try {
-            const RenderStats s = readRenderStats(result.images.front().statsFile);
-            f.samplesPerSecond = s.samplesPerSecond();
-            f.framesPerSecond = s.framesPerSecond;
-            f.noise = s.noise;
-            f.efficiency = s.efficiency();
-            f.raysPerSample = static_cast<double>(s.rays.total()) /
-                              (static_cast<double>(s.spp) * s.width * s.height);
-        } catch (const InputError& e) {
-            f.failure = "unreadable stats";
-        }
+        const std::optional<RenderStats> s =
+            notebookRender(runner, row, NotebookSpp, rubric, threads, scratch, f.failure);
+        if (!s) continue;
+        f.samplesPerSecond = s->samplesPerSecond();
+        f.framesPerSecond = s->framesPerSecond;
+        f.noise = s->noise;
+        f.efficiency = s->efficiency();
+        f.raysPerSample = static_cast<double>(s->rays.total()) /
+                          (static_cast<double>(s->spp) * s->width * s->height);
+        if (!measuresLateNoise(row)) continue;
+        const std::optional<RenderStats> late =
+            notebookRender(runner, row, NotebookLateSpp, rubric, threads, scratch, f.lateFailure);
+        if (late) f.noiseLate = late->noise;
     }
     return figures;
 }
 
 void saveLabFigures(const std::string& path, const LabFigures& figures, const Rubric& rubric) {
     nlohmann::json notebook = nlohmann::json::object();
-    for (const auto& [key, f] : figures.notebook)
+    for (const auto& [key, f] : figures.notebook) {
         notebook[key] = {{"samples_per_second", f.samplesPerSecond},
                          {"frames_per_second", f.framesPerSecond},
                          {"noise", f.noise},
                          {"efficiency", f.efficiency},
                          {"rays_per_sample", f.raysPerSample}};
+        if (f.noiseLate > 0) notebook[key]["noise_late"] = f.noiseLate;
+    }
     nlohmann::json timed = nlohmann::json::object(), timedSpp = nlohmann::json::object();
     for (Lab lab : AllLabs) {
         timed[std::string(labName(lab))] = figures.timedSamplesPerSecond[lab];
@@ -159,6 +173,7 @@ void saveLabFigures(const std::string& path, const LabFigures& figures, const Ru
           {"width", NotebookSize},
           {"height", NotebookSize},
           {"spp", NotebookSpp},
+          {"late_spp", NotebookLateSpp},
           {"max_depth", rubric.maxDepth},
           {"graded_continue_prob", rubric.continueProb},
           {"estimators", notebook}}},
@@ -185,9 +200,14 @@ LabFigures loadLabFigures(const std::string& path, const Rubric& rubric) {
         figures.machine = {m.at("cpu"),   m.at("system"),  m.at("date"),        m.at("kit_version"),
                            m.at("cores"), m.at("threads"), m.at("load_average")};
         for (const auto& [key, f] : j.at("notebook").at("estimators").items())
-            figures.notebook[key] = {
-                f.at("samples_per_second"), f.at("frames_per_second"), f.at("noise"),
-                f.at("efficiency"),         f.at("rays_per_sample"),   ""};
+            figures.notebook[key] = {f.at("samples_per_second"),
+                                     f.at("frames_per_second"),
+                                     f.at("noise"),
+                                     f.at("efficiency"),
+                                     f.at("rays_per_sample"),
+                                     f.value("noise_late", 0.0),
+                                     "",
+                                     ""};
         const nlohmann::json& t = j.at("timed_runs");
         const bool sameRuns = t.at("scene") == rubric.speedScene &&
                               t.at("width") == rubric.speedWidth &&

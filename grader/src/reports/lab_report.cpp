@@ -2,6 +2,7 @@
 // reference solutions' stored ones, in the terms the handouts use.
 #include "reports/reports.h"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -33,7 +34,9 @@ std::string ratioCell(const std::map<std::string, EstimatorFigures>& figures,
     if (row == figures.end() || branching == figures.end() || !row->second.failure.empty() ||
         !branching->second.failure.empty() || !(branching->second.*field > 0))
         return "not measured";
-    return number(row->second.*field / branching->second.*field, "%.2f");
+    // Three significant digits: lab 4's efficiency is a hundredth of lab 1's, which two decimals
+    // would round to 0.01 whatever the lab.
+    return number(row->second.*field / branching->second.*field, "%#.3g");
 }
 
 const LabGrade* gradeOf(const GradeReport& report, Lab lab) {
@@ -121,6 +124,75 @@ void writeRatiosTable(std::ostream& md, const std::vector<NotebookEstimator>& ro
            << ratioCell(theirs, row.key, &EstimatorFigures::efficiency) << " |\n";
 }
 
+/// A row's noise after NotebookLateSpp, or why there is none.
+std::string lateNoiseCell(const std::map<std::string, EstimatorFigures>& figures,
+                          const std::string& key, bool stored) {
+    const auto found = figures.find(key);
+    if (found == figures.end() || !found->second.failure.empty()) return "not measured";
+    if (!found->second.lateFailure.empty()) return "not measured: " + found->second.lateFailure;
+    if (!(found->second.noiseLate > 0))
+        return stored ? "not stored (grader make-references --only-figures)" : "not measured";
+    return number(found->second.noiseLate, "%.3f");
+}
+
+/// The noise after NotebookLateSpp over the noise after NotebookSpp: 0.5 for an estimator of
+/// finite variance (four times the samples, half the noise).
+std::string lateRatioCell(const std::map<std::string, EstimatorFigures>& figures,
+                          const std::string& key) {
+    const auto found = figures.find(key);
+    if (found == figures.end() || !(found->second.noiseLate > 0) || !(found->second.noise > 0))
+        return "not measured";
+    return number(found->second.noiseLate / found->second.noise, "%#.3g");
+}
+
+/// Lab 4's noise at 64 and at 256 spp, which handout 4 asks for: whether it halves.
+void writeLateNoiseTable(std::ostream& md, const std::vector<NotebookEstimator>& rows,
+                         const std::map<std::string, EstimatorFigures>& yours,
+                         const std::map<std::string, EstimatorFigures>& theirs) {
+    const std::string early = std::to_string(NotebookSpp), late = std::to_string(NotebookLateSpp);
+    md << "\n## Lab 4: the noise at " << early << " and at " << late << " spp\n\n"
+       << "Lab 4's rows rendered again at " << late << " samples per pixel (seed 0, as `--spp "
+       << late
+       << "` renders them): where the variance is finite the noise halves with four times "
+          "the samples (a ratio of 0.5); where it is infinite it need not "
+          "(handouts/04-russian-roulette.md, question 1).\n\n"
+       << "| estimator | noise at " << early << " spp: yours | reference | noise at " << late
+       << " spp: yours | reference | " << late << " ÷ " << early << ": yours | reference |\n"
+       << "|---|--:|--:|--:|--:|--:|--:|\n";
+    for (const NotebookEstimator& row : rows) {
+        if (!measuresLateNoise(row)) continue;
+        md << "| " << row.label << " | " << cell(yours, row.key, &EstimatorFigures::noise, "%.3f")
+           << " | " << cell(theirs, row.key, &EstimatorFigures::noise, "%.3f") << " | "
+           << lateNoiseCell(yours, row.key, false) << " | " << lateNoiseCell(theirs, row.key, true)
+           << " | " << lateRatioCell(yours, row.key) << " | " << lateRatioCell(theirs, row.key)
+           << " |\n";
+    }
+}
+
+/// The student's own experiments (`make sweep`), or how to make them.
+void writeExperiments(std::ostream& md, const std::vector<SweepFigure>& sweeps) {
+    md << "\n## My experiments\n\n";
+    // make convergence's error-versus-time plot of the four labs is to join the sweeps here.
+    if (sweeps.empty()) {
+        md << "No sweep run yet: `make sweep LAB=roulette` renders your lab 4 at continueProb "
+              "0.05 to 0.95, `make sweep LAB=branching PARAM=max-depth` your lab 1 at maxDepth 1 "
+              "to 8, and plots their frame rate, noise and efficiency beside the handout's "
+              "figures; `make report` then shows the plots here.\n";
+        return;
+    }
+    md << "Made by `make sweep` (scripts/sweep.py): your labs rendered at each value, beside the "
+          "handout's figures of the reference solution.\n";
+    for (const SweepFigure& sweep : sweeps) {
+        md << "\n### " << sweep.lab << ": " << sweep.parameter << "\n\n"
+           << "![" << sweep.lab << ": frame rate, noise and efficiency against " << sweep.parameter
+           << "](" << sweep.plot << ")\n\n"
+           << sweep.values << " values, numbers in [" << sweep.table << "](" << sweep.table << ")";
+        if (!sweep.mostEfficient.empty())
+            md << "; the most efficient: " << sweep.parameter << " " << sweep.mostEfficient;
+        md << ".\n";
+    }
+}
+
 /// The grader's verdicts, lab by lab, and how the noise check's statistic differs from the
 /// noise figure above (students compare the two).
 void writeChecksTable(std::ostream& md, const GradeReport& report, const Rubric& rubric) {
@@ -168,7 +240,8 @@ void writeObservations(std::ostream& md, const std::string& observations) {
 } // namespace
 
 std::string labReport(const GradeReport& report, const Rubric& rubric, const LabFigures& yours,
-                      const std::optional<LabFigures>& reference, const std::string& observations) {
+                      const std::optional<LabFigures>& reference, const std::string& observations,
+                      const std::vector<SweepFigure>& sweeps) {
     std::vector<Lab> labs;
     for (const LabGrade& l : report.labs) labs.push_back(l.lab);
     const std::vector<NotebookEstimator> rows = notebookEstimators(labs, rubric);
@@ -178,6 +251,9 @@ std::string labReport(const GradeReport& report, const Rubric& rubric, const Lab
     writeIntroduction(md, rubric, yours, reference);
     writeFiguresTable(md, report, rows, yours.notebook, theirs);
     if (yours.notebook.count("branching")) writeRatiosTable(md, rows, yours.notebook, theirs);
+    if (std::any_of(rows.begin(), rows.end(), measuresLateNoise))
+        writeLateNoiseTable(md, rows, yours.notebook, theirs);
+    writeExperiments(md, sweeps);
     writeChecksTable(md, report, rubric);
     writeObservations(md, observations);
     return md.str();

@@ -3,6 +3,7 @@
 
 #include "checks/check_result.h"
 #include "reports/lab_figures.h"
+#include "reports/sweep_figures.h"
 
 #include <optional>
 #include <string>
@@ -37,10 +38,13 @@ std::string junitReport(const GradeReport& report);
 std::string gradescopeReport(const GradeReport& report, const std::string& hiddenVisibility);
 /// A Markdown lab report for a student to hand in: the notebook's figures (frame rate, noise,
 /// efficiency) of each lab beside the reference solutions' stored ones, the ratios between labs,
-/// and the grader's verdicts; then the student's own section, "What I observed": `observations`
-/// as it stands in the report being replaced (observationsIn), or a prompt when there is none.
+/// lab 4's noise at 64 and 256 spp, the student's `make sweep` plots (`sweeps`, or how to make
+/// them), and the grader's verdicts; then the student's own section, "What I observed":
+/// `observations` as it stands in the report being replaced (observationsIn), or a prompt when
+/// there is none.
 std::string labReport(const GradeReport& report, const Rubric& rubric, const LabFigures& yours,
-                      const std::optional<LabFigures>& reference, const std::string& observations);
+                      const std::optional<LabFigures>& reference, const std::string& observations,
+                      const std::vector<SweepFigure>& sweeps = {});
 /// What a student wrote under "## What I observed" in the report at `path` ("" if none): kept when
 /// `make report` writes the report again.
 std::string observationsIn(const std::string& path);

@@ -1,0 +1,387 @@
+#!/usr/bin/env python3
+"""`make sweep`: one lab rendered at a range of values of one of its parameters, and plotted.
+
+Usage: sweep.py --build BUILD [--lab LAB] [--param PARAM] [--values "V1 V2 ..."] [--size N]
+                [--spp N] [--solution] [--out DIR]
+       sweep.py --check [the same options]      check them, render nothing, write nothing
+
+The student's own labs/LAB.cpp (the viewer's default implementation; --solution for the
+reference solution, which only the instructor's kit has) is rendered headless on the VI2 Cornell
+box, the handouts' scene, once per value (`viewer ... --spp N -o VALUE.png --stats VALUE.json`),
+at SIZE×SIZE pixels and N samples per pixel, seed 0. PARAM is what the lab lets you choose:
+
+  continue-prob   lab 4 (roulette): Russian roulette's continueProb, values in (0, 1)
+  max-depth       labs 1-3: the depth limit, whole numbers from 0
+
+(each does nothing in the other labs, so asking for it there is refused). Writes, into
+BUILD/sweep/LAB-PARAM/ (printed at the end):
+
+  sweep.csv     one row per value (the columns: CSV_COLUMNS below)
+  sweep.png     frame rate, noise of one sample and efficiency against the value: yours, and
+                the handout's figures of the reference solution beside them
+  handout.csv   those handout figures, in the same columns (from handouts/figures/
+                roulette_sweep.csv or depth_sweep.csv, at this sweep's image size)
+  renders/      each value's image and --stats file
+
+Bad input (an unknown LAB or PARAM, a value out of range) is one line naming it, exit status 2,
+and nothing written. Python 3 standard library and gnuplot (scripts/install-deps.sh installs it).
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+KIT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCENE = os.path.join(KIT, "models", "cornell_box_VI2_Specular.ecs")
+FIGURES = os.path.join(KIT, "handouts", "figures")
+PLOT = os.path.join(KIT, "scripts", "sweep.gp")
+DEFAULT_SIZE, DEFAULT_SPP = 256, 64
+# The plot's size in pixels (scripts/sweep.gp draws three panels side by side).
+PLOT_WIDTH, PLOT_HEIGHT = 1500, 480
+# After the parameter's own column, the same six figures as handout.csv, then the render's own.
+FIGURE_COLUMNS = ["samples_per_second", "frame_rate", "rays_per_sample", "noise_per_sample",
+                  "efficiency"]
+RENDER_COLUMNS = ["noise", "spp", "seconds", "width", "height"]
+
+
+class UsageError(Exception):
+    """Bad input: said in one line, exit status 2, nothing written."""
+
+
+class Parameter:
+    """A lab parameter the viewer takes: its option, its CSV column and its range."""
+
+    def __init__(self, option, column, label, estimate, defaults, handout_csv):
+        self.option, self.column, self.label = option, column, label
+        self.estimate = estimate        # the labs it matters in (framework/lab_list.txt)
+        self.defaults = defaults
+        self.handout_csv = handout_csv  # the reference's figures, in handouts/figures/
+
+    def parse(self, text):
+        if self.option == "continue-prob":
+            try:
+                q = float(text)
+            except ValueError:
+                raise UsageError(f"VALUES: {text!r} is not a number (continueProb is in (0, 1))")
+            if q == 1:
+                raise UsageError("VALUES: continueProb 1 never ends a path; the viewer refuses it "
+                                 "(handouts/04-russian-roulette.md, question 5): use values in (0, 1)")
+            if not 0 < q < 1:
+                raise UsageError(f"VALUES: continueProb {text} is outside (0, 1)")
+            return q
+        try:
+            depth = int(text)
+        except ValueError:
+            raise UsageError(f"VALUES: {text!r} is not a whole number (max-depth is 0 or more)")
+        if depth < 0:
+            raise UsageError(f"VALUES: max-depth {depth} is below 0")
+        if depth > 1000:
+            raise UsageError(f"VALUES: max-depth {depth} is above 1000, the viewer's limit")
+        return depth
+
+
+PARAMETERS = {
+    "continue-prob": Parameter("continue-prob", "continue_prob", "continueProb", "unbiased",
+                               [0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95],
+                               "roulette_sweep.csv"),
+    "max-depth": Parameter("max-depth", "max_depth", "maxDepth", "depth-limited",
+                           [1, 2, 3, 4, 5, 6, 7, 8], "depth_sweep.csv"),
+}
+
+
+def labs_and_estimates():
+    """{lab: "depth-limited" | "unbiased"}, in the handouts' order (framework/lab_list.txt)."""
+    labs = {}
+    with open(os.path.join(KIT, "framework", "lab_list.txt")) as f:
+        for line in f:
+            fields = line.split()
+            if fields and not fields[0].startswith("#"):
+                labs[fields[0]] = fields[2]
+    return labs
+
+
+class Sweep:
+    """What to render: checked options."""
+
+    def __init__(self, lab, parameter, values, size, spp, solution):
+        self.lab, self.parameter, self.values = lab, parameter, values
+        self.size, self.spp, self.solution = size, spp, solution
+
+    def name(self):
+        return f"{self.lab}-{self.parameter.option}"
+
+    def describe(self, value):
+        return f"{self.parameter.label} {value:g}"
+
+
+def whole_number(name, text, default, low, high):
+    if text == "":
+        return default
+    try:
+        value = int(text)
+    except ValueError:
+        raise UsageError(f"{name}={text} is not a whole number")
+    if not low <= value <= high:
+        raise UsageError(f"{name}={value} is outside {low} to {high}")
+    return value
+
+
+def checked_sweep(args):
+    """The sweep the options ask for; UsageError for bad input."""
+    labs = labs_and_estimates()
+    lab = args.lab or "roulette"
+    if lab not in labs:
+        raise UsageError(f"LAB={lab} is not a lab: {', '.join(labs)}")
+    by_estimate = {p.estimate: p for p in PARAMETERS.values()}
+    name = args.param or by_estimate[labs[lab]].option
+    if name not in PARAMETERS:
+        raise UsageError(f"PARAM={name} is not a parameter: continue-prob (lab 4, roulette) or "
+                         "max-depth (labs 1-3)")
+    parameter = PARAMETERS[name]
+    if parameter.estimate != labs[lab]:
+        if name == "continue-prob":
+            raise UsageError(f"PARAM=continue-prob does nothing in lab {lab}: only roulette (lab 4) "
+                             f"plays Russian roulette; sweep PARAM=max-depth there")
+        raise UsageError(f"PARAM=max-depth does nothing in lab {lab}: it has no depth limit "
+                         "(handouts/04-russian-roulette.md); sweep PARAM=continue-prob there")
+    texts = args.values.replace(",", " ").split()
+    values = sorted({parameter.parse(t) for t in texts}) if texts else parameter.defaults
+    size = whole_number("SIZE", args.size, DEFAULT_SIZE, 8, 4096)
+    spp = whole_number("SPP", args.spp, DEFAULT_SPP, 1, 1 << 20)
+    return Sweep(lab, parameter, values, size, spp, args.solution)
+
+
+def viewer_command(viewer, sweep, value, spp, image, stats, size=None):
+    size = size or sweep.size
+    return [viewer, "-c", SCENE, "--lab", sweep.lab, *(["--solution"] if sweep.solution else []),
+            f"--{sweep.parameter.option}", f"{value:g}", "--spp", str(spp),
+            "--size", str(size), str(size), "--seed", "0", "-o", image, "--stats", stats]
+
+
+class RenderFailed(Exception):
+    pass
+
+
+def render(viewer, sweep, value, spp, folder, name, size=None):
+    """One headless render; returns its --stats as a dict, "wall_seconds" added."""
+    image, stats = os.path.join(folder, name + ".png"), os.path.join(folder, name + ".json")
+    start = time.monotonic()
+    run = subprocess.run(viewer_command(viewer, sweep, value, spp, image, stats, size),
+                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                         errors="replace")
+    # The TODO warnings are summed up once, before the renders (todo_line).
+    problems = [line for line in run.stderr.splitlines() if "is not done yet" not in line]
+    if run.returncode != 0:
+        raise RenderFailed("\n".join(problems + [
+            f"make sweep: the render at {sweep.describe(value)} failed "
+            f"(viewer exit status {run.returncode})"]))
+    for line in problems:
+        print(f"  {line}", file=sys.stderr)
+    with open(stats) as f:
+        result = json.load(f)
+    result["wall_seconds"] = time.monotonic() - start
+    return result
+
+
+def todo_line(sweep):
+    """The steps of the student's lab still marked PATHLAB_TODO, as make run lists them."""
+    if sweep.solution:
+        return None
+    with open(os.path.join(KIT, "labs", sweep.lab + ".cpp")) as f:
+        steps = [line.split('PATHLAB_TODO("', 1)[1].split('"', 1)[0]
+                 for line in f if 'PATHLAB_TODO("' in line]
+    if not steps:
+        return None
+    return (f"make sweep: labs/{sweep.lab}.cpp has steps still to write: {' '.join(steps)}; "
+            "the sweep measures the lab as it is")
+
+
+def estimate_seconds(viewer, sweep, folder):
+    """Seconds the sweep should take, from two short probes at its cheapest and dearest values
+    (the smallest and the largest: longer paths cost more): each value's start-up, and its time
+    per sample per pixel interpolated between theirs. The cost grows faster than linearly with
+    continueProb, so this errs on the long side."""
+    probe_spp = min(sweep.spp, 4)
+    low, high = min(sweep.values), max(sweep.values)
+    probes = {}
+    for value in sorted({low, high}):
+        stats = render(viewer, sweep, value, probe_spp, folder, "probe")
+        probes[value] = (max(stats["wall_seconds"] - stats["seconds"], 0),
+                         stats["seconds"] / probe_spp)
+    total = 0
+    for value in sweep.values:
+        t = (value - low) / (high - low) if high > low else 0
+        start_up, per_spp = [(1 - t) * a + t * b for a, b in zip(probes[low], probes[high])]
+        total += start_up + per_spp * sweep.spp
+    return total
+
+
+def figures_row(stats, column, value):
+    """One CSV row from a render's --stats."""
+    pixels = stats["width"] * stats["height"]
+    rays = stats["rays"]["intersect"] + stats["rays"]["occluded"]
+    return {column: value,
+            "samples_per_second": round(stats["samples_per_second"]),
+            "frame_rate": f"{stats['samples_per_second'] / pixels:.4g}",
+            "rays_per_sample": f"{rays / (stats['spp'] * pixels):.4g}",
+            "noise_per_sample": f"{stats['noise'] * math.sqrt(stats['spp']):.4g}",
+            "efficiency": f"{stats['efficiency']:.4g}",
+            "noise": f"{stats['noise']:.4g}", "spp": stats["spp"],
+            "seconds": f"{stats['seconds']:.4g}", "width": stats["width"],
+            "height": stats["height"]}
+
+
+def measure(viewer, sweep, folder, report=print):
+    """Renders every value into FOLDER; returns the CSV rows."""
+    rows = []
+    for value in sweep.values:
+        stats = render(viewer, sweep, value, sweep.spp, folder, f"{value:g}")
+        rows.append(figures_row(stats, sweep.parameter.column, value))
+        report(f"  {sweep.describe(value)}: {sweep.spp} spp in {stats['seconds']:.2f} s, "
+               f"{stats['samples_per_second'] / 1e6:.3g} M samples/s, noise {stats['noise']:.4g}, "
+               f"efficiency {stats['efficiency']:.3g}"
+               + (f" ({stats['nonfinite_pixels']} NaN or infinite pixels left out)"
+                  if stats.get("nonfinite_pixels") else ""))
+    return rows
+
+
+def handout_rows(sweep):
+    """The reference solution's figures from the handouts, at this sweep's image size: a
+    render's efficiency 1/(noise² s) is samples/s ÷ (pixels × noise of one sample²), so it is
+    recomputed for these pixels from the handout's samples/s and noise of one sample. [] when
+    the handouts have none for this lab."""
+    path = os.path.join(FIGURES, sweep.parameter.handout_csv)
+    if not os.path.exists(path):
+        return []
+    pixels = sweep.size * sweep.size
+    rows = []
+    with open(path, newline="") as f:
+        for row in csv.DictReader(f):
+            if row.get("lab", sweep.lab) != sweep.lab:
+                continue
+            rate, sigma = float(row["samples_per_second"]), float(row["noise_per_sample"])
+            rows.append({sweep.parameter.column: row[sweep.parameter.column],
+                         "samples_per_second": round(rate),
+                         "frame_rate": f"{rate / pixels:.4g}",
+                         "rays_per_sample": row["rays_per_sample"],
+                         "noise_per_sample": row["noise_per_sample"],
+                         "efficiency": f"{rate / (pixels * sigma * sigma):.4g}"})
+    return rows
+
+
+def write_csv(path, rows, columns):
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=columns, lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+
+
+def plot(sweep, folder, has_handout):
+    whose = "the reference solution" if sweep.solution else f"your labs/{sweep.lab}.cpp"
+    title = (f"{whose} on the VI2 Cornell box, {sweep.size}x{sweep.size} pixels, {sweep.spp} "
+             "samples per pixel each")
+    variables = {"data": "sweep.csv", "handout": "handout.csv" if has_handout else "",
+                 "out": "sweep.png", "xlabel": sweep.parameter.label, "title": title,
+                 "yours": "the reference solution here" if sweep.solution else "yours",
+                 "pixels": f"{sweep.size}x{sweep.size}", "width": PLOT_WIDTH,
+                 "height": PLOT_HEIGHT,
+                 "xmin": 0 if sweep.parameter.option == "continue-prob" else min(sweep.values) - 0.5,
+                 "xmax": 1 if sweep.parameter.option == "continue-prob" else max(sweep.values) + 0.5}
+    definitions = "; ".join(f"{k}='{v}'" if isinstance(v, str) else f"{k}={v}"
+                            for k, v in variables.items())
+    run = subprocess.run(["gnuplot", "-e", definitions, PLOT], cwd=folder, capture_output=True,
+                         text=True)
+    if run.returncode != 0:
+        raise RenderFailed(run.stderr.strip() + "\nmake sweep: gnuplot could not draw sweep.png")
+
+
+def run_sweep(viewer, sweep, out):
+    """Renders, writes and plots into OUT (replaced only once all of it is made)."""
+    if not os.access(viewer, os.X_OK):
+        raise RenderFailed(f"make sweep: no viewer at {viewer} (make build builds it)")
+    if not shutil.which("gnuplot"):
+        raise RenderFailed("make sweep: gnuplot is needed for the plots "
+                           "(scripts/install-deps.sh installs it)")
+    parent = os.path.dirname(os.path.abspath(out))
+    os.makedirs(parent, exist_ok=True)
+    work = tempfile.mkdtemp(prefix=f".{os.path.basename(out)}-", dir=parent)
+    try:
+        renders = os.path.join(work, "renders")
+        os.makedirs(renders)
+        todo = todo_line(sweep)
+        if todo:
+            print(todo)
+        seconds = estimate_seconds(viewer, sweep, work)
+        whose = "reference solution" if sweep.solution else f"labs/{sweep.lab}.cpp"
+        print(f"make sweep: {len(sweep.values)} renders of {whose} at {sweep.size}x{sweep.size} "
+              f"pixels, {sweep.spp} spp each, {sweep.parameter.label} "
+              f"{' '.join(f'{v:g}' for v in sweep.values)}: about {max(seconds, 1):.0f} s",
+              flush=True)
+        for name in ("probe.png", "probe.json"):
+            os.remove(os.path.join(work, name))
+        started = time.monotonic()
+        rows = measure(viewer, sweep, renders, lambda line: print(line, flush=True))
+        columns = [sweep.parameter.column] + FIGURE_COLUMNS
+        write_csv(os.path.join(work, "sweep.csv"), rows, columns + RENDER_COLUMNS)
+        reference = handout_rows(sweep)
+        if reference:
+            write_csv(os.path.join(work, "handout.csv"), reference, columns)
+        else:
+            print(f"make sweep: the handouts have no figures of lab {sweep.lab}'s "
+                  f"{sweep.parameter.label} (handouts/figures/{sweep.parameter.handout_csv}); "
+                  "the plot shows yours alone")
+        plot(sweep, work, bool(reference))
+        if os.path.isdir(out):
+            shutil.rmtree(out)
+        os.replace(work, out)
+    finally:
+        if os.path.isdir(work):
+            shutil.rmtree(work)
+    best = max(rows, key=lambda r: float(r["efficiency"]))
+    print(f"make sweep: done in {time.monotonic() - started:.0f} s; most efficient here: "
+          f"{sweep.parameter.label} {best[sweep.parameter.column]:g}")
+    made = ["sweep.csv", "sweep.png"] + (["handout.csv"] if reference else []) + ["renders/"]
+    print(f"make sweep: the figures are in {os.path.abspath(out)}/ ({', '.join(made)})")
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--build", default="build", help="the build folder holding viewer")
+    parser.add_argument("--lab", default="", help="branching | uniform | importance | roulette "
+                                                  "(default roulette)")
+    parser.add_argument("--param", default="", help="continue-prob (lab 4) or max-depth (labs "
+                                                    "1-3); default: the lab's")
+    parser.add_argument("--values", default="", help="the values, apart by spaces or commas")
+    parser.add_argument("--size", default="", help=f"pixels per side (default {DEFAULT_SIZE})")
+    parser.add_argument("--spp", default="", help=f"samples per pixel (default {DEFAULT_SPP})")
+    parser.add_argument("--solution", action="store_true",
+                        help="the reference solution instead of labs/ (the instructor's kit)")
+    parser.add_argument("--out", help="the output folder (default BUILD/sweep/LAB-PARAM)")
+    parser.add_argument("--check", action="store_true", help="check the options only")
+    args = parser.parse_args(argv)
+    try:
+        sweep = checked_sweep(args)
+        if sweep.solution and not os.path.isdir(os.path.join(KIT, "solutions")):
+            raise UsageError("--solution: this kit has no reference solutions (solutions/)")
+    except UsageError as e:
+        print(f"make sweep: {e}", file=sys.stderr)
+        return 2
+    if args.check:
+        return 0
+    out = args.out or os.path.join(args.build, "sweep", sweep.name())
+    try:
+        run_sweep(os.path.join(args.build, "viewer"), sweep, out)
+    except RenderFailed as e:
+        print(f"{e}; nothing written", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

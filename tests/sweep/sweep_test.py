@@ -1,0 +1,133 @@
+#!/usr/bin/env python3
+"""make sweep (scripts/sweep.py), ctest label `sweep`: it runs here and in the student release.
+
+Usage: sweep_test.py --build BUILD --source KIT
+
+Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
+1. A tiny sweep of each parameter (16×16 pixels, 2 spp, two values) on the labs of labs/ as they
+   are: exit 0, a time estimate line before the renders and the output folder named at the end;
+   sweep.csv has one row per value, the value first, every figure finite and positive;
+   sweep.png is a PNG of the plot's size; handout.csv holds the handout's figures.
+2. Bad input (an unknown LAB or PARAM, a parameter the lab does not have, a value out of range,
+   a size that is not a number) is one line naming it and exit status 2, from the script and
+   from `make sweep`, and writes nothing: no output folder, no build folder.
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import struct
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from checks import check, exit_code  # noqa: E402
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--build", required=True)
+parser.add_argument("--source", required=True)
+args = parser.parse_args()
+SWEEP = os.path.join(args.source, "scripts", "sweep.py")
+sys.path.insert(0, os.path.dirname(SWEEP))
+import sweep as sweep_script  # noqa: E402
+
+FIGURES = ["samples_per_second", "frame_rate", "rays_per_sample", "noise_per_sample",
+           "efficiency", "noise", "seconds"]
+
+
+def png_size(path):
+    """(width, height) of a PNG, or None when the file is not one."""
+    with open(path, "rb") as f:
+        head = f.read(24)
+    if len(head) < 24 or head[:8] != b"\x89PNG\r\n\x1a\n" or head[12:16] != b"IHDR":
+        return None
+    return struct.unpack(">II", head[16:24])
+
+
+def run(arguments, cwd=None):
+    env = {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
+    return subprocess.run(arguments, capture_output=True, text=True, cwd=cwd, env=env)
+
+
+def check_sweep(scratch, lab, param, values, column):
+    out = os.path.join(scratch, f"{lab}-{param}")
+    result = run([sys.executable, SWEEP, "--build", args.build, "--lab", lab, "--param", param,
+                  "--values", values, "--size", "16", "--spp", "2", "--out", out])
+    name = f"sweep of {lab}'s {param} at {values}"
+    check(result.returncode == 0, f"{name}: exit 0" +
+          ("" if result.returncode == 0 else f": {result.stdout[-600:]}{result.stderr[-600:]}"))
+    if result.returncode != 0:
+        return
+    lines = result.stdout.splitlines()
+    estimate = next((i for i, line in enumerate(lines) if re.search(r": about \d+ s$", line)),
+                    None)
+    first_render = next((i for i, line in enumerate(lines) if line.startswith("  ")), None)
+    check(estimate is not None and first_render is not None and estimate < first_render,
+          f"{name}: a time estimate line before the renders")
+    check(f"the figures are in {os.path.abspath(out)}/" in lines[-1],
+          f"{name}: the last line names the output folder: {lines[-1]!r}")
+    with open(os.path.join(out, "sweep.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    wanted = [float(v) for v in values.split()]
+    check([float(r[column]) for r in rows] == wanted,
+          f"{name}: sweep.csv has a row per value, in column {column}")
+    bad = [(r[column], k, r.get(k)) for r in rows for k in FIGURES
+           if not (r.get(k) and math.isfinite(float(r[k])) and float(r[k]) > 0)]
+    check(not bad, f"{name}: every figure finite and positive {bad[:3] if bad else ''}")
+    size = png_size(os.path.join(out, "sweep.png"))
+    check(size == (sweep_script.PLOT_WIDTH, sweep_script.PLOT_HEIGHT),
+          f"{name}: sweep.png is a {sweep_script.PLOT_WIDTH}x{sweep_script.PLOT_HEIGHT} PNG: {size}")
+    with open(os.path.join(out, "handout.csv"), newline="") as f:
+        handout = list(csv.DictReader(f))
+    check(len(handout) >= 2 and all(float(r["efficiency"]) > 0 for r in handout),
+          f"{name}: handout.csv holds the handout's figures ({len(handout)} rows)")
+    renders = sorted(os.listdir(os.path.join(out, "renders")))
+    check(len(renders) == 2 * len(wanted), f"{name}: an image and a stats file per value")
+
+
+def check_bad_input(scratch):
+    cases = [("--lab nolab", "LAB=nolab"),
+             ("--lab roulette --param depth", "PARAM=depth"),
+             ("--lab roulette --param max-depth", "PARAM=max-depth does nothing in lab roulette"),
+             ("--lab uniform --param continue-prob", "PARAM=continue-prob does nothing"),
+             ("--lab roulette --values 0", "continueProb 0 is outside"),
+             ("--lab roulette --values '0.5 1'", "continueProb 1 never ends"),
+             ("--lab roulette --values 1.5", "continueProb 1.5 is outside"),
+             ("--lab branching --values -1", "max-depth -1 is below 0"),
+             ("--lab importance --values 2.5", "'2.5' is not a whole number"),
+             ("--size big", "SIZE=big")]
+    for options, words in cases:
+        out = os.path.join(scratch, "bad")
+        result = run(["sh", "-c", f"{sys.executable} {SWEEP} --build {args.build} {options} "
+                                  f"--out {out}"])
+        lines = result.stderr.strip().splitlines()
+        check(result.returncode == 2 and len(lines) == 1 and words in lines[0] and
+              not result.stdout and not os.path.exists(out),
+              f"sweep.py {options}: exit 2, one line naming it, nothing written: "
+              f"{result.returncode} {lines}")
+    # Through make: the options are checked before anything is configured or built.
+    for variables, words in [(["LAB=nolab"], "LAB=nolab"),
+                             (["LAB=roulette", "VALUES=0.2 2"], "continueProb 2 is outside"),
+                             (["LAB=branching", "PARAM=max-depth", "VALUES=-3"], "below 0")]:
+        build = os.path.join(scratch, "make-build")
+        result = run(["make", "--no-print-directory", "sweep", f"BUILD={build}", *variables],
+                     cwd=args.source)
+        ours = [line for line in result.stderr.splitlines() if line.startswith("make sweep:")]
+        check(result.returncode == 2 and len(ours) == 1 and words in ours[0] and
+              not os.path.exists(build),
+              f"make sweep {' '.join(variables)}: exit 2, one line naming it, nothing written: "
+              f"{result.returncode} {ours}")
+
+
+def main():
+    with tempfile.TemporaryDirectory(prefix="pathlab-sweep-test-") as scratch:
+        check_sweep(scratch, "roulette", "continue-prob", "0.2 0.8", "continue_prob")
+        check_sweep(scratch, "branching", "max-depth", "1 3", "max_depth")
+        check_bad_input(scratch)
+    return exit_code()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
