@@ -9,7 +9,7 @@ NATIVE ?= ON
 # off by default, so that a newer compiler's new warning does not stop a student's build.
 WARNINGS_AS_ERRORS ?= OFF
 
-.PHONY: run configure build test test-labs test-slow grade report sweep bench profile deps clean \
+.PHONY: run configure build test test-labs test-slow grade report sweep inspect bench profile deps clean \
         handouts handouts-html student-release gradescope
 
 # The student release has no solutions/: there the lab tests (ctest label `labs`) check your own
@@ -77,6 +77,20 @@ sweep:
 	@$(MAKE) --no-print-directory configure
 	@cmake --build $(BUILD) -j $(JOBS) --target viewer
 	@python3 scripts/sweep.py --build $(BUILD) $(SWEEP_OPTIONS)
+
+# One pixel's samples through your lab, path by path (viewer --inspect): each vertex's material,
+# the ray that arrived, the emission and direct light added, your throughput, the component you
+# picked and the probability you divided by, the roulette draw; beside the reference solution's
+# on the same random numbers, with the first vertex where they part, where the kit has it (the
+# student release has no solutions: there it shows your lab's paths alone). X and Y name the
+# pixel of the 512x512 Cornell box (0 0 the top left); LAB=roulette for another lab (default
+# branching), SAMPLES=16 for more samples, ARGS="--continue-prob 0.8" for other parameters.
+INSPECT_SCENE = models/cornell_box_VI2_Specular.ecs
+inspect: configure
+	@test -n "$(X)" -a -n "$(Y)" || { echo "make inspect: give the pixel, e.g. make inspect LAB=roulette X=30 Y=256" >&2; exit 2; }
+	@cmake --build $(BUILD) -j $(JOBS) --target viewer
+	@cd $(BUILD) && ./viewer -c $(INSPECT_SCENE) --lab $(or $(LAB),branching) --inspect $(X) $(Y) \
+	    --inspect-samples $(or $(SAMPLES),8) $(ARGS)
 
 # (make convergence, the error-versus-time plot of your four labs as
 # handouts/figures/convergence.png shows the reference's, is to come here, into

@@ -57,7 +57,7 @@ void appendRow(std::string& out, const char* format, const std::string& a, const
 } // namespace
 
 std::string inspectionTable(const PixelInspection& inspection) {
-    const char* format = "  %-3s %-11s %-4s %-24s %-13s %-13s %-13s %s\n";
+    const char* format = "  %-3s %-11s %-4s %-24s %-18s %-18s %-20s %s\n";
     std::string out = inspection.lab + " (" + inspection.implementation + "), pixel (" +
                       std::to_string(inspection.x) + ", " + std::to_string(inspection.y) +
                       "), seed " + std::to_string(inspection.seed) + "\n";
@@ -78,6 +78,10 @@ std::string inspectionTable(const PixelInspection& inspection) {
                       v.directLightCalled ? colour(v.directLightAdded) : "not asked", wentOn(v));
         }
     }
+    out +=
+        "(throughput: the weight the lab gave light found at the vertex; emission + and direct +:\n"
+        " what it added there; went on by: the ray to the next vertex and the probability divided\n"
+        " by, ? where it cannot be measured, as for a ray that left the scene.)\n";
     return out;
 }
 

@@ -186,14 +186,18 @@ private:
                                  const InspectedCall& call) {
         const std::string draw =
             call.drawsBefore.empty() ? "" : " (draw " + number(call.drawsBefore.front()) + ")";
+        const std::string ours = x.arrivedBy == "unknown"
+                                     ? "a ray of its own making (not diffuseRay, mirrorRay or "
+                                       "refractionRay)"
+                                     : "a " + x.arrivedBy + " ray";
         if (labNumber(lab_.lab) == 1)
             return divergence(at, "pick", componentStep(y.arrivedBy),
-                              "at " + vertexName(at) + " your lab sent a " + x.arrivedBy +
-                                  " ray where the reference sent a " + y.arrivedBy + " ray");
+                              "at " + vertexName(at) + " your lab sent " + ours +
+                                  " where the reference sent a " + y.arrivedBy + " ray");
         return divergence(at, "pick", pickStep(),
                           "at " + vertexName(at) + ", with the same random numbers" + draw +
-                              ", your lab picked the " + x.arrivedBy + " ray, the reference the " +
-                              y.arrivedBy + " ray");
+                              ", your lab sent " + ours + ", the reference a " + y.arrivedBy +
+                              " ray");
     }
 
     std::optional<PathDivergence> differentWeights() {

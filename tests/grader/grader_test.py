@@ -139,6 +139,7 @@ def mutants(tmp, slow):
     table = json.load(open(os.path.join(args.source, "tests", "grader", "mutants.json")))["mutants"]
     rubric = fast_rubric(tmp)
     rows = []
+    replays = {"ran": 0, "named": 0}
     for name, m in sorted(table.items()):
         if m.get("slow", False) != slow:
             continue
@@ -163,7 +164,17 @@ def mutants(tmp, slow):
         check(report is not None and target is not None and passed == should_pass and not missing,
               f"mutant {name}: {target_name} {'passes' if should_pass else 'fails'} and says "
               f"{says}" + (f" (missing: {missing}; it said: {text[:600]})" if missing else ""))
+        replay = next((d for d in (target or {}).get("details", []) if d.startswith("replay:")), None)
+        if replay:
+            replays["ran"] += 1
+            replays["named"] += "replay" in m and m["replay"] in replay
+        if "replay" in m:
+            check(replay is not None and m["replay"] in replay,
+                  f"mutant {name}: the replay beside the reference says '{m['replay']}'"
+                  + ("" if replay and m["replay"] in replay else f" (it said: {replay})"))
     print("\n| mutant | lab | verdict | diagnosis |\n|---|---|---|---|\n" + "\n".join(rows) + "\n")
+    print(f"the replay ran for {replays['ran']} mutants and said what mutants.json expects for "
+          f"{replays['named']} of them")
 
 
 def false_fail_validation(tmp, gradings=200):

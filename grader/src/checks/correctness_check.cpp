@@ -332,15 +332,22 @@ void explainRejection(const GraderSetup& setup, Lab lab, const SceneComparisons&
             attempt.diagnosis = causeName(causes.front());
         }
     }
-    // One pixel of the first public scene that differs, replayed beside the reference: where the
-    // paths part names a step the furnaces' numbers cannot (worst_tile_replay.h).
+    // A pixel of each public scene that differs, replayed beside the reference until one's paths
+    // part: where they part names a step the furnaces' numbers cannot (worst_tile_replay.h).
+    ReplayFinding agreed;
     for (size_t s = 0; s < setup.scenes.size(); ++s) {
         if (setup.scenes[s].hidden || !sceneRejected[s]) continue;
-        const std::string replay =
+        const ReplayFinding replay =
             replayWorstTile(setup, lab, setup.scenes[s], found.scenes[s].t, seed);
-        if (!replay.empty()) attempt.details.push_back("replay: " + replay);
-        break;
+        if (replay.diverged) {
+            attempt.details.push_back("replay: " + replay.text);
+            return;
+        }
+        if (agreed.text.empty()) agreed = replay;
     }
+    if (!agreed.text.empty())
+        attempt.details.push_back("replay: " + agreed.text +
+                                  " (what differs lies on paths these samples did not take)");
 }
 
 /// One attempt of the correctness check over all scenes. `noise`: the figure of an earlier

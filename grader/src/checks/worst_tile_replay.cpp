@@ -15,7 +15,7 @@ namespace {
 /// Enough samples that a path reaching the bug (a bounce at maxDepth, a roulette draw that goes
 /// on) is among them in nearly every pixel, few enough that the replay costs a fraction of a
 /// second.
-constexpr int ReplaySamples = 32;
+constexpr int ReplaySamples = 64;
 
 RenderResult replayThrough(const GraderSetup& setup, const LabRunner& runner, Lab lab,
                            const GradingScene& scene, TilePixel pixel, uint64_t seed) {
@@ -52,23 +52,25 @@ TilePixel worstTilePixel(const std::vector<double>& t, int tiles, int width, int
     return {(2 * column + 1) * width / (2 * tiles), (2 * row + 1) * height / (2 * tiles)};
 }
 
-std::string replayWorstTile(const GraderSetup& setup, Lab lab, const GradingScene& scene,
-                            const std::vector<double>& t, uint64_t seed) {
-    if (!PATHLAB_HAS_SOLUTIONS || t.size() < 6) return "";
+ReplayFinding replayWorstTile(const GraderSetup& setup, Lab lab, const GradingScene& scene,
+                              const std::vector<double>& t, uint64_t seed) {
+    if (!PATHLAB_HAS_SOLUTIONS || t.size() < 6) return {};
     const TilePixel pixel =
         worstTilePixel(t, setup.rubric.tiles, setup.rubric.width, setup.rubric.height);
     const RenderResult ours = replayThrough(setup, setup.student, lab, scene, pixel, seed);
-    if (!ours.ok) return "";
+    if (!ours.ok) return {};
     const RenderResult theirs = replayThrough(setup, setup.solution, lab, scene, pixel, seed);
-    if (!theirs.ok) return "";
+    if (!theirs.ok) return {};
     try {
         const PixelInspection lab = readInspectionJson(ours.replayJson, "your lab's replay");
         const PixelInspection reference =
             readInspectionJson(theirs.replayJson, "the reference's replay");
-        return scene.name + ": " + describeComparison(comparePaths(lab, reference), lab);
+        const PathComparison comparison = comparePaths(lab, reference);
+        return {scene.name + ": " + describeComparison(comparison, lab),
+                comparison.divergence.has_value()};
     } catch (const InputError&) {
         // The lab's process wrote the file: what it holds is checked, not trusted.
-        return "";
+        return {};
     }
 }
 

@@ -17,9 +17,14 @@ struct TilePixel {
 };
 TilePixel worstTilePixel(const std::vector<double>& t, int tiles, int width, int height);
 
-/// The replay's sentence for the feedback, "" where there is none to give: this build has no
-/// reference solutions (the student release), or a replay's render failed.
-std::string replayWorstTile(const GraderSetup& setup, Lab lab, const GradingScene& scene,
-                            const std::vector<double>& t, uint64_t seed);
+/// What the replay found: its sentence for the feedback ("" where there is none to give: this
+/// build has no reference solutions, the student release, or a replay's render failed), and
+/// whether the paths parted.
+struct ReplayFinding {
+    std::string text;
+    bool diverged = false;
+};
+ReplayFinding replayWorstTile(const GraderSetup& setup, Lab lab, const GradingScene& scene,
+                              const std::vector<double>& t, uint64_t seed);
 
 } // namespace pathlab::grader
