@@ -39,10 +39,28 @@ std::string wentOn(const InspectedVertex& v) {
         text += c.component + "→" + std::to_string(c.child) + " /" +
                 (c.probability ? number(*c.probability) : std::string("?"));
     }
-    if (v.roulette)
+    if (v.roulette) {
+        // The lab's first draw at the vertex, taken as its roulette draw: where going on and
+        // the draw disagree, the table says so (a kept depth limit, a draw from elsewhere).
+        const bool below = v.roulette->draw < v.roulette->continueProb;
         text += std::string(text.empty() ? "" : " ") + "(roulette " + number(v.roulette->draw) +
-                (v.roulette->wentOn ? " < " : " >= ") + number(v.roulette->continueProb) + ")";
+                (below ? " < " : " >= ") + number(v.roulette->continueProb) + ")";
+        if (below != v.roulette->wentOn)
+            text += below ? " ENDED although the draw is below continueProb"
+                          : " WENT ON although the draw is not below continueProb";
+    }
     return text.empty() ? "ends" : text;
+}
+
+/// What the lab's own parameters say of a vertex's end: in labs 1-3 no ray goes on from depth
+/// maxDepth; in lab 4 a path ends only by a roulette draw.
+std::string depthNote(const InspectedVertex& v, const PixelInspection& inspection) {
+    if (inspection.usesRoulette)
+        return !v.roulette && v.continuedBy.empty()
+                   ? " ENDED without a random number drawn (a depth limit?)"
+                   : "";
+    if (v.depth < inspection.maxDepth || v.continuedBy.empty()) return "";
+    return " WENT ON from depth " + std::to_string(v.depth) + " = maxDepth";
 }
 
 void appendRow(std::string& out, const char* format, const std::string& a, const std::string& b,
@@ -75,7 +93,8 @@ std::string inspectionTable(const PixelInspection& inspection) {
             }
             appendRow(out, format, std::to_string(v.index), v.arrivedBy, from, material(v.material),
                       v.throughput ? colour(*v.throughput) : "?", colour(v.emissionAdded),
-                      v.directLightCalled ? colour(v.directLightAdded) : "not asked", wentOn(v));
+                      v.directLightCalled ? colour(v.directLightAdded) : "not asked",
+                      wentOn(v) + depthNote(v, inspection));
         }
     }
     out +=

@@ -69,6 +69,23 @@ def solutions_agree(tmp):
               f"the reference solution of {lab}, as a student's lab, agrees with itself on 16 samples")
 
 
+def table_flags():
+    """The table alone (the student release has no reference) flags an end or a bounce that the
+    lab's own parameters forbid; the solutions' tables flag nothing."""
+    def table(viewer, lab, *extra):
+        return subprocess.run([viewer, "-c", SCENE, "--lab", lab, "--continue-prob", "0.8", "--inspect",
+                               *PIXEL, "--inspect-samples", "16", *extra],
+                              capture_output=True, text=True, timeout=120).stdout
+    mutants = os.path.join(args.build, "mutants")
+    check("ENDED without a random number drawn" in table(os.path.join(mutants, "roulette_keeps_depth_limit"), "roulette"),
+          "the table flags a lab 4 path that ended without a roulette draw")
+    check("WENT ON from depth 3 = maxDepth" in table(os.path.join(mutants, "branching_depth_plus_one"), "branching"),
+          "the table flags a lab 1 bounce from depth maxDepth")
+    flagged = [lab for lab in LABS
+               if any(word in table(os.path.join(args.build, "viewer"), lab, "--solution") for word in ("ENDED", "WENT ON"))]
+    check(not flagged, f"the solutions' tables flag nothing {flagged or ''}")
+
+
 def bad_options(tmp):
     viewer = os.path.join(args.build, "viewer")
     out = os.path.join(tmp, "bad.json")
@@ -94,5 +111,6 @@ def bad_options(tmp):
 with tempfile.TemporaryDirectory(prefix="pathlab-replay-test-") as tmp:
     mutants_named(tmp)
     solutions_agree(tmp)
+    table_flags()
     bad_options(tmp)
 finish()
