@@ -81,8 +81,8 @@ void ConvergencePlot::onFrame(const Frame& frame) {
 
 void ConvergencePlot::draw() {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(display.x - 8, display.y - 8), ImGuiCond_FirstUseEver,
-                            ImVec2(1, 1));
+    // Kept in the bottom right corner, clear of the panel: its size changes with its legend.
+    ImGui::SetNextWindowPos(ImVec2(display.x - 8, display.y - 8), ImGuiCond_Always, ImVec2(1, 1));
     ImGui::SetNextWindowBgAlpha(0.75f);
     ImGui::Begin("Convergence", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
     if (reference_.image.width == 0) {
@@ -93,7 +93,7 @@ void ConvergencePlot::draw() {
         return;
     }
     drawControls();
-    drawCurves(340, 190);
+    drawCurves(300, 170);
     drawLegend();
     if (!sizeProblem_.empty())
         ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "%s", sizeProblem_.c_str());
@@ -102,7 +102,7 @@ void ConvergencePlot::draw() {
 
 void ConvergencePlot::drawControls() {
     int metric = static_cast<int>(metric_), axis = static_cast<int>(axis_);
-    ImGui::RadioButton("relative RMSE", &metric, static_cast<int>(ConvergenceMetric::RelativeRmse));
+    ImGui::RadioButton("rel. RMSE", &metric, static_cast<int>(ConvergenceMetric::RelativeRmse));
     ImGui::SameLine();
     ImGui::RadioButton("relMSE", &metric, static_cast<int>(ConvergenceMetric::RelMse));
     ImGui::SameLine();
@@ -156,7 +156,7 @@ void ConvergencePlot::drawCurves(float width, float height) {
     }
     draw->PopClipRect();
     ImGui::Dummy(ImVec2(width, height));
-    ImGui::Text("%s against %s, log-log; dashed: slope %s", metricName(metric_),
+    ImGui::Text("%s vs %s, log-log; dashed: slope %s", metricName(metric_),
                 axis_ == ConvergenceAxis::Seconds ? "seconds" : "spp",
                 metric_ == ConvergenceMetric::RelMse ? "-1" : "-1/2");
 }
@@ -165,13 +165,13 @@ void ConvergencePlot::drawLegend() {
     const auto& runs = history_.runs();
     for (size_t r = 0; r < runs.size(); ++r) {
         const ConvergencePoint& last = runs[r].points.back();
-        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(runColour(r)),
-                           "%s%s: %d spp %.1f s, %s %.3g", r + 1 == runs.size() ? "> " : "  ",
-                           runs[r].label.c_str(), last.spp, last.seconds, metricName(metric_),
-                           metricValue(last, metric_));
+        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(runColour(r)), "%s%s: %.3g at %.3g %s",
+                           r + 1 == runs.size() ? "> " : "  ", runs[r].label.c_str(),
+                           metricValue(last, metric_), axisValue(last, axis_),
+                           axis_ == ConvergenceAxis::Seconds ? "s" : "spp");
     }
     if (const ConvergenceRun* run = history_.current())
-        ImGui::Text("time to unit variance (1/efficiency): %.3g s  (relMSE x seconds)",
+        ImGui::Text("time to unit variance (1/efficiency): %.3g s",
                     timeToUnitVariance(run->points.back()));
     ImGui::TextDisabled("against %s", reference_.file.c_str());
 }
