@@ -81,17 +81,24 @@ void ConvergencePlot::onFrame(const Frame& frame) {
 
 void ConvergencePlot::draw() {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
+    if (reference_.image.width == 0) {
+        // Folded into its title bar in the top right corner, clear of the image the other views
+        // show (the maps, the difference): a click unfolds how to make a reference.
+        ImGui::SetNextWindowPos(ImVec2(display.x - 8, 8), ImGuiCond_Always, ImVec2(1, 0));
+        ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowBgAlpha(0.75f);
+        if (ImGui::Begin("Convergence: no reference", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+            ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 240);
+            ImGui::TextUnformatted(reference_.missing.c_str());
+            ImGui::PopTextWrapPos();
+        }
+        ImGui::End();
+        return;
+    }
     // Kept in the bottom right corner, clear of the panel: its size changes with its legend.
     ImGui::SetNextWindowPos(ImVec2(display.x - 8, display.y - 8), ImGuiCond_Always, ImVec2(1, 1));
     ImGui::SetNextWindowBgAlpha(0.75f);
     ImGui::Begin("Convergence", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-    if (reference_.image.width == 0) {
-        ImGui::PushTextWrapPos(360);
-        ImGui::TextUnformatted(reference_.missing.c_str());
-        ImGui::PopTextWrapPos();
-        ImGui::End();
-        return;
-    }
     drawControls();
     drawCurves(300, 170);
     drawLegend();

@@ -9,7 +9,8 @@ exits non-zero if any failed. Fixed seeds throughout.
   section in the bottom right corner with both runs' curves and legend lines, each in its own
   colour (apps/viewer/convergence_plot.cpp: runColour), the first run kept beside the second.
 - Without a reference of the window's size (none given, none cached in build/references/ for
-  this size), the section is there without curves: it says how to make one instead.
+  this size), there are no curves: the section is folded into its title bar in the top right
+  corner, and says how to make one when unfolded.
 The capture is kept as convergence-window.png in the tests' folder, to be looked at.
 """
 import os
