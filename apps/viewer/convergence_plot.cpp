@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace pathlab::viewer {
 
@@ -54,6 +55,14 @@ void dashedLine(ImDrawList* draw, ImVec2 a, ImVec2 b, ImU32 colour) {
     }
 }
 
+bool sameView(const CameraSettings& a, const CameraSettings& b) {
+    const auto same = [](const Vec3& u, const Vec3& v) {
+        return u.x == v.x && u.y == v.y && u.z == v.z;
+    };
+    return same(a.position, b.position) && same(a.lookAt, b.lookAt) && same(a.up, b.up) &&
+           a.fovDegrees == b.fovDegrees;
+}
+
 const char* metricName(ConvergenceMetric metric) {
     return metric == ConvergenceMetric::RelMse ? "relMSE" : "relative RMSE";
 }
@@ -64,13 +73,20 @@ void ConvergencePlot::onFrame(const Frame& frame) {
     if (reference_.image.width == 0 || frame.image.empty()) return;
     const ViewSettings& s = frame.settings;
     if (s.width != reference_.image.width || s.height != reference_.image.height) {
-        sizeProblem_ = "the image is " + std::to_string(s.width) + "x" + std::to_string(s.height) +
-                       ", the reference " + std::to_string(reference_.image.width) + "x" +
-                       std::to_string(reference_.image.height) +
-                       ": back to that size for the plot to go on";
+        notPlotted_ = "the image is " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+                      ", the reference " + std::to_string(reference_.image.width) + "x" +
+                      std::to_string(reference_.image.height) +
+                      ": back to that size for the plot to go on";
         return;
     }
-    sizeProblem_.clear();
+    // Another view's error against the reference would be the difference of two pictures, not
+    // noise: those frames are left out until the camera is back.
+    if (!sameView(s.camera, camera_)) {
+        notPlotted_ = "the camera moved: the reference shows the scene's own view, which the "
+                      "plot waits for (restart the viewer to return to it)";
+        return;
+    }
+    notPlotted_.clear();
     ConvergencePoint point;
     point.spp = frame.stats.spp;
     point.seconds = frame.stats.seconds;
@@ -102,8 +118,8 @@ void ConvergencePlot::draw() {
     drawControls();
     drawCurves(300, 170);
     drawLegend();
-    if (!sizeProblem_.empty())
-        ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "%s", sizeProblem_.c_str());
+    if (!notPlotted_.empty())
+        ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "%s", notPlotted_.c_str());
     ImGui::End();
 }
 

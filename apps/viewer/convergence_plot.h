@@ -8,7 +8,10 @@
 
 #include "runner/convergence_history.h"
 
+#include "pathlab/camera.h"
+
 #include <string>
+#include <utility>
 
 namespace pathlab {
 struct Frame;
@@ -18,9 +21,12 @@ namespace pathlab::viewer {
 
 class ConvergencePlot {
 public:
-    explicit ConvergencePlot(ConvergenceReference reference) : reference_(std::move(reference)) {}
+    /// `camera` is the view the reference shows: the scene's, where the window starts.
+    ConvergencePlot(ConvergenceReference reference, const CameraSettings& camera)
+        : reference_(std::move(reference)), camera_(camera) {}
 
-    /// Measures a new frame against the reference, when there is one of the frame's size.
+    /// Measures a new frame against the reference, when there is one of the frame's size and
+    /// the frame is of the reference's view.
     void onFrame(const Frame& frame);
     /// Draws the section as a window of its own; call between ImGui's NewFrame and Render.
     void draw();
@@ -31,10 +37,13 @@ private:
     void drawLegend();
 
     ConvergenceReference reference_;
+    CameraSettings camera_;
     ConvergenceHistory history_;
     ConvergenceMetric metric_ = ConvergenceMetric::RelativeRmse;
     ConvergenceAxis axis_ = ConvergenceAxis::Seconds;
-    std::string sizeProblem_; ///< the frame is not the reference's size (a resized window)
+    /// Why the newest frame is not plotted: not the reference's size (a resized window) or view
+    /// (a moved camera); "" when it is.
+    std::string notPlotted_;
 };
 
 } // namespace pathlab::viewer

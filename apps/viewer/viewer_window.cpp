@@ -64,7 +64,8 @@ public:
           settings_(initialSettings(options, windowOptions, window, scene)),
           reference_(referenceImage(windowOptions)),
           convergence_(findConvergenceReference(options, windowOptions.referenceImage, reference_,
-                                                settings_.width, settings_.height)),
+                                                settings_.width, settings_.height),
+                       settings_.camera),
           renderer_(scene, options.threads, settings_, frameLines(windowOptions),
                     windowOptions.frames, options.watchdogSeconds),
           input_(window, settings_) {
