@@ -9,7 +9,8 @@ NATIVE ?= ON
 # off by default, so that a newer compiler's new warning does not stop a student's build.
 WARNINGS_AS_ERRORS ?= OFF
 
-.PHONY: run configure build test test-labs test-slow grade report sweep inspect bench profile deps clean \
+.PHONY: run configure build test test-labs test-slow grade report sweep inspect convergence reference bench profile \
+        deps clean \
         handouts handouts-html student-release gradescope
 
 # The student release has no solutions/: there the lab tests (ctest label `labs`) check your own
@@ -92,9 +93,24 @@ inspect: configure
 	@cd $(BUILD) && ./viewer -c $(INSPECT_SCENE) --lab $(or $(LAB),branching) --inspect $(X) $(Y) \
 	    --inspect-samples $(or $(SAMPLES),8) $(ARGS)
 
-# (make convergence, the error-versus-time plot of your four labs as
-# handouts/figures/convergence.png shows the reference's, is to come here, into
-# $(BUILD)/convergence/: make report shows it beside the sweeps.)
+# The error-versus-time plot of your four labs, as handouts/figures/convergence.png shows the
+# reference solutions': each lab rendered headless at increasing spp (SPP="4 16 64" for others)
+# against the grader's stored references of the VI2 box, CSV and PNG into $(BUILD)/convergence/
+# (scripts/convergence.py; under a minute on 2 cores). make report shows it beside the sweeps.
+convergence:
+	@python3 scripts/convergence.py --check --spp='$(SPP)'
+	@$(MAKE) --no-print-directory configure
+	@cmake --build $(BUILD) -j $(JOBS) --target viewer
+	@python3 scripts/convergence.py --build $(BUILD) --spp='$(SPP)'
+
+# The converged image the window's convergence plot measures against, for the VI2 box at the
+# window's default size: $(BUILD)/references/cornell_box_VI2_Specular.512x512.exr, 4096 spp of
+# lab 4 at continueProb 0.8, about 8 minutes on 2 cores (scripts/make-reference.sh). The window
+# finds it there; REFERENCE_SPP=1024 for a quicker, noisier one.
+REFERENCE_SPP ?= 4096
+reference: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target viewer
+	@scripts/make-reference.sh $(BUILD) $(REFERENCE_SPP)
 
 # Only the HTML pages (self-contained, in $(BUILD)/handouts/), from the figures as they are.
 handouts-html:

@@ -85,7 +85,8 @@ void drawFigures(const Frame& frame, const ViewSettings& settings, ViewMode mode
 } // namespace
 
 void ViewerPanel::draw(const Frame& frame, const ViewSettings& settings, ViewMode mode,
-                       float medianDifference, const std::optional<LogScale>& mapScale) {
+                       float medianDifference, const std::optional<LogScale>& mapScale,
+                       const std::function<void()>& moreWindows) {
     ImGui_ImplOpenGL2_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -100,6 +101,7 @@ void ViewerPanel::draw(const Frame& frame, const ViewSettings& settings, ViewMod
         ImGui::TextUnformatted(keyHelp().c_str());
         ImGui::End();
     }
+    if (moreWindows) moreWindows();
     ImGui::Render();
     ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
 }

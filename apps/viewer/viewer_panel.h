@@ -4,6 +4,7 @@
 #include "pathlab/false_colour.h"
 #include "view_mode.h"
 
+#include <functional>
 #include <optional>
 
 namespace pathlab {
@@ -19,9 +20,11 @@ public:
 
     /// Draws the panel with ImGui over what is drawn. The lab and its parameters are those of
     /// `settings`, asked for, so that a key shows at once; the figures are those of `frame`.
-    /// With a `mapScale` (the noise and efficiency views), a scale bar of it too.
+    /// With a `mapScale` (the noise and efficiency views), a scale bar of it too. `moreWindows`
+    /// draws the window's other ImGui windows in the same ImGui frame.
     void draw(const Frame& frame, const ViewSettings& settings, ViewMode mode,
-              float medianDifference, const std::optional<LogScale>& mapScale);
+              float medianDifference, const std::optional<LogScale>& mapScale,
+              const std::function<void()>& moreWindows = {});
 
 private:
     bool showHelp_ = false; ///< the keys' window, which its own close button also hides

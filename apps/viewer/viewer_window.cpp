@@ -2,6 +2,7 @@
 // renderer. Rendering runs in ProgressiveRenderer's thread; this file only shows and steers.
 #include "viewer_window.h"
 
+#include "convergence_plot.h"
 #include "frame_report.h"
 #include "frame_texture.h"
 #include "glfw_session.h"
@@ -62,6 +63,9 @@ public:
         : options_(options), windowOptions_(windowOptions), window_(window),
           settings_(initialSettings(options, windowOptions, window, scene)),
           reference_(referenceImage(windowOptions)),
+          convergence_(findConvergenceReference(options, windowOptions.referenceImage, reference_,
+                                                settings_.width, settings_.height),
+                       settings_.camera),
           renderer_(scene, options.threads, settings_, frameLines(windowOptions),
                     windowOptions.frames, options.watchdogSeconds),
           input_(window, settings_) {
@@ -125,6 +129,7 @@ private:
             printMillisecondsSinceStart("first frame");
         firstFrameSeen_ = true;
         texture_.upload(frame_, mode_, reference_);
+        convergence_.onFrame(frame_);
         if (windowOptions_.frames > 0 && frame_.number >= windowOptions_.frames &&
             frame_.settings == settings_) {
             if (!windowOptions_.screenshot.empty()) screenshot(windowOptions_.screenshot);
@@ -139,7 +144,8 @@ private:
         glClearColor(0, 0, 0, 1);
         glClear(GL_COLOR_BUFFER_BIT);
         texture_.draw();
-        panel_.draw(frame_, settings_, mode_, texture_.medianDifference(), texture_.mapScale());
+        panel_.draw(frame_, settings_, mode_, texture_.medianDifference(), texture_.mapScale(),
+                    [this] { convergence_.draw(); });
         if (finishing_) {
             if (!windowOptions_.windowCapture.empty() &&
                 !captureWindow(windowOptions_.windowCapture, width, height))
@@ -163,6 +169,7 @@ private:
     GLFWwindow* window_;
     ViewSettings settings_; ///< what the renderer is asked for; input changes it
     Image reference_;
+    ConvergencePlot convergence_; ///< against reference_, or the cached one of this size
     ProgressiveRenderer renderer_;
     FrameTexture texture_;
     WindowInput input_;

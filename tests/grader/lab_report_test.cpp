@@ -111,3 +111,24 @@ TEST_CASE("the lab report shows the plots make sweep wrote, linked from the repo
           std::string::npos);
     CHECK(md.find("the most efficient: continueProb 0.8") != std::string::npos);
 }
+
+TEST_CASE("the lab report shows make convergence's plot when there is one", "[grader]") {
+    const std::string dir = test::temporaryFolder("lab-report-convergence");
+    const std::string folder = dir + "/build/convergence";
+    CHECK(findConvergencePlot(folder, dir).empty());
+    const std::string without =
+        labReport(branchingAndRoulette(), Rubric{}, LabFigures{}, std::nullopt, "", {});
+    CHECK(without.find("make convergence") == std::string::npos);
+
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder + "/convergence.png") << "png";
+    CHECK(findConvergencePlot(folder, dir).empty()); // no convergence.csv beside it
+    std::ofstream(folder + "/convergence.csv") << "lab,label\n";
+    const std::string plot = findConvergencePlot(folder, dir);
+    CHECK(plot == "build/convergence/convergence.png");
+    const std::string md =
+        labReport(branchingAndRoulette(), Rubric{}, LabFigures{}, std::nullopt, "", {}, plot);
+    CHECK(md.find("No sweep run yet") != std::string::npos);
+    CHECK(md.find("### Error against render time\n\n![the relative RMSE of my four labs against "
+                  "render time](build/convergence/convergence.png)") != std::string::npos);
+}

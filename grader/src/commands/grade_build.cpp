@@ -97,6 +97,12 @@ int makeReferences(const Arguments& a, const Rubric& rubric, const std::string& 
     return 0;
 }
 
+/// Where make convergence writes its plot: convergence/ beside make sweep's sweep/ (both in the
+/// build folder).
+std::string convergenceFolder(const std::string& sweeps) {
+    return (std::filesystem::path(sweeps).parent_path() / "convergence").string();
+}
+
 void writeReports(const Arguments& a, const Rubric& rubric, const GradeReport& report) {
     if (!a.json.empty()) writeFileAtomically(a.json, jsonReport(report));
     if (!a.junit.empty()) writeFileAtomically(a.junit, junitReport(report));
@@ -160,9 +166,10 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
         yours.notebook = measureNotebook(setup.student, notebookEstimators(a.labs, rubric), rubric,
                                          a.threads, scratch);
         const std::string reportFolder = std::filesystem::absolute(a.report).parent_path().string();
-        writeFileAtomically(a.report,
-                            labReport(report, rubric, yours, stored, observationsIn(a.report),
-                                      findSweeps(a.sweeps, reportFolder)));
+        writeFileAtomically(
+            a.report, labReport(report, rubric, yours, stored, observationsIn(a.report),
+                                findSweeps(a.sweeps, reportFolder),
+                                findConvergencePlot(convergenceFolder(a.sweeps), reportFolder)));
         std::printf("lab report: %s\n", a.report.c_str());
     }
     return report.score() == report.maxScore() ? 0 : 1;

@@ -170,27 +170,33 @@ void writeLateNoiseTable(std::ostream& md, const std::vector<NotebookEstimator>&
 }
 
 /// The student's own experiments (`make sweep`), or how to make them.
-void writeExperiments(std::ostream& md, const std::vector<SweepFigure>& sweeps) {
+void writeExperiments(std::ostream& md, const std::vector<SweepFigure>& sweeps,
+                      const std::string& convergencePlot) {
     md << "\n## My experiments\n\n";
-    // make convergence's error-versus-time plot of the four labs is to join the sweeps here.
     if (sweeps.empty()) {
         md << "No sweep run yet: `make sweep LAB=roulette` renders your lab 4 at continueProb "
               "0.05 to 0.95, `make sweep LAB=branching PARAM=max-depth` your lab 1 at maxDepth 1 "
               "to 8, and plots their frame rate, noise and efficiency beside the handout's "
               "figures; `make report` then shows the plots here.\n";
-        return;
+    } else {
+        md << "Made by `make sweep` (scripts/sweep.py): your labs rendered at each value, beside "
+              "the handout's figures of the reference solution.\n";
+        for (const SweepFigure& sweep : sweeps) {
+            md << "\n### " << sweep.lab << ": " << sweep.parameter << "\n\n"
+               << "![" << sweep.lab << ": frame rate, noise and efficiency against "
+               << sweep.parameter << "](" << sweep.plot << ")\n\n"
+               << sweep.values << " values, numbers in [" << sweep.table << "](" << sweep.table
+               << ")";
+            if (!sweep.mostEfficient.empty())
+                md << "; the most efficient: " << sweep.parameter << " " << sweep.mostEfficient;
+            md << ".\n";
+        }
     }
-    md << "Made by `make sweep` (scripts/sweep.py): your labs rendered at each value, beside the "
-          "handout's figures of the reference solution.\n";
-    for (const SweepFigure& sweep : sweeps) {
-        md << "\n### " << sweep.lab << ": " << sweep.parameter << "\n\n"
-           << "![" << sweep.lab << ": frame rate, noise and efficiency against " << sweep.parameter
-           << "](" << sweep.plot << ")\n\n"
-           << sweep.values << " values, numbers in [" << sweep.table << "](" << sweep.table << ")";
-        if (!sweep.mostEfficient.empty())
-            md << "; the most efficient: " << sweep.parameter << " " << sweep.mostEfficient;
-        md << ".\n";
-    }
+    if (convergencePlot.empty()) return;
+    md << "\n### Error against render time\n\n"
+       << "![the relative RMSE of my four labs against render time](" << convergencePlot
+       << ")\n\nMade by `make convergence` (scripts/convergence.py): your four labs against the "
+          "grader's references of the VI2 box, beside the handout's curves (dashed).\n";
 }
 
 /// The grader's verdicts, lab by lab, and how the noise check's statistic differs from the
@@ -241,7 +247,7 @@ void writeObservations(std::ostream& md, const std::string& observations) {
 
 std::string labReport(const GradeReport& report, const Rubric& rubric, const LabFigures& yours,
                       const std::optional<LabFigures>& reference, const std::string& observations,
-                      const std::vector<SweepFigure>& sweeps) {
+                      const std::vector<SweepFigure>& sweeps, const std::string& convergencePlot) {
     std::vector<Lab> labs;
     for (const LabGrade& l : report.labs) labs.push_back(l.lab);
     const std::vector<NotebookEstimator> rows = notebookEstimators(labs, rubric);
@@ -253,7 +259,7 @@ std::string labReport(const GradeReport& report, const Rubric& rubric, const Lab
     if (yours.notebook.count("branching")) writeRatiosTable(md, rows, yours.notebook, theirs);
     if (std::any_of(rows.begin(), rows.end(), measuresLateNoise))
         writeLateNoiseTable(md, rows, yours.notebook, theirs);
-    writeExperiments(md, sweeps);
+    writeExperiments(md, sweeps, convergencePlot);
     writeChecksTable(md, report, rubric);
     writeObservations(md, observations);
     return md.str();

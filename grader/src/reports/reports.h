@@ -39,12 +39,14 @@ std::string gradescopeReport(const GradeReport& report, const std::string& hidde
 /// A Markdown lab report for a student to hand in: the notebook's figures (frame rate, noise,
 /// efficiency) of each lab beside the reference solutions' stored ones, the ratios between labs,
 /// lab 4's noise at 64 and 256 spp, the student's `make sweep` plots (`sweeps`, or how to make
-/// them), and the grader's verdicts; then the student's own section, "What I observed":
+/// them) and `make convergence` plot (`convergencePlot`, when there is one), and the grader's
+/// verdicts; then the student's own section, "What I observed":
 /// `observations` as it stands in the report being replaced (observationsIn), or a prompt when
 /// there is none.
 std::string labReport(const GradeReport& report, const Rubric& rubric, const LabFigures& yours,
                       const std::optional<LabFigures>& reference, const std::string& observations,
-                      const std::vector<SweepFigure>& sweeps = {});
+                      const std::vector<SweepFigure>& sweeps = {},
+                      const std::string& convergencePlot = "");
 /// What a student wrote under "## What I observed" in the report at `path` ("" if none): kept when
 /// `make report` writes the report again.
 std::string observationsIn(const std::string& path);

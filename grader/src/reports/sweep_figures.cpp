@@ -63,4 +63,13 @@ std::vector<SweepFigure> findSweeps(const std::string& folder, const std::string
     return sweeps;
 }
 
+std::string findConvergencePlot(const std::string& folder, const std::string& reportFolder) {
+    std::error_code error;
+    const fs::path plot = fs::path(folder) / "convergence.png";
+    if (!fs::is_regular_file(plot, error) ||
+        !fs::is_regular_file(fs::path(folder) / "convergence.csv", error))
+        return "";
+    return fs::proximate(plot, reportFolder, error).generic_string();
+}
+
 } // namespace pathlab::grader

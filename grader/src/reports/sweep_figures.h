@@ -26,4 +26,8 @@ struct SweepFigure {
 /// exist. Paths relative to `reportFolder`, where the Markdown that links them is written.
 std::vector<SweepFigure> findSweeps(const std::string& folder, const std::string& reportFolder);
 
+/// The plot `make convergence` writes (scripts/convergence.py), FOLDER/convergence.png with
+/// convergence.csv beside it, relative to `reportFolder`; "" when there is none.
+std::string findConvergencePlot(const std::string& folder, const std::string& reportFolder);
+
 } // namespace pathlab::grader

@@ -1,0 +1,265 @@
+#!/usr/bin/env python3
+"""`make convergence`: the error-versus-time plot of the student's four labs against a reference.
+
+Usage: convergence.py --build BUILD [--spp "N1 N2 ..."] [--solution] [--out DIR]
+       convergence.py --check [the same options]     check them, render nothing, write nothing
+
+Each of the four labs of labs/ (the viewer's default implementation; --solution for the reference
+solutions, which only the instructor's kit has) renders the VI2 Cornell box headless at each spp
+(`viewer ... --spp N -o N.exr --reference REF --stats N.json`, seed 0), and the viewer measures
+the image against the grader's stored reference of the box (grader/references/, in the student
+release too: 64x64 pixels, 40 seeds x 128 spp): labs 1-3 against the depth-limited image
+(maxDepth 3), lab 4 (continueProb 0.8, as graded) against the unbiased one, as the handout's
+plot (handouts/figures/convergence.png) measures them. Writes, into BUILD/convergence/ (printed
+at the end):
+
+  convergence.csv   one row per lab and spp (the columns: COLUMNS below); seconds_256 is the
+                    render time scaled to 256x256 pixels, the handout's size, so that the two
+                    plots' time axes compare
+  handout.csv       the handout's curves of the reference solutions (handouts/figures/
+                    convergence.csv), in the same columns
+  convergence.png   relative RMSE against seconds_256, log-log: yours, the handout's beside
+                    them (dashed), and a slope -1/2 guide line
+  renders/          each render's image and --stats file
+
+The reference has its own noise (about that of 5000 spp): above some 500 spp it adds to the
+error measured. A sample's noise is higher at 64x64 than at the handout's 256x256 (about 1.5 times
+for the reference solutions), so even a correct lab's curve sits above the handout's: compare the
+slopes, and the labs' order at equal time. Bad input (spp that are not whole numbers from 1 to 65536) is one line naming
+it, exit status 2, and nothing written. Python 3 standard library and gnuplot.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+KIT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCENE = os.path.join(KIT, "models", "cornell_box_VI2_Specular.ecs")
+REFERENCES = os.path.join(KIT, "grader", "references")
+HANDOUT_CSV = os.path.join(KIT, "handouts", "figures", "convergence.csv")
+PLOT = os.path.join(KIT, "scripts", "convergence.gp")
+DEFAULT_SPP = [4, 8, 16, 32, 64, 128, 256, 512]
+HANDOUT_PIXELS = 256 * 256
+GRADED_CONTINUE_PROB = 0.8
+PLOT_WIDTH, PLOT_HEIGHT = 900, 640
+COLUMNS = ["lab", "label", "reference", "spp", "seconds", "seconds_256", "samples_per_second",
+           "relative_rmse", "rel_mse", "noise"]
+# The labs in the handouts' order, their words in the plot, and the handout's row of each.
+LABS = [("branching", "branching (lab 1)", "branching"),
+        ("uniform", "uniform pick (lab 2)", "uniform"),
+        ("importance", "importance pick (lab 3)", "importance"),
+        ("roulette", "roulette, continueProb 0.8 (lab 4)", "roulette_p08")]
+
+
+class UsageError(Exception):
+    """Bad input: said in one line, exit status 2, nothing written."""
+
+
+class RenderFailed(Exception):
+    pass
+
+
+def checked_spp(text):
+    if not text.strip():
+        return DEFAULT_SPP
+    values = []
+    for word in text.replace(",", " ").split():
+        try:
+            spp = int(word)
+        except ValueError:
+            raise UsageError(f"SPP: {word!r} is not a whole number")
+        if not 1 <= spp <= 65536:
+            raise UsageError(f"SPP: {spp} is outside 1 to 65536")
+        values.append(spp)
+    return sorted(set(values))
+
+
+def estimates():
+    """{lab: "depth_limited" | "unbiased"}: which reference each lab converges to
+    (framework/lab_list.txt's third column)."""
+    found = {}
+    with open(os.path.join(KIT, "framework", "lab_list.txt")) as f:
+        for line in f:
+            fields = line.split()
+            if fields and not fields[0].startswith("#"):
+                found[fields[0]] = fields[2].replace("-", "_")
+    return found
+
+
+def reference_image(kind):
+    with open(os.path.join(REFERENCES, "cornell_box_VI2_Specular.json")) as f:
+        about = json.load(f)
+    return os.path.join(REFERENCES, about[kind]["image"]), about["width"], about["height"]
+
+
+def render(viewer, lab, spp, solution, reference, size, folder):
+    """One headless render against `reference`; returns its --stats as a dict."""
+    image, stats = os.path.join(folder, f"{lab}-{spp}.exr"), os.path.join(folder, f"{lab}-{spp}.json")
+    command = [viewer, "-c", SCENE, "--lab", lab, *(["--solution"] if solution else []),
+               "--spp", str(spp), "--size", str(size[0]), str(size[1]), "--seed", "0",
+               "-o", image, "--stats", stats, "--reference", reference]
+    if lab == "roulette":
+        command += ["--continue-prob", str(GRADED_CONTINUE_PROB)]
+    run = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                         errors="replace")
+    problems = [line for line in run.stderr.splitlines() if "is not done yet" not in line]
+    if run.returncode != 0:
+        raise RenderFailed("\n".join(problems + [
+            f"make convergence: the render of {lab} at {spp} spp failed "
+            f"(viewer exit status {run.returncode})"]))
+    for line in problems:
+        print(f"  {line}", file=sys.stderr)
+    with open(stats) as f:
+        return json.load(f)
+
+
+def row(lab, label, kind, stats):
+    pixels = stats["width"] * stats["height"]
+    return {"lab": lab, "label": label, "reference": kind, "spp": stats["spp"],
+            "seconds": f"{stats['seconds']:.4g}",
+            "seconds_256": f"{stats['seconds'] * HANDOUT_PIXELS / pixels:.4g}",
+            "samples_per_second": round(stats["samples_per_second"]),
+            "relative_rmse": f"{stats['reference']['relative_rmse']:.4g}",
+            "rel_mse": f"{stats['reference']['rel_mse']:.4g}",
+            "noise": f"{stats['noise']:.4g}"}
+
+
+def handout_rows():
+    """The handout's curves of the reference solutions, in this script's columns (its seconds
+    are already at 256x256)."""
+    if not os.path.exists(HANDOUT_CSV):
+        return []
+    keys = {key: (lab, label) for lab, label, key in LABS}
+    rows = []
+    with open(HANDOUT_CSV, newline="") as f:
+        for r in csv.DictReader(f):
+            if r["estimator"] not in keys:
+                continue
+            lab, label = keys[r["estimator"]]
+            rows.append({"lab": lab, "label": label, "reference": r["reference"],
+                         "spp": r["spp"], "seconds": r["seconds"], "seconds_256": r["seconds"],
+                         "samples_per_second": r["samples_per_second"],
+                         "relative_rmse": r["relative_rmse"], "rel_mse": "", "noise": r["noise"]})
+    return rows
+
+
+def todo_labs():
+    """The labs of labs/ with steps still marked PATHLAB_TODO."""
+    unfinished = []
+    for lab, _, _ in LABS:
+        with open(os.path.join(KIT, "labs", lab + ".cpp")) as f:
+            if 'PATHLAB_TODO("' in f.read():
+                unfinished.append(lab)
+    return unfinished
+
+
+def write_csv(path, rows):
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=COLUMNS, lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+
+
+def slope_guide(rows):
+    """k of the guide line k / sqrt(t): under every curve, touching the lowest."""
+    products = [float(r["relative_rmse"]) * math.sqrt(float(r["seconds_256"])) for r in rows
+                if float(r["relative_rmse"]) > 0 and float(r["seconds_256"]) > 0]
+    return 0.8 * min(products) if products else 0.1
+
+
+def plot(folder, rows, has_handout, solution, size):
+    whose = "the reference solutions here" if solution else "your labs/"
+    variables = {"data": "convergence.csv", "handout": "handout.csv" if has_handout else "",
+                 "out": "convergence.png", "width": PLOT_WIDTH, "height": PLOT_HEIGHT,
+                 "yours": "solution here" if solution else "yours", "guide": slope_guide(rows),
+                 "title": f"VI2 Cornell box: error versus render time of {whose}, "
+                          f"{size[0]}x{size[1]} pixels"}
+    definitions = "; ".join(f"{k}='{v}'" if isinstance(v, str) else f"{k}={v}"
+                            for k, v in variables.items())
+    run = subprocess.run(["gnuplot", "-e", definitions, PLOT], cwd=folder, capture_output=True,
+                         text=True)
+    if run.returncode != 0:
+        raise RenderFailed(run.stderr.strip() + "\nmake convergence: gnuplot could not draw "
+                           "convergence.png")
+
+
+def run_study(viewer, spps, solution, out):
+    if not os.access(viewer, os.X_OK):
+        raise RenderFailed(f"make convergence: no viewer at {viewer} (make build builds it)")
+    if not shutil.which("gnuplot"):
+        raise RenderFailed("make convergence: gnuplot is needed for the plot "
+                           "(scripts/install-deps.sh installs it)")
+    kinds = estimates()
+    parent = os.path.dirname(os.path.abspath(out))
+    os.makedirs(parent, exist_ok=True)
+    work = tempfile.mkdtemp(prefix=f".{os.path.basename(out)}-", dir=parent)
+    started = time.monotonic()
+    try:
+        renders = os.path.join(work, "renders")
+        os.makedirs(renders)
+        unfinished = [] if solution else todo_labs()
+        if unfinished:
+            print(f"make convergence: {', '.join(unfinished)} still have PATHLAB_TODO steps; "
+                  "their curves measure the labs as they are")
+        print(f"make convergence: 4 labs at {' '.join(map(str, spps))} spp against the grader's "
+              f"references", flush=True)
+        rows = []
+        for lab, label, _ in LABS:
+            reference, width, height = reference_image(kinds[lab])
+            for spp in spps:
+                stats = render(viewer, lab, spp, solution, reference, (width, height), renders)
+                rows.append(row(lab, label, kinds[lab], stats))
+                print(f"  {lab} {spp} spp: {stats['seconds']:.3f} s, relative RMSE "
+                      f"{stats['reference']['relative_rmse']:.4g}", flush=True)
+        write_csv(os.path.join(work, "convergence.csv"), rows)
+        theirs = handout_rows()
+        if theirs:
+            write_csv(os.path.join(work, "handout.csv"), theirs)
+        plot(work, rows, bool(theirs), solution, (width, height))
+        if os.path.isdir(out):
+            shutil.rmtree(out)
+        os.replace(work, out)
+    finally:
+        if os.path.isdir(work):
+            shutil.rmtree(work)
+    print(f"make convergence: done in {time.monotonic() - started:.0f} s; the plot is "
+          f"{os.path.abspath(out)}/convergence.png (convergence.csv, "
+          f"{'handout.csv, ' if theirs else ''}renders/ beside it)")
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--build", default="build", help="the build folder holding viewer")
+    parser.add_argument("--spp", default="", help="samples per pixel of the renders, apart by "
+                        f"spaces (default {' '.join(map(str, DEFAULT_SPP))})")
+    parser.add_argument("--solution", action="store_true",
+                        help="the reference solutions instead of labs/ (the instructor's kit)")
+    parser.add_argument("--out", help="the output folder (default BUILD/convergence)")
+    parser.add_argument("--check", action="store_true", help="check the options only")
+    args = parser.parse_args(argv)
+    try:
+        spps = checked_spp(args.spp)
+        if args.solution and not os.path.isdir(os.path.join(KIT, "solutions")):
+            raise UsageError("--solution: this kit has no reference solutions (solutions/)")
+    except UsageError as e:
+        print(f"make convergence: {e}", file=sys.stderr)
+        return 2
+    if args.check:
+        return 0
+    try:
+        run_study(os.path.join(args.build, "viewer"), spps, args.solution,
+                  args.out or os.path.join(args.build, "convergence"))
+    except RenderFailed as e:
+        print(f"{e}; nothing written", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
