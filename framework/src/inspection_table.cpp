@@ -49,7 +49,12 @@ std::string wentOn(const InspectedVertex& v) {
             text += below ? " ENDED although the draw is below continueProb"
                           : " WENT ON although the draw is not below continueProb";
     }
-    return text.empty() ? "ends" : text;
+    if (!text.empty()) return text;
+    // Why it ended is the lab's: its draws there say what it decided on (a pick that fell on a
+    // black component, a roulette draw).
+    std::string drew;
+    for (const float draw : v.draws) drew += (drew.empty() ? "" : ",") + number(draw);
+    return drew.empty() ? "ends" : "ends (drew " + drew + ")";
 }
 
 /// What the lab's own parameters say of a vertex's end: in labs 1-3 no ray goes on from depth
