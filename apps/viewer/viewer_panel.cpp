@@ -100,6 +100,7 @@ void ViewerPanel::draw(const Frame& frame, const ViewSettings& settings, ViewMod
         ImGui::TextUnformatted(keyHelp().c_str());
         ImGui::End();
     }
+    if (otherWindows_) otherWindows_();
     ImGui::Render();
     ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
 }
