@@ -103,7 +103,7 @@ void PathInspectorPanel::drawPanel() {
             ImGui::SetNextItemWidth(200);
             ImGui::SliderInt("sample", &selectedSample_, 0,
                              static_cast<int>(replay.lab.samples.size()) - 1);
-            drawRayLegend();
+            drawRayLegend(replay.comparison.has_value());
             const size_t sample = static_cast<size_t>(selectedSample_);
             const int marked = divergingVertex(replay, sample);
             if (replay.comparison)

@@ -55,7 +55,7 @@ ImU32 shadowRayColour() { return IM_COL32(190, 190, 255, 255); }
 
 ImU32 divergenceColour() { return IM_COL32(255, 40, 40, 255); }
 
-void drawRayLegend() {
+void drawRayLegend(bool withDivergence) {
     const auto entry = [](ImU32 colour, const char* text) {
         ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(colour), "%s", text);
         ImGui::SameLine();
@@ -65,7 +65,7 @@ void drawRayLegend() {
     entry(rayColour("mirror"), "mirror");
     entry(rayColour("refraction"), "refraction");
     entry(shadowRayColour(), "- - shadow ray");
-    entry(divergenceColour(), "o first difference");
+    if (withDivergence) entry(divergenceColour(), "o first difference");
     ImGui::NewLine();
 }
 

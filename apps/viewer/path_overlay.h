@@ -39,8 +39,9 @@ ImU32 shadowRayColour();
 /// The colour of the vertex where the lab's path first differs from the reference's.
 ImU32 divergenceColour();
 
-/// The legend, as ImGui text in the current window.
-void drawRayLegend();
+/// The legend, as ImGui text in the current window; the first difference's mark only where a
+/// comparison with the reference can show one.
+void drawRayLegend(bool withDivergence);
 
 /// What to draw: the lab's samples of one pixel, one of them selected (drawn over the others,
 /// thicker and opaque), and the vertex to mark, if any.
