@@ -30,7 +30,9 @@ void drawSampleTable(const PixelInspection& inspection, size_t sample, int marke
     one.samples = {inspection.samples[sample]};
     std::istringstream lines(inspectionTable(one));
     const ImVec4 markColour = ImGui::ColorConvertU32ToFloat4(divergenceColour());
-    for (std::string line; std::getline(lines, line);) {
+    std::string line;
+    std::getline(lines, line); // the lab, pixel and seed: the panel's first line says them
+    while (std::getline(lines, line)) {
         for (size_t arrow; (arrow = line.find("→")) != std::string::npos;)
             line.replace(arrow, std::string("→").size(), "->");
         int vertex = -1;
@@ -97,12 +99,15 @@ void PathInspectorPanel::drawPanel() {
             ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "pixel (%d, %d): %s", shown_->x, shown_->y,
                                shown_->error.c_str());
         } else if (!replay.lab.samples.empty()) {
-            ImGui::Text("pixel (%d, %d)   lab %s (%s)   maxDepth %d   continueProb %.2f", shown_->x,
-                        shown_->y, replay.lab.lab.c_str(), replay.lab.implementation.c_str(),
-                        replay.lab.maxDepth, replay.lab.continueProb);
-            ImGui::SetNextItemWidth(200);
+            ImGui::Text("pixel (%d, %d)  lab %s (%s)  seed %llu", shown_->x, shown_->y,
+                        replay.lab.lab.c_str(), replay.lab.implementation.c_str(),
+                        static_cast<unsigned long long>(replay.lab.seed));
+            ImGui::SetNextItemWidth(160);
             ImGui::SliderInt("sample", &selectedSample_, 0,
                              static_cast<int>(replay.lab.samples.size()) - 1);
+            ImGui::SameLine(0, 16);
+            ImGui::Text("maxDepth %d  continueProb %.2f", replay.lab.maxDepth,
+                        replay.lab.continueProb);
             drawRayLegend(replay.comparison.has_value());
             const size_t sample = static_cast<size_t>(selectedSample_);
             const int marked = divergingVertex(replay, sample);
@@ -110,8 +115,7 @@ void PathInspectorPanel::drawPanel() {
                 ImGui::TextWrapped("%s",
                                    describeComparison(*replay.comparison, replay.lab).c_str());
             ImGui::Separator();
-            ImGui::TextUnformatted(
-                replay.lab.implementation == "student" ? "Your lab:" : "The reference solution:");
+            if (replay.reference) ImGui::TextUnformatted("Your lab:");
             drawSampleTable(replay.lab, sample, marked);
             if (replay.reference && sample < replay.reference->samples.size()) {
                 ImGui::Separator();
