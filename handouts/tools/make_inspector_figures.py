@@ -3,8 +3,8 @@
 
 Usage: make_inspector_figures.py --build BUILD [--out FOLDER]
 
-For each lab, its reference solution in the window on the VI2 Cornell box at 800x800 (under a
-virtual X server, Xvfb; large enough for the panel to show a table of several rows), opened with
+For each lab, its reference solution in the window on the VI2 Cornell box at 512x512 (under a
+virtual X server, Xvfb), opened with
 `viewer --inspect X Y --inspect-window` and captured with --capture-window once the replay is in:
 the pixel's 8 samples drawn over the image (segments coloured by the kind of ray, shadow rays
 dashed) and the inspector's panel with sample 0's table. Writes handouts/figures/inspector_LAB.png
@@ -32,9 +32,9 @@ SCENE = os.path.join(SOURCE, "models", "cornell_box_VI2_Specular.ecs")
 sys.path.insert(0, os.path.join(SOURCE, "scripts"))
 from virtual_display import start_xvfb  # noqa: E402
 
-SIZE = 800
+SIZE = 512
 # Pixels on the left red wall, below the figures' panel and above the inspector's.
-CANDIDATES = [(x, y) for y in (300, 340, 380, 420) for x in (30, 50, 70, 90)]
+CANDIDATES = [(x, y) for y in (192, 218, 243, 256, 269) for x in (20, 30, 45, 58)]
 # (lab, options) of each lab's figure.
 FIGURES = [
     ("branching", []),
@@ -84,7 +84,7 @@ def main():
         raise SystemExit("make_inspector_figures: Xvfb is needed (apt-get install xvfb)")
     viewer = os.path.join(args.build, "viewer")
     os.makedirs(args.out, exist_ok=True)
-    server, display = start_xvfb("1024x1024x24")
+    server, display = start_xvfb("1024x768x24")
     try:
         for lab, options in FIGURES:
             capture(viewer, display, lab, best_pixel(viewer, lab, options), options,
