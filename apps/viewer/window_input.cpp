@@ -163,9 +163,10 @@ void WindowInput::onMouseButton(int button, int action, int mods) {
 
 void WindowInput::onCursor(double x, double y) {
     seen_ = true;
-    // A hand's click wanders a pixel or two: beyond that it is a drag, not a click.
+    // A hand's click wanders a pixel or two: beyond that it is a drag, not a click. The camera
+    // stays until then, so that a click does not restart the accumulation.
     if (pressed_ && std::abs(x - pressX_) + std::abs(y - pressY_) > 3) moved_ = true;
-    if (!dragging_) return;
+    if (!dragging_ || !moved_) return;
     settings_.camera = orbit(settings_.camera, static_cast<float>(x - lastX_) * 0.005f,
                              static_cast<float>(y - lastY_) * 0.005f);
     lastX_ = x, lastY_ = y;
