@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace pathlab::viewer {
 
@@ -77,7 +78,31 @@ ImU32 withAlpha(ImU32 colour, int alpha) {
 
 ImVec2 scaled(ImVec2 p, float scale) { return ImVec2(p.x * scale, p.y * scale); }
 
+/// The part of a → b inside the display (Liang-Barsky); false when none is.
+bool clipToDisplay(ImVec2& a, ImVec2& b) {
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    const float d[2] = {b.x - a.x, b.y - a.y}, from[2] = {a.x, a.y}, high[2] = {size.x, size.y};
+    float t0 = 0, t1 = 1;
+    for (int axis = 0; axis < 2; ++axis) {
+        if (d[axis] == 0) {
+            if (from[axis] < 0 || from[axis] > high[axis]) return false;
+            continue;
+        }
+        float enter = (0 - from[axis]) / d[axis], leave = (high[axis] - from[axis]) / d[axis];
+        if (enter > leave) std::swap(enter, leave);
+        t0 = std::max(t0, enter);
+        t1 = std::min(t1, leave);
+    }
+    if (t0 > t1) return false;
+    const ImVec2 start(a.x + d[0] * t0, a.y + d[1] * t0), end(a.x + d[0] * t1, a.y + d[1] * t1);
+    a = start, b = end;
+    return true;
+}
+
+/// Dashes on the visible part only: a segment that passes close by the eye projects to one far
+/// longer than the window, whose dashes would be countless.
 void dashedLine(ImDrawList* draw, ImVec2 a, ImVec2 b, ImU32 colour, float thickness) {
+    if (!clipToDisplay(a, b)) return;
     const float dash = 6, gap = 4;
     const float dx = b.x - a.x, dy = b.y - a.y, length = std::sqrt(dx * dx + dy * dy);
     if (length <= 0) return;
@@ -94,11 +119,19 @@ Vec3 rayStart(const InspectedVertex& v) { return v.ray.origin; }
 struct SampleStyle {
     int alpha = 255;
     float thickness = 2;
+    /// The draw list's vertices beyond which nothing more is drawn: ImGui's OpenGL 2 backend
+    /// indexes a list's vertices with 16 bits (65536 at most, an assertion past it), and many
+    /// samples of long or branching paths would pass that.
+    int vertexBudget = 60000;
 };
+
+/// The other samples, faint, stop well before the budget, which leaves the selected one room.
+constexpr int OtherSamplesVertexBudget = 40000;
 
 void drawSample(ImDrawList* draw, const InspectedSample& sample, const CameraProjection& projection,
                 float scale, const SampleStyle& style, float stubLength) {
     for (const InspectedVertex& v : sample.vertices) {
+        if (draw->VtxBuffer.Size > style.vertexBudget) return;
         const ImU32 colour = withAlpha(rayColour(v.arrivedBy), style.alpha);
         // A ray that left the scene has no end: a short stub shows which way it went.
         const Vec3 end = v.found ? v.position : rayStart(v) + v.ray.direction * stubLength;
@@ -133,7 +166,8 @@ void drawPathOverlay(ImDrawList* draw, const OverlayPaths& paths,
     const float stub = stubLengthOf(inspection);
     for (size_t i = 0; i < inspection.samples.size(); ++i)
         if (i != paths.selectedSample)
-            drawSample(draw, inspection.samples[i], projection, pixelsToScreen, {70, 1}, stub);
+            drawSample(draw, inspection.samples[i], projection, pixelsToScreen,
+                       {70, 1, OtherSamplesVertexBudget}, stub);
     if (paths.selectedSample >= inspection.samples.size()) return;
     const InspectedSample& selected = inspection.samples[paths.selectedSample];
     drawSample(draw, selected, projection, pixelsToScreen, {255, 2}, stub);
