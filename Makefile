@@ -148,6 +148,7 @@ profile: build
 # HTML pages.
 handouts: build
 	python3 handouts/tools/make_figures.py --build $(BUILD)
+	python3 handouts/tools/make_inspector_figures.py --build $(BUILD)
 	python3 handouts/tools/make_html.py --out $(BUILD)/handouts
 
 # The student release, $(BUILD)/pathlab-student.tar.gz: the kit without solutions/, the tests and

@@ -46,6 +46,7 @@ STUDENT_EXCLUDED = (
     "apps/bench/",
     "docs/",
     "handouts/tools/make_figures.py",
+    "handouts/tools/make_inspector_figures.py",
     "handouts/tools/viewer_runs.py",
     "handouts/tools/pfm.py",
     "handouts/tools/convergence.gp",

@@ -181,7 +181,8 @@ int main(int argc, char** argv) {
         checkOutputs(options, window);
         viewer::checkMapOptions(extras.maps, options, window);
         checkInspectOptions(options);
-        if (!options.outputImage.empty() || options.inspect) {
+        viewer::checkInspectWindow(window, options);
+        if (!options.outputImage.empty() || (options.inspect && !window.inspectInWindow)) {
             if (!options.outputImage.empty() && !window.referenceImage.empty()) {
                 extras.referenceFile = window.referenceImage;
                 extras.reference = viewer::readReferenceOfSize(window.referenceImage, options.width,

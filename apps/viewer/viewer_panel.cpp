@@ -102,6 +102,7 @@ void ViewerPanel::draw(const Frame& frame, const ViewSettings& settings, ViewMod
         ImGui::End();
     }
     if (moreWindows) moreWindows();
+    if (otherWindows_) otherWindows_();
     ImGui::Render();
     ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
 }

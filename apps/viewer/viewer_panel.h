@@ -17,6 +17,8 @@ namespace pathlab::viewer {
 class ViewerPanel {
 public:
     void toggleHelp() { showHelp_ = !showHelp_; }
+    /// Other windows drawn in the same ImGui frame (the path inspector's).
+    void alsoDraw(std::function<void()> windows) { otherWindows_ = std::move(windows); }
 
     /// Draws the panel with ImGui over what is drawn. The lab and its parameters are those of
     /// `settings`, asked for, so that a key shows at once; the figures are those of `frame`.
@@ -28,6 +30,7 @@ public:
 
 private:
     bool showHelp_ = false; ///< the keys' window, which its own close button also hides
+    std::function<void()> otherWindows_;
 };
 
 } // namespace pathlab::viewer

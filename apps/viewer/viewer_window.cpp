@@ -6,6 +6,7 @@
 #include "frame_report.h"
 #include "frame_texture.h"
 #include "glfw_session.h"
+#include "path_inspector_panel.h"
 #include "screenshots.h"
 #include "view_mode.h"
 #include "viewer_panel.h"
@@ -68,7 +69,9 @@ public:
                        settings_.camera),
           renderer_(scene, options.threads, settings_, frameLines(windowOptions),
                     windowOptions.frames, options.watchdogSeconds),
-          input_(window, settings_) {
+          input_(window, settings_), inspector_(options, scene) {
+        panel_.alsoDraw([this] { inspector_.draw(settings_); });
+        if (options.inspect) inspector_.inspect(settings_, options.inspectX, options.inspectY);
         if (windowOptions.view) {
             mode_ = *windowOptions.view;
             showMode();
@@ -81,11 +84,15 @@ public:
         while (!glfwWindowShouldClose(window_)) {
             glfwWaitEventsTimeout(1.0 / 60.0);
             renderer_.update(settings_);
+            if (const auto pixel = input_.takeClickedPixel())
+                inspector_.inspect(settings_, pixel->first, pixel->second);
+            const bool inspected = inspector_.poll();
             const bool fresh = renderer_.takeFrame(frame_, generation_);
             if (fresh) onNewFrame();
+            finishWhenDone();
             // Drawing only what changed leaves the cores to the render thread: an idle redraw at
             // 60 Hz costs a software-rendered display (Xvfb, a remote desktop) a share of them.
-            if (fresh || input_.takeSeen() || finishing_) draw();
+            if (fresh || inspected || input_.takeSeen() || finishing_) draw();
             if (done_) break;
             if (const std::string failure = renderer_.failure(); !failure.empty()) {
                 std::fprintf(stderr, "viewer: error: %s\n", failure.c_str());
@@ -131,10 +138,16 @@ private:
         texture_.upload(frame_, mode_, reference_);
         convergence_.onFrame(frame_);
         if (windowOptions_.frames > 0 && frame_.number >= windowOptions_.frames &&
-            frame_.settings == settings_) {
-            if (!windowOptions_.screenshot.empty()) screenshot(windowOptions_.screenshot);
-            finishing_ = true; // the next draw captures the window if asked, then the loop ends
-        }
+            frame_.settings == settings_)
+            lastFrameIn_ = true;
+    }
+
+    /// With --frames, the end of the run once the last frame is in and a pixel inspected from
+    /// the start (--inspect-window) has its replay, so that the window captured shows its paths.
+    void finishWhenDone() {
+        if (!lastFrameIn_ || finishing_ || inspector_.busy()) return;
+        if (!windowOptions_.screenshot.empty()) screenshot(windowOptions_.screenshot);
+        finishing_ = true; // the next draw captures the window if asked, then the loop ends
     }
 
     void draw() {
@@ -173,11 +186,12 @@ private:
     ProgressiveRenderer renderer_;
     FrameTexture texture_;
     WindowInput input_;
+    PathInspectorPanel inspector_; ///< replays on a worker thread of its own (inspection_job.h)
     ViewerPanel panel_;
     Frame frame_;
     uint64_t generation_ = 0;
     ViewMode mode_ = ViewMode::Image;
-    bool finishing_ = false, done_ = false;
+    bool lastFrameIn_ = false, finishing_ = false, done_ = false;
     bool firstFrameSeen_ = false, firstImageShown_ = false; ///< for --print-frame-rate
     int status_ = 0;
 };
@@ -195,8 +209,8 @@ void connectCallbacks(GLFWwindow* window, ViewerWindow& viewer) {
     glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int width, int height) {
         windowOf(w)->input().onFramebufferSize(width, height);
     });
-    glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int) {
-        windowOf(w)->input().onMouseButton(button, action);
+    glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int mods) {
+        windowOf(w)->input().onMouseButton(button, action, mods);
     });
     glfwSetCursorPosCallback(
         window, [](GLFWwindow* w, double x, double y) { windowOf(w)->input().onCursor(x, y); });

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <utility>
 
@@ -17,6 +18,7 @@ std::string keyHelp() {
     return "h        this help\n"
            "f        fullscreen on/off\n"
            "drag     orbit the camera\n"
+           "click    inspect the pixel's paths (no motion, or shift+click)\n"
            "WASD     move (arrow keys too)\n"
            "1-" +
            std::to_string(AllLabs.size()) + "      lab: " + labNames(", ") +
@@ -142,20 +144,42 @@ void WindowInput::onFramebufferSize(int width, int height) {
     if (width > 0 && height > 0) settings_.width = width, settings_.height = height;
 }
 
-void WindowInput::onMouseButton(int button, int action) {
+void WindowInput::onMouseButton(int button, int action, int mods) {
     seen_ = true;
     if (button != GLFW_MOUSE_BUTTON_LEFT) return;
-    // A drag that starts on the panel moves the panel, not the camera.
-    dragging_ = action == GLFW_PRESS && !ImGui::GetIO().WantCaptureMouse;
+    if (action == GLFW_RELEASE) {
+        if (pressed_ && (!moved_ || shift_)) clicked_ = pixelAt(pressX_, pressY_);
+        pressed_ = dragging_ = false;
+        return;
+    }
+    // A press on the panel moves the panel, not the camera, and inspects nothing.
+    pressed_ = action == GLFW_PRESS && !ImGui::GetIO().WantCaptureMouse;
+    shift_ = (mods & GLFW_MOD_SHIFT) != 0;
+    dragging_ = pressed_ && !shift_;
+    moved_ = false;
     glfwGetCursorPos(window_, &lastX_, &lastY_);
+    pressX_ = lastX_, pressY_ = lastY_;
 }
 
 void WindowInput::onCursor(double x, double y) {
     seen_ = true;
-    if (!dragging_) return;
+    // A hand's click wanders a pixel or two: beyond that it is a drag, not a click. The camera
+    // stays until then, so that a click does not restart the accumulation.
+    if (pressed_ && std::abs(x - pressX_) + std::abs(y - pressY_) > 3) moved_ = true;
+    if (!dragging_ || !moved_) return;
     settings_.camera = orbit(settings_.camera, static_cast<float>(x - lastX_) * 0.005f,
                              static_cast<float>(y - lastY_) * 0.005f);
     lastX_ = x, lastY_ = y;
+}
+
+/// The image's pixel under the cursor's window position (the framebuffer may be larger, HiDPI).
+std::pair<int, int> WindowInput::pixelAt(double x, double y) const {
+    int windowWidth = 1, windowHeight = 1;
+    glfwGetWindowSize(window_, &windowWidth, &windowHeight);
+    const double sx = static_cast<double>(settings_.width) / std::max(windowWidth, 1);
+    const double sy = static_cast<double>(settings_.height) / std::max(windowHeight, 1);
+    return {std::clamp(static_cast<int>(x * sx), 0, settings_.width - 1),
+            std::clamp(static_cast<int>(y * sy), 0, settings_.height - 1)};
 }
 
 bool WindowInput::takeSeen() { return std::exchange(seen_, false); }

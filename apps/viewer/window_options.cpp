@@ -36,6 +36,7 @@ ExtraOptions windowOptionReaders(WindowOptions& w) {
                                               "' is not a view: image, difference, split, noise "
                                               "or efficiency");
          }},
+        {"inspect-window", [&w](OptionReader&, const Token&) { w.inspectInWindow = true; }},
     };
 }
 
@@ -46,6 +47,15 @@ void completeWindowOptions(WindowOptions& w) {
     if (w.view == ViewMode::Split && !solution::available())
         throw InputError("option --view split: the reference solutions are not part of this "
                          "build");
+}
+
+void checkInspectWindow(const WindowOptions& w, const RenderOptions& options) {
+    if (!w.inspectInWindow) return;
+    if (!options.inspect)
+        throw InputError("option --inspect-window: needs --inspect X Y, the pixel to inspect");
+    if (!options.outputImage.empty() || !options.inspectOut.empty())
+        throw InputError("option --inspect-window: opens the window, which -o and --inspect-out "
+                         "do not (leave it out to inspect headless)");
 }
 
 const char* windowOptionsHelp() {
@@ -62,6 +72,10 @@ const char* windowOptionsHelp() {
   --view MODE            the view shown first: image, difference, split, noise (each
                          pixel's relative standard error) or efficiency (each pixel's
                          1 / (relative variance x seconds per sample)); v cycles on
+  --inspect X Y --inspect-window
+                         open the window with pixel (X,Y) inspected, as a click does (a
+                         click without moving the mouse, or shift+click); --inspect alone
+                         replays headless and prints the tables
 )";
 }
 

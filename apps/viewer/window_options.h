@@ -18,6 +18,7 @@ struct WindowOptions {
     std::string windowCapture;    ///< --capture-window: the window as shown, panel included
     std::string referenceImage;   ///< --reference: image for the difference view
     std::optional<ViewMode> view; ///< --view: the mode shown first (then v as usual)
+    bool inspectInWindow = false; ///< --inspect-window: --inspect X Y in the window, not headless
 };
 
 /// The readers of the window's options, into `window`, for parseRenderOptions.
@@ -27,6 +28,10 @@ ExtraOptions windowOptionReaders(WindowOptions& window);
 /// Throws InputError for a --view this run cannot show (difference without --reference, split
 /// without the reference solutions).
 void completeWindowOptions(WindowOptions& window);
+
+/// Throws InputError for an --inspect-window the run cannot honour: without --inspect X Y, or
+/// with -o or --inspect-out, which are headless.
+void checkInspectWindow(const WindowOptions& window, const RenderOptions& options);
 
 /// The summary of the window's options, for --help.
 const char* windowOptionsHelp();

@@ -32,9 +32,7 @@ void checkInspectOptions(const RenderOptions& options) {
 namespace {
 
 PixelInspection inspect(const RenderOptions& options, const RenderScene& scene,
-                        Implementation implementation) {
-    const Camera camera(scene.scene().camera.value_or(scene.scene().framingCamera()), options.width,
-                        options.height);
+                        const Camera& camera, Implementation implementation) {
     InspectionRequest request;
     request.x = options.inspectX;
     request.y = options.inspectY;
@@ -60,9 +58,16 @@ PixelInspection inspect(const RenderOptions& options, const RenderScene& scene,
 } // namespace
 
 PixelReplay replayPixel(const RenderOptions& options, const RenderScene& scene) {
-    PixelReplay replay{inspect(options, scene, options.implementation), {}, {}};
+    return replayPixel(options, scene,
+                       scene.scene().camera.value_or(scene.scene().framingCamera()));
+}
+
+PixelReplay replayPixel(const RenderOptions& options, const RenderScene& scene,
+                        const CameraSettings& cameraSettings) {
+    const Camera camera(cameraSettings, options.width, options.height);
+    PixelReplay replay{inspect(options, scene, camera, options.implementation), {}, {}};
     if (options.implementation == Implementation::Student && solution::available()) {
-        replay.reference = inspect(options, scene, Implementation::Solution);
+        replay.reference = inspect(options, scene, camera, Implementation::Solution);
         replay.comparison = comparePaths(replay.lab, *replay.reference);
     }
     return replay;

@@ -24,6 +24,9 @@ struct PixelReplay {
 void checkInspectOptions(const RenderOptions& options);
 
 PixelReplay replayPixel(const RenderOptions& options, const RenderScene& scene);
+/// The same through another camera than the scene's: the window's, once it has moved.
+PixelReplay replayPixel(const RenderOptions& options, const RenderScene& scene,
+                        const CameraSettings& camera);
 
 /// What `viewer --inspect` prints: the tables (without --inspect-out) and the comparison.
 std::string pixelReplayText(const PixelReplay& replay, bool withTables);
