@@ -108,6 +108,10 @@ const std::vector<KnownBug>& knownBugs() {
         {"forgot to divide by the pick probability 1/3", "", LabStep::ProbabilityDivision,
          labBit(Lab::Uniform),
          [](FurnaceBehaviour& b) { b.diffuseWeight = b.mirrorWeight = 1.0 / 3; }},
+        // 1/2 where the pick is 1/3: the three components read as two.
+        {"divided by 1/2 instead of the pick probability 1/3", "", LabStep::ProbabilityDivision,
+         labBit(Lab::Uniform),
+         [](FurnaceBehaviour& b) { b.diffuseWeight = b.mirrorWeight = 2.0 / 3; }},
         {"divided by the pick probability twice", "", LabStep::ProbabilityDivision,
          labBit(Lab::Uniform), [](FurnaceBehaviour& b) { b.diffuseWeight = b.mirrorWeight = 3; }},
         {"divided by 1/3 instead of the chosen component's probability", "",
