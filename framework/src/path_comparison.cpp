@@ -40,7 +40,7 @@ bool closeDirection(const Vec3& a, const Vec3& b) {
 class SampleWalk {
 public:
     SampleWalk(const PixelInspection& lab, const PixelInspection& reference, size_t sample)
-        : lab_(lab), reference_(reference), sample_(sample), ours_(lab.samples[sample]),
+        : lab_(lab), sample_(sample), ours_(lab.samples[sample]),
           theirs_(reference.samples[sample]) {}
 
     /// The first difference, if any; `comparable` is cleared when the draws part.
@@ -316,7 +316,6 @@ private:
     }
 
     const PixelInspection& lab_;
-    const PixelInspection& reference_;
     size_t sample_;
     const InspectedSample& ours_;
     const InspectedSample& theirs_;
