@@ -41,8 +41,7 @@ Sampler PathDriver::samplerFor(uint64_t seed, uint64_t pixelIndex, uint64_t samp
     return Sampler(rng);
 }
 
-Hit PathContext::trace(const Ray& ray, CallSite caller) {
-    if (recorder_) return recordedTrace(ray, caller);
+Hit PathContext::traceUnrecorded(const Ray& ray, CallSite caller) {
     // A ray built by a lab: Embree would trace a non-unit direction, with every distance and
     // offset along it scaled, and a NaN one would find nothing. Both come from a step before.
     // The check names the line of this trace() call, but the ray was usually made further up:
@@ -68,8 +67,7 @@ Hit PathContext::trace(const Ray& ray, CallSite caller) {
     return scene_.intersect(ray);
 }
 
-Color PathContext::directLight(const Hit& hit, CallSite caller) {
-    if (recorder_) return recordedDirectLight(hit, caller);
+Color PathContext::directLightUnrecorded(const Hit& hit, CallSite caller) {
     PATHLAB_CHECK_CALLER(hit.found, caller,
                          "ctx.directLight(hit) needs a surface: call it after `if (!hit)` has "
                          "returned for a ray that left the scene");
@@ -116,27 +114,22 @@ Color PathContext::directLight(const Hit& hit, CallSite caller) {
     return hit.material.Kd * arriving * (InvPi * cosReceiver * inverseDistance * light.inversePmf);
 }
 
-// The recorded versions run the usual code with the recorder set aside (so it does not record
-// itself), then hand the recorder what happened; it may replace what the lab receives, to probe
-// how the lab weights it (pathlab/path_recorder.h).
+// The recorded versions run the usual code, then hand the recorder what happened; it may replace
+// what the lab receives, to probe how the lab weights it (pathlab/path_recorder.h).
 Hit PathContext::recordedTrace(const Ray& ray, CallSite caller) {
-    PathRecorder* recorder = std::exchange(recorder_, nullptr);
-    const Hit hit = trace(ray, caller);
-    recorder_ = recorder;
-    return recorder->traced(ray, hit, sampler);
+    const Hit hit = traceUnrecorded(ray, caller);
+    return recorder_->traced(ray, hit, sampler);
 }
 
 Color PathContext::recordedDirectLight(const Hit& hit, CallSite caller) {
-    PathRecorder* recorder = std::exchange(recorder_, nullptr);
-    RayLog* renderLog = std::exchange(log_, &recorder->shadowRays());
+    RayLog* renderLog = std::exchange(log_, &recorder_->shadowRays());
     const Sampler before = sampler;
     const size_t shadowRaysBefore = log_->occlusion.size();
-    const Color light = directLight(hit, caller);
+    const Color light = directLightUnrecorded(hit, caller);
     const bool sentShadowRay = log_->occlusion.size() > shadowRaysBefore;
     if (renderLog && sentShadowRay) renderLog->occlusion.push_back(log_->occlusion.back());
     log_ = renderLog;
-    recorder_ = recorder;
-    return recorder->directLit(hit, light, sentShadowRay, before, sampler);
+    return recorder_->directLit(hit, light, sentShadowRay, before, sampler);
 }
 
 } // namespace pathlab

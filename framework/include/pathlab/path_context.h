@@ -43,7 +43,11 @@ public:
 private:
     friend class PathDriver;
     PathContext(const RenderScene& scene, const LabParameters& parameters);
-    // The path inspector's versions of trace() and directLight(): the same work, recorded.
+    // The work of trace() and directLight(), and the path inspector's versions of them: the
+    // same work, recorded. The public functions, inline below, only choose between the two, so
+    // that a render without the inspector pays one test of recorder_ per call and no extra call.
+    Hit traceUnrecorded(const Ray& ray, CallSite caller);
+    Color directLightUnrecorded(const Hit& hit, CallSite caller);
     Hit recordedTrace(const Ray& ray, CallSite caller);
     Color recordedDirectLight(const Hit& hit, CallSite caller);
 
@@ -55,5 +59,13 @@ private:
     const CameraPacket* packet_ = nullptr; ///< primed by the renderer for the next trace()
     int lane_ = 0;
 };
+
+inline Hit PathContext::trace(const Ray& ray, CallSite caller) {
+    return recorder_ ? recordedTrace(ray, caller) : traceUnrecorded(ray, caller);
+}
+
+inline Color PathContext::directLight(const Hit& hit, CallSite caller) {
+    return recorder_ ? recordedDirectLight(hit, caller) : directLightUnrecorded(hit, caller);
+}
 
 } // namespace pathlab
