@@ -60,7 +60,7 @@ bool sameView(const CameraSettings& a, const CameraSettings& b) {
         return u.x == v.x && u.y == v.y && u.z == v.z;
     };
     return same(a.position, b.position) && same(a.lookAt, b.lookAt) && same(a.up, b.up) &&
-           a.fovDegrees == b.fovDegrees;
+           a.fovDegrees == b.fovDegrees && a.leftHanded == b.leftHanded;
 }
 
 const char* metricName(ConvergenceMetric metric) {

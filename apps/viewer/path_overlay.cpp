@@ -15,6 +15,7 @@ CameraProjection::CameraProjection(const CameraSettings& camera, int width, int 
     forward_ = normalize(camera.lookAt - camera.position);
     right_ = normalize(cross(forward_, camera.up));
     up_ = cross(right_, forward_);
+    if (camera.leftHanded) right_ = -right_;
     halfHeight_ = std::tan(0.5f * camera.fovDegrees * Pi / 180.0f);
     halfWidth_ = halfHeight_ * width_ / height_;
     near_ = 1e-4f * std::max(length(camera.lookAt - camera.position), 1e-3f);

@@ -1,5 +1,6 @@
 #include "pathlab/light_sampler.h"
 
+#include "pathlab/bounding_box.h"
 #include "pathlab/constants.h"
 #include "pathlab/triangle_sampling.h"
 
@@ -36,6 +37,26 @@ LightSampler::LightSampler(const Scene& scene) {
         light.Ke = Ke;
         lights_.push_back(light);
         power.push_back(p);
+    }
+    if (!scene.directionalLights.empty()) {
+        // A directional light's power is what crosses the disc the scene presents to it, of the
+        // radius of the sphere around the scene (as pbrt counts it).
+        const BoundingBox bounds = boundingBoxOf(scene.positions);
+        const float radius = bounds.radius();
+        for (size_t i = 0; i < scene.directionalLights.size(); ++i) {
+            const DirectionalLight& directional = scene.directionalLights[i];
+            const double p = Pi * double(radius) * radius * average(directional.irradiance);
+            if (p <= 0) continue;
+            LightSource light;
+            light.type = LightSource::Type::Directional;
+            light.index = static_cast<uint32_t>(i);
+            light.towardLight = -normalize(directional.direction);
+            light.irradiance = directional.irradiance;
+            // From a point inside the sphere, 2r reaches outside it; a little more clears it.
+            light.shadowDistance = 2.0f * radius * 1.01f + 1e-3f;
+            lights_.push_back(light);
+            power.push_back(p);
+        }
     }
     const size_t n = lights_.size();
     if (n == 0) return;

@@ -79,6 +79,7 @@ Color PathContext::directLightUnrecorded(const Hit& hit, CallSite caller) {
     const float v = sampler.get1D();
     const LightSource& light = lights.pick(u, v, pickProbability);
     PATHLAB_DCHECK(pickProbability > 0);
+    if (light.type == LightSource::Type::Directional) return directionalLight(hit, light);
 
     // Radiance arriving from the light along the shadow ray, divided by the pdf of the chosen
     // point in solid angle at the receiver, i.e. L·cosθ'/(r²·p_area) for an area light.
@@ -112,6 +113,20 @@ Color PathContext::directLightUnrecorded(const Hit& hit, CallSite caller) {
     if (log_) log_->occlusion.push_back({origin, lightPosition});
     if (scene_.occluded(origin, lightPosition)) return Color();
     return hit.material.Kd * arriving * (InvPi * cosReceiver * inverseDistance * light.inversePmf);
+}
+
+// Out of directLightUnrecorded, which stays as it was for point and triangle lights: a scene
+// without directional lights pays one comparison per call for them.
+Color PathContext::directionalLight(const Hit& hit, const LightSource& light) {
+    const float cosReceiver = dot(hit.normal, light.towardLight);
+    if (cosReceiver <= 0) return Color();
+    ++shadowRays_;
+    const Vec3 origin = offsetRayOrigin(hit, light.towardLight);
+    const Vec3 beyondScene = origin + light.towardLight * light.shadowDistance;
+    if (log_) log_->occlusion.push_back({origin, beyondScene});
+    if (scene_.occluded(origin, beyondScene)) return Color();
+    // Irradiance E·cosθ on the receiver, reflected by Kd/π.
+    return hit.material.Kd * light.irradiance * (InvPi * cosReceiver * light.inversePmf);
 }
 
 // The recorded versions run the usual code, then hand the recorder what happened; it may replace

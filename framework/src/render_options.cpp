@@ -1,10 +1,14 @@
 #include "pathlab/render_options.h"
 
+#include "pathlab/bounding_box.h"
+#include "pathlab/embree_only_options.h"
 #include "pathlab/input_error.h"
 #include "pathlab/obj_loader.h"
 #include "pathlab/option_reader.h"
 #include "pathlab/parse_number.h"
+#include "pathlab/scene_defaults.h"
 #include "pathlab/scene_script.h"
+#include "pathlab/xml_scene.h"
 
 #include <charconv>
 #include <cmath>
@@ -27,13 +31,59 @@ std::string optionName(const std::string& text) {
     return {};
 }
 
+/// The options' camera, with what they leave open framed on the scene's model, and a note
+/// saying so.
+CameraSettings sceneCamera(const RenderOptions& options, const Scene& scene) {
+    if (options.cameraPositionSet && options.cameraLookAtSet) return options.camera;
+    GivenCamera given;
+    given.settings = options.camera;
+    given.position = options.cameraPositionSet;
+    given.lookAt = options.cameraLookAtSet;
+    given.fov = options.fovSet;
+    given.viewDirection = options.viewDirection;
+    const CameraSettings camera =
+        framingCamera(boundingBoxOf(scene.positions), given,
+                      static_cast<float>(options.width) / static_cast<float>(options.height));
+    const Vec3& at = camera.lookAt;
+    const Vec3& from = camera.position;
+    if (given.lookAt)
+        std::fprintf(stderr,
+                     "note: no --vp given: looking at (%g, %g, %g) from (%g, %g, %g), far enough "
+                     "back to see the whole model; set --vp X Y Z to choose\n",
+                     at.x, at.y, at.z, from.x, from.y, from.z);
+    else if (given.position)
+        std::fprintf(stderr,
+                     "note: no --vi given: looking at the model's centre (%g, %g, %g) from (%g, "
+                     "%g, %g); set --vi X Y Z to choose\n",
+                     at.x, at.y, at.z, from.x, from.y, from.z);
+    else
+        std::fprintf(stderr,
+                     "note: no camera given (--vp/--vi): looking at the model's centre (%g, %g, "
+                     "%g) from (%g, %g, %g); set --vp X Y Z --vi X Y Z to choose\n",
+                     at.x, at.y, at.z, from.x, from.y, from.z);
+    return camera;
+}
+
 } // namespace
 
 RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraOptions& extra) {
     RenderOptions o;
     OptionReader in(commandLineTokens(argc, argv));
     int scriptDepth = 0;
+    IgnoredOptions ignored;
     using Handler = std::function<void(const Token&)>;
+    // Embree's --directionallight, and its alias -dirlight, which Embree's scripts use.
+    const Handler directionalLight = [&](const Token& t) {
+        DirectionalLight light;
+        light.direction = in.vec3(t);
+        if (dot(light.direction, light.direction) == 0)
+            OptionReader::fail(t, "option " + t.text + " expects a direction, not 0 0 0");
+        const Vec3 e = in.vec3(t);
+        if (e.x < 0 || e.y < 0 || e.z < 0)
+            OptionReader::fail(t, "option " + t.text + ": an irradiance cannot be negative");
+        light.irradiance = {e.x, e.y, e.z};
+        o.directionalLights.push_back(light);
+    };
     const std::map<std::string, Handler> handlers = {
         {"c",
          [&](const Token& t) {
@@ -45,19 +95,39 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
         {"i",
          [&](const Token& t) {
              const std::string path = in.path(t);
+             refuseXmlScene(path);
              if (o.sceneName.empty()) o.sceneName = fs::path(path).stem().string();
              o.objFiles.push_back(path);
          }},
-        {"vp", [&](const Token& t) { o.camera.position = in.vec3(t), o.cameraSet = true; }},
-        {"vi", [&](const Token& t) { o.camera.lookAt = in.vec3(t), o.cameraSet = true; }},
+        {"vp",
+         [&](const Token& t) {
+             o.camera.position = in.vec3(t);
+             o.cameraSet = o.cameraPositionSet = true;
+         }},
+        {"vi",
+         [&](const Token& t) {
+             o.camera.lookAt = in.vec3(t);
+             o.cameraSet = o.cameraLookAtSet = true;
+             o.viewDirection.reset();
+         }},
+        {"vd",
+         [&](const Token& t) {
+             const Vec3 direction = in.vec3(t);
+             if (dot(direction, direction) == 0)
+                 OptionReader::fail(t, "option " + t.text + " expects a direction, not 0 0 0");
+             o.viewDirection = direction;
+             o.cameraSet = true;
+         }},
         {"vu", [&](const Token& t) { o.camera.up = in.vec3(t), o.cameraSet = true; }},
+        {"lefthanded", [&](const Token&) { o.camera.leftHanded = true; }},
+        {"righthanded", [&](const Token&) { o.camera.leftHanded = false; }},
         {"fov",
          [&](const Token& t) {
              const float fov = in.number(t, "an angle in degrees");
              if (!(fov > 0 && fov < 180))
                  OptionReader::fail(t,
                                     "option " + t.text + " expects an angle in (0, 180) degrees");
-             o.camera.fovDegrees = fov, o.cameraSet = true;
+             o.camera.fovDegrees = fov, o.cameraSet = o.fovSet = true;
          }},
         {"pointlight",
          [&](const Token& t) {
@@ -70,6 +140,8 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
              light.intensity = {i.x, i.y, i.z};
              o.pointLights.push_back(light);
          }},
+        {"directionallight", directionalLight},
+        {"dirlight", directionalLight},
         {"size",
          [&](const Token& t) {
              o.width = in.positive(t, "a width in pixels", 16384);
@@ -152,13 +224,26 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
             continue;
         }
         if (handler == handlers.end()) {
+            const Token option = token;
+            if (std::optional<std::string> skipped = skipEmbreeOnlyOption(in, option, name)) {
+                ignored.add(option, std::move(*skipped));
+                continue;
+            }
             const std::string what =
-                optionName(token.text).empty() ? "unexpected argument '" : "unknown option '";
-            OptionReader::fail(token, what + token.text + "' (viewer --help lists the options)");
+                optionName(option.text).empty() ? "unexpected argument '" : "unknown option '";
+            OptionReader::fail(option, what + option.text + "' (viewer --help lists the options)");
         }
         const Token option = token; // `token` may move when a -c script is inserted
         handler->second(option);
     }
+    // As Embree reads --vd: the look-at point is the position plus the direction.
+    if (o.viewDirection && o.cameraPositionSet) {
+        o.camera.lookAt = o.camera.position + *o.viewDirection;
+        o.cameraLookAtSet = true;
+        o.viewDirection.reset();
+    }
+    for (const std::string& warning : ignored.warnings())
+        std::fprintf(stderr, "%s\n", warning.c_str());
     return o;
 }
 
@@ -168,7 +253,18 @@ Scene loadScene(const RenderOptions& options) {
     Scene scene;
     for (const std::string& obj : options.objFiles) loadObj(obj, scene);
     for (const PointLight& light : options.pointLights) scene.pointLights.push_back(light);
-    if (options.cameraSet) scene.camera = options.camera;
+    for (const DirectionalLight& light : options.directionalLights)
+        scene.directionalLights.push_back(light);
+    scene.camera = sceneCamera(options, scene);
+    if (!hasLight(scene)) {
+        const PointLight light = headlight(*scene.camera);
+        std::fprintf(stderr,
+                     "note: the scene has no light (no Ke material, no --pointlight, no "
+                     "--dirlight): added a point light of %g W/sr at the camera; give "
+                     "--pointlight X Y Z R G B or --dirlight DX DY DZ R G B instead\n",
+                     light.intensity.r);
+        scene.pointLights.push_back(light);
+    }
     return scene;
 }
 
@@ -180,8 +276,17 @@ std::string renderOptionsHelp() {
   -i FILE.obj            add an OBJ mesh (and the .mtl files it names)
   --vp X Y Z --vi X Y Z --vu X Y Z --fov DEG
                          camera position, look-at point, up vector, vertical field of view
+                         (without --vp and --vi: the whole model, from the front)
+  --vd X Y Z             view direction: look at --vp + (X,Y,Z); without --vp, at the model
+  --lefthanded, --righthanded
+                         Embree's camera handedness: right-handed (the default) sees +x on the
+                         left looking down +z with +y up; left-handed mirrors that
   --pointlight X Y Z R G B
                          a point light at (X,Y,Z) with intensity (R,G,B) in W/sr
+                         (without any light: one at the camera)
+  --dirlight DX DY DZ R G B
+                         a directional light travelling along (DX,DY,DZ), irradiance (R,G,B)
+                         in W/m² on a surface facing it (also --directionallight)
   --size W H             image size in pixels (default 512 512)
 estimator
 )") + "  --lab NAME             " +

@@ -18,8 +18,8 @@ bool ViewSettings::operator==(const ViewSettings& o) const {
            parameters.continueProb == o.parameters.continueProb &&
            same(camera.position, o.camera.position) && same(camera.lookAt, o.camera.lookAt) &&
            same(camera.up, o.camera.up) && camera.fovDegrees == o.camera.fovDegrees &&
-           width == o.width && height == o.height && sppPerFrame == o.sppPerFrame &&
-           seed == o.seed && split == o.split;
+           camera.leftHanded == o.camera.leftHanded && width == o.width && height == o.height &&
+           sppPerFrame == o.sppPerFrame && seed == o.seed && split == o.split;
 }
 
 namespace {

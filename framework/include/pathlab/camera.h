@@ -12,10 +12,13 @@ struct CameraSettings {
     Vec3 lookAt{0, 0, 0};     ///< --vi: a point the camera looks at
     Vec3 up{0, 1, 0};         ///< --vu: roughly up in the image
     float fovDegrees = 90.0f; ///< --fov: vertical field of view
+    /// --lefthanded: the image mirrored left-right, +x on its right when looking down +z with +y
+    /// up. Embree's tutorials are right-handed unless told (--righthanded is their default).
+    bool leftHanded = false;
 };
 
-/// Turns image positions into primary rays. Right-handed: looking down +z with +y up puts +x on
-/// the left of the image, as Embree's tutorials do.
+/// Turns image positions into primary rays. Right-handed unless the settings say left-handed:
+/// looking down +z with +y up puts +x on the left of the image, as Embree's tutorials do.
 class Camera {
 public:
     Camera(const CameraSettings& settings, int width, int height);

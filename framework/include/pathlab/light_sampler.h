@@ -11,16 +11,24 @@
 
 namespace pathlab {
 
-/// One light of the scene: a point light or an emissive triangle, with what next-event
-/// estimation needs of it copied out of the Scene, so a shadow ray's setup reads one record.
-struct LightSource {
-    enum class Type { Point, Triangle } type = Type::Point;
-    uint32_t index = 0; ///< into Scene::pointLights, or the triangle index
+/// One light of the scene: a point light, an emissive triangle or a directional light, with what
+/// next-event estimation needs of it copied out of the Scene, so a shadow ray's setup reads one
+/// record. Aligned to 32 bytes, which makes it 128: a power of two, so that finding a light by
+/// its index (pick(), size()) is a shift rather than a multiplication.
+struct alignas(32) LightSource {
+    enum class Type { Point, Triangle, Directional } type = Type::Point;
+    uint32_t index = 0; ///< into Scene::pointLights, the triangle index, or into
+                        ///< Scene::directionalLights
     Vec3 position;      ///< a point light's position
     Color intensity;    ///< a point light's intensity
     Vec3 a, b, c;       ///< a triangle's vertices, counter-clockwise
     Vec3 areaNormal;    ///< a triangle's cross(b - a, c - a): twice its area, out of its front
     Color Ke;           ///< a triangle's emitted radiance
+    Vec3 towardLight;   ///< a directional light's unit direction back towards it
+    Color irradiance;   ///< a directional light's irradiance on a surface facing it
+    /// How far a directional light's shadow ray reaches: from anywhere in the scene to beyond
+    /// the sphere around it.
+    float shadowDistance = 0;
     /// 1 / the probability LightSampler::pick() returns this light: next-event estimation's
     /// weight, so that a shadow ray multiplies rather than divides.
     float inversePmf = 0;

@@ -14,6 +14,7 @@ namespace pathlab {
 class RenderScene;
 struct CameraPacket;
 struct LabParameters;
+struct LightSource;
 struct RayLog;
 class PathRecorder;
 
@@ -48,6 +49,7 @@ private:
     // that a render without the inspector pays one test of recorder_ per call and no extra call.
     Hit traceUnrecorded(const Ray& ray, CallSite caller);
     Color directLightUnrecorded(const Hit& hit, CallSite caller);
+    Color directionalLight(const Hit& hit, const LightSource& light);
     Hit recordedTrace(const Ray& ray, CallSite caller);
     Color recordedDirectLight(const Hit& hit, CallSite caller);
 

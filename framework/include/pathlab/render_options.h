@@ -23,8 +23,16 @@ struct RenderOptions {
     std::vector<std::string> sceneScripts; ///< -c files read, those they include as well
     std::vector<std::string> objFiles;     ///< -i, resolved relative to the .ecs that named them
     std::vector<PointLight> pointLights;   ///< --pointlight
+    std::vector<DirectionalLight> directionalLights; ///< --dirlight, --directionallight
     CameraSettings camera;
-    bool cameraSet = false;        ///< any of --vp/--vi/--vu/--fov was given
+    bool cameraSet = false; ///< any of --vp/--vi/--vd/--vu/--fov was given
+    /// Which of them place the camera; loadScene() frames the model for what they leave open
+    /// (pathlab/scene_defaults.h).
+    bool cameraPositionSet = false; ///< --vp
+    bool cameraLookAtSet = false;   ///< --vi or --vd
+    bool fovSet = false;            ///< --fov
+    /// --vd without --vp: look along it at the model (with --vp, camera.lookAt is --vp + --vd).
+    std::optional<Vec3> viewDirection;
     int width = 512, height = 512; ///< --size
 
     // Estimator
@@ -61,12 +69,16 @@ using ExtraOptions =
 
 /// Parses the command line; -c files are read in place, as if their tokens had been typed there.
 /// Throws InputError naming the option (and file:line for .ecs files) on anything it cannot use.
+/// Embree's options PathLab has no meaning for are skipped with one warning per script on
+/// stderr (pathlab/embree_only_options.h).
 RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraOptions& extra = {});
 
 /// The summary of these options, for --help.
 std::string renderOptionsHelp();
 
-/// Loads the scene files the options name and adds their lights and camera.
+/// Loads the scene files the options name and adds their lights and camera. Where they give no
+/// camera, or no light at all, it adds its own with a note on stderr (pathlab/scene_defaults.h):
+/// a scene from loadScene() always has a camera.
 Scene loadScene(const RenderOptions& options);
 
 } // namespace pathlab

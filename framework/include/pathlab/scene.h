@@ -1,5 +1,5 @@
 #pragma once
-/// The scene as loaded from files: triangles, materials, point lights and camera, before Embree.
+/// The scene as loaded from files: triangles, materials, lights and camera, before Embree.
 
 #include "pathlab/camera.h"
 #include "pathlab/color.h"
@@ -21,6 +21,13 @@ struct PointLight {
     Color intensity;
 };
 
+/// A directional light as Embree's --dirlight gives it: light travelling along `direction` (not
+/// necessarily unit length), with irradiance E (W/m² per channel) on a surface facing it.
+struct DirectionalLight {
+    Vec3 direction;
+    Color irradiance;
+};
+
 /// All geometry merged into one indexed triangle mesh (one Embree geometry), so a hit's
 /// primitive index is the triangle index below.
 struct Scene {
@@ -31,6 +38,7 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<std::string> materialNames; ///< same order as `materials`
     std::vector<PointLight> pointLights;
+    std::vector<DirectionalLight> directionalLights;
     std::optional<CameraSettings> camera; ///< from the scene script, if it set one
 
     /// Adds a material and returns its index.
@@ -40,7 +48,8 @@ struct Scene {
         return static_cast<uint32_t>(materials.size() - 1);
     }
 
-    /// A camera that frames the whole scene from the front (-z), for scenes without one.
+    /// A camera that frames the whole scene from the front (pathlab/scene_defaults.h), for
+    /// scenes without one.
     CameraSettings framingCamera() const;
 };
 
