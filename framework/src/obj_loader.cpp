@@ -1,12 +1,15 @@
 #include "pathlab/obj_loader.h"
 
 #include "pathlab/input_error.h"
-#include "pathlab/obj_validation.h"
+#include "pathlab/obj_reading.h"
+#include "pathlab/printable_text.h"
 
 #include <tiny_obj_loader.h>
 
 #include <cstdio>
-#include <filesystem>
+#include <map>
+#include <sstream>
+#include <stdexcept>
 #include <unordered_map>
 
 namespace pathlab {
@@ -27,25 +30,54 @@ Material toMaterial(const tinyobj::material_t& m) {
     return material;
 }
 
+/// Hands tinyobjloader the material libraries as PathLab read them, for the "mtllib N" lines of
+/// the text it is given, and gives their materials PathLab's names.
+class ReadLibraries : public tinyobj::MaterialReader {
+public:
+    explicit ReadLibraries(const std::vector<MaterialLibrary>& libraries) : libraries_(libraries) {}
+
+    bool operator()(const std::string& index, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* names, std::string* warning,
+                    std::string* error) override {
+        const MaterialLibrary& library = libraries_.at(std::stoul(index));
+        if (library.names.empty()) return true; // tinyobjloader would add a nameless material
+        const size_t first = materials->size();
+        std::istringstream text(library.textForTinyobj);
+        tinyobj::LoadMtl(names, materials, &text, warning, error);
+        if (materials->size() - first != library.names.size())
+            throw std::logic_error(
+                "tinyobjloader read " + std::to_string(materials->size() - first) +
+                " materials of the " + std::to_string(library.names.size()) + " PathLab read");
+        for (size_t i = 0; i < library.names.size(); ++i)
+            (*materials)[first + i].name = library.names[i];
+        return true;
+    }
+
+private:
+    const std::vector<MaterialLibrary>& libraries_;
+};
+
 } // namespace
 
 void loadObj(const std::string& objPath, Scene& scene) {
-    // tinyobjloader is lenient (it skips what it cannot read); our own pass first turns every
-    // malformed line into an error that names it.
-    validateObj(objPath);
+    // tinyobjloader skips what it cannot read and says little; PathLab's reading first turns
+    // what would make a wrong mesh into an error naming its line, and every liberty it takes
+    // into a warning or note.
+    InputNotes notes;
+    const ObjReading reading = readObj(objPath, notes);
 
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
-    config.vertex_color = false;
-    config.mtl_search_path = std::filesystem::path(objPath).parent_path().string();
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(objPath, config))
-        throw InputError(objPath + ": " +
-                         (reader.Error().empty() ? "cannot be read" : reader.Error()));
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::string warning, error;
+    std::istringstream text(reading.textForTinyobj);
+    ReadLibraries libraries(reading.libraries);
+    if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &text, &libraries,
+                          /*triangulate=*/true, /*default_vcols_fallback=*/false))
+        throw InputError(printableText(objPath) + ": " +
+                         (error.empty() ? "cannot be read" : printableText(error)));
 
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
-    const auto& materials = reader.GetMaterials();
-
+    const auto firstTriangle = scene.triangles.size();
     const auto firstMaterial = static_cast<uint32_t>(scene.materials.size());
     for (const tinyobj::material_t& m : materials) scene.addMaterial(m.name, toMaterial(m));
     uint32_t defaultMaterial = UINT32_MAX;
@@ -72,7 +104,8 @@ void loadObj(const std::string& objPath, Scene& scene) {
     };
 
     int degenerate = 0;
-    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    bool explainGrey = false;
+    for (const tinyobj::shape_t& shape : shapes) {
         const auto& mesh = shape.mesh;
         for (size_t f = 0; f < mesh.num_face_vertices.size(); ++f) {
             const std::array<uint32_t, 3> tri = {vertex(mesh.indices[3 * f]),
@@ -93,8 +126,7 @@ void loadObj(const std::string& objPath, Scene& scene) {
                     Material grey;
                     grey.Kd = Color(0.5f);
                     defaultMaterial = scene.addMaterial("(default)", grey);
-                    std::fprintf(stderr, "note: %s: faces without a material are grey (Kd 0.5)\n",
-                                 objPath.c_str());
+                    explainGrey = !reading.greyFacesExplained;
                 }
                 material = defaultMaterial;
             }
@@ -102,9 +134,19 @@ void loadObj(const std::string& objPath, Scene& scene) {
             scene.triangleMaterials.push_back(material);
         }
     }
+    if (scene.triangles.size() == firstTriangle)
+        throw InputError(printableText(objPath) + ": no triangles (" +
+                         (degenerate > 0
+                              ? "its " + std::to_string(degenerate) + " triangle(s) have zero area"
+                              : std::string("no 'f' line makes a triangle")) +
+                         ")");
+    notes.print();
+    if (explainGrey)
+        std::fprintf(stderr, "note: %s: faces without a material are grey (Kd 0.5)\n",
+                     printableText(objPath).c_str());
     if (degenerate > 0)
-        std::fprintf(stderr, "note: %s: skipped %d triangle(s) with zero area\n", objPath.c_str(),
-                     degenerate);
+        std::fprintf(stderr, "note: %s: skipped %d triangle(s) with zero area\n",
+                     printableText(objPath).c_str(), degenerate);
 }
 
 } // namespace pathlab

@@ -2,6 +2,7 @@
 
 #include "pathlab/input_error.h"
 #include "pathlab/parse_number.h"
+#include "pathlab/printable_text.h"
 
 #include <charconv>
 #include <filesystem>
@@ -57,8 +58,9 @@ std::string OptionReader::path(const Token& option) {
 }
 
 void OptionReader::fail(const Token& where, const std::string& message) {
-    if (where.file.empty()) throw InputError(message);
-    throw inputErrorAt(where.file, where.line, message);
+    // The message echoes a word of a file or the command line, which may be any bytes.
+    if (where.file.empty()) throw InputError(printableText(message));
+    throw inputErrorAt(printableText(where.file), where.line, printableText(message));
 }
 
 int OptionReader::positive(const Token& option, const char* what, long long max) {

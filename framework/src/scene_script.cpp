@@ -1,23 +1,22 @@
 #include "pathlab/scene_script.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/text_file.h"
 
-#include <fstream>
 #include <sstream>
 
 namespace pathlab {
 
 std::vector<Token> readSceneScript(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path + ": cannot open the scene script");
+    // UTF-16 and a byte-order mark are what a Windows editor's "Unicode" writes.
+    const std::string text = readTextFile(path, "the scene script");
     std::vector<Token> tokens;
-    std::string line;
-    for (int lineNumber = 1; std::getline(in, line); ++lineNumber) {
-        if (const size_t hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+    int lineNumber = 0;
+    for (const std::string_view textLine : textLines(text)) {
+        ++lineNumber;
+        std::string line(textLine.substr(0, textLine.find('#')));
         std::istringstream words(line);
         for (std::string word; words >> word;) tokens.push_back({word, path, lineNumber});
     }
-    if (in.bad()) throw InputError(path + ": read error");
     return tokens;
 }
 

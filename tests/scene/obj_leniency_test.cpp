@@ -1,0 +1,362 @@
+// OBJ and MTL files read as leniently as tinyobjloader reads them: what Blender, MeshLab and
+// assimp read with a warning renders, with one warning or note naming file:line and what PathLab
+// then assumes; what would make a wrong mesh stays an error of one line and exit status 2.
+// Every render here gives its camera (--vp/--vi) and light (--pointlight).
+#include "catch.h"
+#include "test_support.h"
+
+#include "pathlab/image_io.h"
+#include "pathlab/obj_loader.h"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+using namespace pathlab;
+
+namespace {
+
+void writeFile(const std::string& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+const char* triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+
+struct Rendered {
+    int exitStatus = -1;
+    std::string output;
+    Image image;
+};
+
+/// Renders DIR/FILE (an .obj, or an .ecs with -c) through the reference solution of lab 3, the
+/// camera facing the triangle of `triangle` and a light beside the camera.
+Rendered render(const std::string& dir, const std::string& file = "a.obj") {
+    const std::string scene = (file.size() > 4 && file.substr(file.size() - 4) == ".ecs")
+                                  ? "-c " + dir + "/" + file
+                                  : "-i " + dir + "/" + file;
+    const std::string image = dir + "/out.pfm";
+    Rendered r;
+    const auto run = test::runViewer(scene +
+                                     " --size 16 16 --spp 4 --lab importance --solution"
+                                     " --vp 0.3 0.3 -2 --vi 0.3 0.3 0"
+                                     " --pointlight 0.3 0.3 -1 1 1 1 -o " +
+                                     image);
+    r.exitStatus = run.exitStatus;
+    r.output = run.output;
+    if (r.exitStatus == 0) r.image = readImage(image);
+    return r;
+}
+
+/// The brightest pixel's value in channel `c` (0 red, 1 green, 2 blue).
+float brightest(const Image& image, int c) {
+    float most = 0;
+    for (size_t i = static_cast<size_t>(c); i < image.rgb.size(); i += 3)
+        most = std::max(most, image.rgb[i]);
+    return most;
+}
+
+bool has(const std::string& output, const std::string& text) {
+    return output.find(text) != std::string::npos;
+}
+
+size_t lines(const std::string& output, const std::string& start) {
+    size_t n = 0;
+    std::istringstream in(output);
+    for (std::string line; std::getline(in, line);) n += line.rfind(start, 0) == 0;
+    return n;
+}
+
+/// Expects the render to succeed with a lit, grey (Kd 0.5) triangle in the image.
+void expectGreyImage(const Rendered& r) {
+    REQUIRE(r.exitStatus == 0);
+    CHECK(brightest(r.image, 0) > 0);
+    CHECK(brightest(r.image, 0) == Approx(brightest(r.image, 2)));
+}
+
+Material materialNamed(const Scene& scene, const std::string& name) {
+    for (size_t i = 0; i < scene.materials.size(); ++i)
+        if (scene.materialNames[i] == name) return scene.materials[i];
+    FAIL("no material '" << name << "'");
+    throw;
+}
+
+std::string materialOfTriangle(const Scene& scene, size_t t) {
+    return scene.materialNames[scene.triangleMaterials.at(t)];
+}
+
+/// Runs the viewer on DIR/a.obj and expects exit status 2 and one line holding `expected`.
+void expectRejected(const std::string& dir, const std::string& expected,
+                    const std::string& file = "a.obj") {
+    const Rendered r = render(dir, file);
+    INFO("output: " << r.output);
+    CHECK(r.exitStatus == 2);
+    CHECK(has(r.output, expected));
+    CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);
+}
+
+} // namespace
+
+TEST_CASE("a usemtl naming a material no mtllib defines: grey, one warning per file",
+          "[scene][obj-leniency][solutions]") {
+    const std::string dir = test::temporaryFolder("undefined-material");
+    writeFile(dir + "/m.mtl", "newmtl white\nKd 0.5 0.5 0.5\n");
+    std::string obj = std::string("mtllib m.mtl\n") + triangle + "usemtl chrome\nf 1 2 3\n";
+    for (int i = 0; i < 499; ++i) obj += "usemtl chrome" + std::to_string(i) + "\nf 1 2 3\n";
+    writeFile(dir + "/a.obj", obj);
+    const Rendered r = render(dir);
+    INFO(r.output);
+    expectGreyImage(r);
+    CHECK(has(r.output, "warning: " + dir +
+                            "/a.obj:5: material 'chrome' is not defined by any mtllib: its faces "
+                            "are grey (Kd 0.5) (and 499 more like it)"));
+    CHECK(lines(r.output, "warning:") == 1);
+    CHECK(lines(r.output, "note:") == 0);
+}
+
+TEST_CASE("material names with spaces: the whole rest of the line, in newmtl and usemtl alike",
+          "[scene][obj-leniency][solutions]") {
+    const std::string dir = test::temporaryFolder("spaces");
+    writeFile(dir + "/m.mtl",
+              "newmtl my red paint\nKd 1 0 0\nnewmtl my   blue\t paint  \nKd 0 0 1\n");
+    // The blue triangle hides behind the red one.
+    writeFile(dir + "/a.obj", std::string("mtllib m.mtl\n") + triangle +
+                                  "v 0 0 1\nv 1 0 1\nv 0 1 1\n"
+                                  "usemtl  my red paint \nf 1 2 3\n"
+                                  "usemtl my   blue\t paint\nf 4 5 6\n");
+    const Rendered r = render(dir);
+    INFO(r.output);
+    REQUIRE(r.exitStatus == 0);
+    CHECK(brightest(r.image, 0) > 0);
+    CHECK(brightest(r.image, 1) == 0);
+    CHECK(has(r.output, "note: " + dir +
+                            "/m.mtl:1: material name 'my red paint' has spaces: PathLab reads the "
+                            "whole rest of the line as the name, in 'newmtl' and 'usemtl' alike"));
+    CHECK(lines(r.output, "note:") == 1);
+    CHECK(lines(r.output, "warning:") == 0);
+
+    Scene scene;
+    loadObj(dir + "/a.obj", scene);
+    REQUIRE(scene.triangles.size() == 2);
+    CHECK(materialOfTriangle(scene, 0) == "my red paint");
+    CHECK(materialOfTriangle(scene, 1) == "my   blue\t paint");
+    CHECK(materialNamed(scene, "my   blue\t paint").Kd.b == 1.0f);
+}
+
+TEST_CASE("a newmtl without a name makes a material named '', with a warning",
+          "[scene][obj-leniency][solutions]") {
+    const std::string dir = test::temporaryFolder("empty-newmtl");
+    writeFile(dir + "/m.mtl", "newmtl red\nKd 1 0 0\nnewmtl \nKd 0 0 1\n");
+    writeFile(dir + "/a.obj", std::string("mtllib m.mtl\n") + triangle + "usemtl\nf 1 2 3\n");
+    const Rendered r = render(dir);
+    INFO(r.output);
+    REQUIRE(r.exitStatus == 0);
+    CHECK(brightest(r.image, 2) > 0);
+    CHECK(brightest(r.image, 0) == 0);
+    CHECK(has(r.output, "warning: " + dir +
+                            "/m.mtl:3: 'newmtl' without a name: PathLab names "
+                            "the material ''"));
+    CHECK(lines(r.output, "warning:") == 1);
+
+    Scene scene;
+    loadObj(dir + "/a.obj", scene);
+    CHECK(materialNamed(scene, "red").Kd.r == 1.0f); // not overwritten by the nameless one's Kd
+    CHECK(materialNamed(scene, "").Kd.b == 1.0f);
+    CHECK(materialOfTriangle(scene, 0).empty());
+}
+
+TEST_CASE("an mtllib after the faces is read; a material used before it is grey",
+          "[scene][obj-leniency][solutions]") {
+    const std::string dir = test::temporaryFolder("late-mtllib");
+    writeFile(dir + "/m.mtl", "newmtl red\nKd 1 0 0\n");
+    writeFile(dir + "/a.obj", std::string(triangle) + "g first\nusemtl red\nf 1 2 3\n" +
+                                  "mtllib m.mtl\ng second\nusemtl red\nf 1 3 2\n");
+    const Rendered r = render(dir);
+    INFO(r.output);
+    REQUIRE(r.exitStatus == 0);
+    CHECK(brightest(r.image, 0) > 0);
+    CHECK(has(r.output, "warning: " + dir +
+                            "/a.obj:5: material 'red' is used before the 'mtllib' that defines "
+                            "it (line 7): its faces are grey (Kd 0.5), as tinyobjloader reads "
+                            "them"));
+    CHECK(lines(r.output, "warning:") == 1);
+    CHECK(lines(r.output, "note:") == 0);
+
+    Scene scene;
+    loadObj(dir + "/a.obj", scene);
+    REQUIRE(scene.triangles.size() == 2);
+    CHECK(materialOfTriangle(scene, 0) == "(default)");
+    CHECK(materialOfTriangle(scene, 1) == "red");
+}
+
+TEST_CASE("an mtllib whose file is missing: a warning, its materials grey",
+          "[scene][obj-leniency][solutions]") {
+    const std::string dir = test::temporaryFolder("missing-mtllib");
+    writeFile(dir + "/a.obj",
+              std::string("mtllib nowhere.mtl\n") + triangle + "usemtl white\nf 1 2 3\n");
+    const Rendered r = render(dir);
+    INFO(r.output);
+    expectGreyImage(r);
+    CHECK(has(r.output, "warning: " + dir +
+                            "/a.obj:1: material library 'nowhere.mtl' not found: faces of its "
+                            "materials are grey (Kd 0.5)"));
+    CHECK(has(r.output, "warning: " + dir + "/a.obj:5: material 'white' is not defined"));
+    CHECK(lines(r.output, "note:") == 0);
+}
+
+TEST_CASE("an Ni of 0, negative, absurd or missing: a warning, PathLab uses 1",
+          "[scene][obj-leniency][solutions]") {
+    const std::string dir = test::temporaryFolder("ni");
+    writeFile(dir + "/m.mtl", "newmtl zero\nKt 1 1 1\nNi 0\n"
+                              "newmtl negative\nKt 1 1 1\nNi -1.5\n"
+                              "newmtl absurd\nKt 1 1 1\nNi 1000\n"
+                              "newmtl missing\nKt 1 1 1\nNi\n"
+                              "newmtl glass\nKt 1 1 1\nNi 1.5\n");
+    writeFile(dir + "/a.obj", std::string("mtllib m.mtl\n") + triangle + "f 1 2 3\n");
+    Scene scene;
+    loadObj(dir + "/a.obj", scene);
+    for (const char* name : {"zero", "negative", "absurd", "missing"})
+        CHECK(materialNamed(scene, name).Ni == 1.0f);
+    CHECK(materialNamed(scene, "glass").Ni == 1.5f);
+
+    const Rendered r = render(dir);
+    INFO(r.output);
+    expectGreyImage(r);
+    CHECK(has(r.output, "warning: " + dir +
+                            "/m.mtl:3: 'Ni' (index of refraction) 0 must be > 0: PathLab uses 1 "
+                            "(tinyobjloader's default) (and 2 more like it)"));
+    CHECK(has(r.output,
+              "warning: " + dir + "/m.mtl:12: 'Ni' expects 1 number, found 0: PathLab uses 1"));
+}
+
+TEST_CASE("a colour of one number is grey, as the MTL format says; other odd colours warn",
+          "[scene][obj-leniency][solutions]") {
+    const std::string dir = test::temporaryFolder("kd");
+    writeFile(dir + "/m.mtl", "Kd 1 1 1\n"
+                              "newmtl grey\nKd 0.5\n"
+                              "newmtl half\nKd 0.5 half 0.5\n"
+                              "newmtl negative\nKd -1 0.25 0\n");
+    writeFile(dir + "/a.obj", std::string("mtllib m.mtl\n") + triangle + "usemtl grey\nf 1 2 3\n");
+    const Rendered r = render(dir);
+    INFO(r.output);
+    expectGreyImage(r);
+    CHECK(has(r.output, "note: " + dir +
+                            "/m.mtl:3: 'Kd 0.5' has one number: PathLab reads it as grey (0.5 "
+                            "0.5 0.5), as the MTL format says"));
+    CHECK(has(r.output, "warning: " + dir + "/m.mtl:1: 'Kd' comes before any 'newmtl': ignored"));
+    CHECK(has(r.output, "warning: " + dir +
+                            "/m.mtl:5: 'Kd' expects numbers, found 'half': PathLab reads it as "
+                            "0"));
+    CHECK(has(r.output,
+              "warning: " + dir + "/m.mtl:7: 'Kd' cannot be negative: PathLab reads -1 as 0"));
+
+    Scene scene;
+    loadObj(dir + "/a.obj", scene);
+    const Material grey = materialNamed(scene, "grey");
+    CHECK(grey.Kd.r == 0.5f);
+    CHECK(grey.Kd.g == 0.5f);
+    CHECK(grey.Kd.b == 0.5f);
+    CHECK(materialNamed(scene, "half").Kd.g == 0.0f);
+    CHECK(materialNamed(scene, "half").Kd.b == 0.5f);
+    CHECK(materialNamed(scene, "negative").Kd.r == 0.0f);
+    CHECK(materialNamed(scene, "negative").Kd.g == 0.25f);
+}
+
+TEST_CASE("keys PathLab does not model, in MTL and OBJ: one note per file listing them",
+          "[scene][obj-leniency][solutions]") {
+    const std::string dir = test::temporaryFolder("ignored");
+    writeFile(dir + "/m.mtl", "newmtl white\nKd 0.5 0.5 0.5\nd 0.5\nTr 0.5\nillum 2\n"
+                              "map_Kd wood.png\nbump -bm 2 bumps.png\nshininess 4\nshininess 5\n");
+    writeFile(dir + "/a.obj", std::string("mtllib m.mtl\n") + triangle +
+                                  "o thing\ng group\ns 1\nwat 1 2\nusemtl white\n"
+                                  "frobnicate\nf 1 2 3\nwat 3\n");
+    const Rendered r = render(dir);
+    INFO(r.output);
+    expectGreyImage(r);
+    CHECK(has(r.output, "note: " + dir +
+                            "/m.mtl: PathLab models Kd, Ks, Kt/Tf, Ni and Ke; it ignores Tr, "
+                            "bump, d, illum, map_Kd, shininess\n"));
+    CHECK(has(r.output, "note: " + dir +
+                            "/a.obj: PathLab ignores the OBJ keywords it does not know: "
+                            "frobnicate, wat\n"));
+    CHECK(lines(r.output, "note:") == 2);
+    CHECK(lines(r.output, "warning:") == 0);
+}
+
+TEST_CASE("long lines, no final newline, CRLF line ends, tabs and a UTF-8 BOM are read",
+          "[scene][obj-leniency][solutions]") {
+    const std::string dir = test::temporaryFolder("text");
+    writeFile(dir + "/m.mtl", "\xEF\xBB\xBFnewmtl\twhite\r\nKd\t0.5 0.5\t0.5");
+    std::string comment = "# " + std::string(100000, 'x') + "\r\n";
+    writeFile(dir + "/a.obj", "\xEF\xBB\xBFmtllib m.mtl\r\n" + comment +
+                                  "v\t0 0 0\r\nv 1\t0 0\r\nv 0 1 0 " + std::string(5000, ' ') +
+                                  "\r\nusemtl white\r\n\tf 1 2 3");
+    writeFile(dir + "/s.ecs", "\xEF\xBB\xBF-i a.obj\r\n-fov\t40\r\n");
+    for (const char* file : {"a.obj", "s.ecs"}) {
+        const Rendered r = render(dir, file);
+        INFO(file << ": " << r.output);
+        expectGreyImage(r);
+        CHECK(lines(r.output, "note:") == 0);
+        CHECK(lines(r.output, "warning:") == 0);
+    }
+}
+
+TEST_CASE("what would make a wrong mesh stays an error of one line",
+          "[scene][obj-leniency][bad-input]") {
+    const std::string dir = test::temporaryFolder("errors");
+    writeFile(dir + "/a.obj", "v 0 0 0\nv 1 zero 0\n");
+    expectRejected(dir, "a.obj:2: 'v' expects numbers, found 'zero'");
+    writeFile(dir + "/a.obj", std::string(triangle) + "f 1 2 9\n");
+    expectRejected(dir, "a.obj:4: face corner '9' refers to vertex 9, but the file has 3");
+    writeFile(dir + "/a.obj", std::string(triangle) + "f 1 2\n");
+    expectRejected(dir, "a.obj:4: a face needs at least 3 corners");
+    expectRejected(dir, "missing.obj: cannot open the OBJ file", "missing.obj");
+
+    writeFile(dir + "/a.obj", std::string(triangle) + "l 1 2\n");
+    expectRejected(dir, "a.obj: no triangles (no 'f' line makes a triangle)");
+    writeFile(dir + "/a.obj", std::string(triangle) + "f 1 1 2\n");
+    expectRejected(dir, "a.obj: no triangles (its 1 triangle(s) have zero area)");
+
+    writeFile(dir + "/a.obj", "<?xml version=\"1.0\"?>\n<scene>\n</scene>\n");
+    expectRejected(dir, "a.obj: looks like XML, not OBJ");
+}
+
+TEST_CASE("UTF-16 files are named as such; words of other bytes are escaped",
+          "[scene][obj-leniency][bad-input]") {
+    const std::string dir = test::temporaryFolder("utf16");
+    const auto utf16 = [](const std::string& ascii, bool bom) {
+        std::string text = bom ? "\xFF\xFE" : "";
+        for (const char c : ascii) text += std::string(1, c) + '\0';
+        return text;
+    };
+    const auto expectClean = [](const std::string& output) {
+        for (const char c : output) {
+            const auto byte = static_cast<unsigned char>(c);
+            CHECK(byte != 0);
+            CHECK(byte < 0x80);
+        }
+    };
+    writeFile(dir + "/a.obj", utf16(std::string(triangle) + "f 1 2 3\n", true));
+    expectRejected(dir, "a.obj: looks like UTF-16 text (save it as UTF-8 or ASCII)");
+    expectClean(render(dir).output);
+    writeFile(dir + "/a.obj", utf16(std::string(triangle) + "f 1 2 3\n", false));
+    expectRejected(dir, "a.obj: looks like UTF-16 text (save it as UTF-8 or ASCII)");
+    writeFile(dir + "/s.ecs", utf16("-i a.obj\n", true));
+    expectRejected(dir, "s.ecs: looks like UTF-16 text (save it as UTF-8 or ASCII)", "s.ecs");
+    expectClean(render(dir, "s.ecs").output);
+    writeFile(dir + "/m.mtl", utf16("newmtl white\n", true));
+    writeFile(dir + "/a.obj", std::string("mtllib m.mtl\n") + triangle + "f 1 2 3\n");
+    expectRejected(dir, "m.mtl: looks like UTF-16 text (save it as UTF-8 or ASCII)");
+
+    writeFile(dir + "/m.mtl", "newmtl r\x1B[31md\nKd 0.5\xFF 0.5 0.5\n");
+    writeFile(dir + "/a.obj", std::string("mtllib m.mtl\n") + triangle +
+                                  "w\x01t\xC3\xA9 1\nusemtl caf\xC3\xA9\x07\nf 1 2 3\n");
+    const Rendered r = render(dir);
+    INFO(r.output);
+    CHECK(r.exitStatus == 0);
+    CHECK(has(r.output, "it does not know: w\\x01t\xC3\xA9\n"));
+    CHECK(has(r.output, "material 'caf\xC3\xA9\\x07' is not defined"));
+    CHECK(has(r.output, "'Kd' expects numbers, found '0.5\\xFF'"));
+    CHECK(r.output.find('\x1B') == std::string::npos);
+    writeFile(dir + "/s.ecs", "-i a.obj\n-fr\x1B[2Job 1\n");
+    expectRejected(dir, "s.ecs:2: unknown option '-fr\\x1B[2Job'", "s.ecs");
+}
