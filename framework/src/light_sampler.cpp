@@ -41,7 +41,7 @@ LightSampler::LightSampler(const Scene& scene) {
     if (!scene.directionalLights.empty()) {
         // A directional light's power is what crosses the disc the scene presents to it, of the
         // radius of the sphere around the scene (as pbrt counts it).
-        const BoundingBox bounds = boundingBoxOf(scene.positions);
+        const BoundingBox bounds = scene.bounds();
         const float radius = bounds.radius();
         for (size_t i = 0; i < scene.directionalLights.size(); ++i) {
             const DirectionalLight& directional = scene.directionalLights[i];

@@ -1,5 +1,7 @@
 #include "pathlab/mtl_reading.h"
 
+#include "pathlab/input_error.h"
+#include "pathlab/obj_number.h"
 #include "pathlab/parse_number.h"
 #include "pathlab/printable_text.h"
 #include "pathlab/text_file.h"
@@ -92,19 +94,17 @@ private:
         bool rewritten = count != 3;
         for (size_t i = 0; i < std::min<size_t>(count, 3); ++i) {
             words.emplace_back(line.words[i + 1]);
-            const std::optional<float> value = parseFloat(words[i]);
-            if (!value) {
-                notes_.warning(path_, line.number, key + " not a number",
-                               inQuotes(key) + " expects numbers, found " + inQuotes(words[i]) +
-                                   ": PathLab reads it as 0");
-            } else if (*value < 0) {
+            float value = numberIn(line, words[i]);
+            if (value < 0) {
                 notes_.warning(path_, line.number, key + " negative",
                                inQuotes(key) + " cannot be negative: PathLab reads " +
                                    printableText(words[i]) + " as 0");
-            } else {
-                continue;
+                value = 0;
             }
-            words[i] = "0";
+            if (parseFloat(words[i]) == value) continue;
+            char written[32];
+            std::snprintf(written, sizeof written, "%.9g", value);
+            words[i] = written;
             rewritten = true;
         }
         if (count == 1) words = {words[0], words[0], words[0]};
@@ -134,6 +134,24 @@ private:
                           : std::string(line.text));
     }
 
+    /// A word of a colour or Ni line as a number: what is no number at all ("half") is an error
+    /// naming its line, as in an OBJ file; a word that is one with more after it, or nan or
+    /// inf, is read as tinyobjloader reads it, with a warning.
+    float numberIn(const WordLine& line, std::string_view word) {
+        if (const std::optional<float> exact = parseFloat(word)) return *exact;
+        const std::string key(line.words[0]);
+        const std::optional<ObjNumber> number = readObjNumber(word);
+        if (!number)
+            throw inputErrorAt(path_, line.number,
+                               inQuotes(key) + " expects numbers, found " + inQuotes(word));
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", number->value);
+        notes_.warning(path_, line.number, key + " odd number",
+                       inQuotes(key) + " number " + inQuotes(word) + " is read as " + value +
+                           ", as tinyobjloader reads it");
+        return number->value;
+    }
+
     void readNi(const WordLine& line) {
         const size_t count = line.words.size() - 1;
         const char* assumed = ": PathLab uses 1 (tinyobjloader's default)";
@@ -142,18 +160,13 @@ private:
                            std::string("'Ni' expects 1 number, found 0") + assumed);
             return forward("Ni 1");
         }
-        const std::optional<float> ni = parseFloat(line.words[1]);
-        if (!ni) {
-            notes_.warning(path_, line.number, "Ni not a number",
-                           "'Ni' expects a number, found " + inQuotes(line.words[1]) + assumed);
-            return forward("Ni 1");
-        }
-        if (!(*ni >= leastNi && *ni <= mostNi)) {
+        const float ni = numberIn(line, line.words[1]);
+        if (!(ni >= leastNi && ni <= mostNi)) {
             char range[64];
             std::snprintf(range, sizeof range, "between %g and %g", leastNi, mostNi);
             notes_.warning(path_, line.number, "Ni absurd",
                            "'Ni' (index of refraction) " + printableText(line.words[1]) +
-                               (*ni > 0 ? " is not " + std::string(range) : " must be > 0") +
+                               (ni > 0 ? " is not " + std::string(range) : " must be > 0") +
                                assumed);
             return forward("Ni 1");
         }
@@ -161,7 +174,9 @@ private:
             notes_.warning(path_, line.number, "Ni count",
                            "'Ni' expects 1 number, found " + std::to_string(count) +
                                ": PathLab reads the first");
-        forward(count > 1 ? "Ni " + std::string(line.words[1]) : std::string(line.text));
+        char written[32];
+        std::snprintf(written, sizeof written, "Ni %.9g", ni);
+        forward(count == 1 && parseFloat(line.words[1]) == ni ? std::string(line.text) : written);
     }
 
     void warnAboutEnergy() {

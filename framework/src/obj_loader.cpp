@@ -6,6 +6,7 @@
 
 #include <tiny_obj_loader.h>
 
+#include <cctype>
 #include <cstdio>
 #include <map>
 #include <sstream>
@@ -73,9 +74,12 @@ void loadObj(const std::string& objPath, Scene& scene) {
     std::istringstream text(reading.textForTinyobj);
     ReadLibraries libraries(reading.libraries);
     if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &text, &libraries,
-                          /*triangulate=*/true, /*default_vcols_fallback=*/false))
+                          /*triangulate=*/true, /*default_vcols_fallback=*/false)) {
+        while (!error.empty() && std::isspace(static_cast<unsigned char>(error.back())))
+            error.pop_back(); // tinyobjloader ends its message with a line end
         throw InputError(printableText(objPath) + ": " +
                          (error.empty() ? "cannot be read" : printableText(error)));
+    }
 
     const auto firstTriangle = scene.triangles.size();
     const auto firstMaterial = static_cast<uint32_t>(scene.materials.size());

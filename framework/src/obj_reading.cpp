@@ -1,14 +1,16 @@
 #include "pathlab/obj_reading.h"
 
 #include "pathlab/input_error.h"
-#include "pathlab/parse_number.h"
+#include "pathlab/obj_number.h"
 #include "pathlab/printable_text.h"
 #include "pathlab/text_file.h"
 
 #include <array>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 
 namespace pathlab {
@@ -19,27 +21,19 @@ namespace fs = std::filesystem;
 
 std::string inQuotes(std::string_view word) { return "'" + printableText(word) + "'"; }
 
-/// Checks the numbers after the keyword, which must number between `least` and `most`.
-void checkNumbers(const std::string& file, const WordLine& line, size_t least, size_t most) {
-    const size_t count = line.words.size() - 1;
-    const std::string key(line.words[0]);
-    if (count < least || count > most) {
-        const std::string expected = least == most
-                                         ? std::to_string(least)
-                                         : std::to_string(least) + " to " + std::to_string(most);
-        throw inputErrorAt(file, line.number,
-                           "'" + key + "' expects " + expected + " numbers, found " +
-                               std::to_string(count));
-    }
-    for (size_t i = 1; i <= count; ++i)
-        if (!parseFloat(line.words[i]))
-            throw inputErrorAt(file, line.number,
-                               "'" + key + "' expects numbers, found " + inQuotes(line.words[i]));
-}
+/// What a face corner's texture or normal index becomes when it points past the file's list.
+struct DroppedIndex {
+    int line = 0;
+    std::string kind; ///< "texture coordinate" or "normal"
+    std::string corner;
+    long index = 0, count = 0;
+};
 
-/// Checks one index of a face corner against the count of elements defined in the file.
-void checkIndex(const std::string& file, const WordLine& line, std::string_view corner,
-                const std::string& text, long count, const char* what) {
+/// Resolves one index of a face corner against the count of elements defined so far (negative
+/// indices count back from there, as tinyobjloader and the format say) and in the whole file.
+/// 0 when it is out of range; throws when it is not an index at all.
+long resolveIndex(const std::string& file, const WordLine& line, std::string_view corner,
+                  const std::string& text, long countSoFar, long countInFile) {
     char* end = nullptr;
     const long index = std::strtol(text.c_str(), &end, 10);
     if (text.empty() || *end != '\0' || index == 0)
@@ -47,37 +41,14 @@ void checkIndex(const std::string& file, const WordLine& line, std::string_view 
                            "face corner " + inQuotes(corner) +
                                " is not of the form "
                                "v, v/vt, v//vn or v/vt/vn with non-zero integers");
-    const long resolved = index > 0 ? index : count + index + 1; // negative: counted backwards
-    if (resolved < 1 || resolved > count)
-        throw inputErrorAt(file, line.number,
-                           "face corner " + inQuotes(corner) + " refers to " + what + " " +
-                               std::to_string(index) + ", but the file has " +
-                               std::to_string(count));
+    const long resolved = index > 0 ? index : countSoFar + index + 1;
+    return resolved >= 1 && resolved <= countInFile ? resolved : 0;
 }
 
-void checkFace(const std::string& file, const WordLine& line, long positions, long texcoords,
-               long normals) {
-    if (line.words.size() < 4)
-        throw inputErrorAt(file, line.number, "a face needs at least 3 corners");
-    for (size_t i = 1; i < line.words.size(); ++i) {
-        const std::string_view corner = line.words[i];
-        std::array<std::string, 3> part;
-        size_t field = 0, start = 0;
-        for (size_t k = 0; k <= corner.size(); ++k) {
-            if (k == corner.size() || corner[k] == '/') {
-                if (field > 2)
-                    throw inputErrorAt(file, line.number,
-                                       "face corner " + inQuotes(corner) + " has too many '/'");
-                part[field++] = corner.substr(start, k - start);
-                start = k + 1;
-            }
-        }
-        checkIndex(file, line, corner, part[0], positions, "vertex");
-        if (field >= 2 && !part[1].empty())
-            checkIndex(file, line, corner, part[1], texcoords, "texture coordinate");
-        if (field == 3) checkIndex(file, line, corner, part[2], normals, "normal");
-    }
-}
+/// The elements of each kind an OBJ file defines, so far and in the whole file.
+struct ElementCounts {
+    long positions = 0, texcoords = 0, normals = 0;
+};
 
 // Keywords PathLab knows and reads past, quietly: groups, smoothing, lines, points, curves.
 const std::set<std::string_view> ignoredObjKeys = {
@@ -96,40 +67,173 @@ public:
         const std::vector<WordLine> lines = wordLines(text);
         if (!lines.empty() && lines[0].words[0][0] == '<')
             throw InputError(printableText(path_) + ": looks like XML, not OBJ");
-        long positions = 0, texcoords = 0, normals = 0;
+        ElementCounts inFile;
         for (const WordLine& line : lines) {
             const std::string_view key = line.words[0];
-            if (key == "v") checkNumbers(path_, line, 3, 7), ++positions; // x y z [w | r g b]
-            if (key == "vn") checkNumbers(path_, line, 3, 3), ++normals;
-            if (key == "vt") checkNumbers(path_, line, 1, 3), ++texcoords;
+            inFile.positions += key == "v";
+            inFile.texcoords += key == "vt";
+            inFile.normals += key == "vn";
         }
+        ElementCounts soFar;
         size_t forwardedUpTo = 0; // lines[] are views into `text`, which is forwarded in between
         for (const WordLine& line : lines) {
             const std::string_view key = line.words[0];
-            std::string replacement;
-            if (key == "f") {
-                checkFace(path_, line, positions, texcoords, normals);
-                continue;
+            std::optional<std::string> replacement;
+            if (key == "v") {
+                replacement = readNumbers(line, 3, 7); // x y z [w | r g b]
+                ++soFar.positions;
+            } else if (key == "vn") {
+                replacement = readNumbers(line, 3, 3);
+                ++soFar.normals;
+            } else if (key == "vt") {
+                replacement = readNumbers(line, 1, 3);
+                ++soFar.texcoords;
+            } else if (key == "f") {
+                replacement = readFace(line, soFar, inFile);
             } else if (key == "usemtl") {
                 replacement = useMaterial(line);
             } else if (key == "mtllib") {
                 replacement = materialLibraries(line);
-            } else if (key != "v" && key != "vn" && key != "vt" && !ignoredObjKeys.count(key)) {
+            } else if (!ignoredObjKeys.count(key)) {
                 notes_.ignored(path_, unknownIntro, std::string(key));
-            } else {
-                continue;
+                replacement = ""; // not forwarded: tinyobjloader need not guess at it
             }
+            if (!replacement) continue;
             const size_t start = static_cast<size_t>(line.text.data() - text.data());
             reading_.textForTinyobj.append(text.substr(forwardedUpTo, start - forwardedUpTo));
-            reading_.textForTinyobj += replacement;
+            reading_.textForTinyobj += *replacement;
             forwardedUpTo = start + line.text.size();
         }
         reading_.textForTinyobj.append(text.substr(forwardedUpTo));
         warnAboutUndefinedMaterials();
+        warnAboutDroppedIndices();
         return std::move(reading_);
     }
 
 private:
+    /// Checks the count of numbers after the keyword, between `least` and `most`, and reads
+    /// each as tinyobjloader does (readObjNumber); the line as tinyobjloader must then read it
+    /// where a number was read differently from its word, else nothing.
+    std::optional<std::string> readNumbers(const WordLine& line, size_t least, size_t most) {
+        const size_t count = line.words.size() - 1;
+        const std::string key(line.words[0]);
+        if (count < least || count > most) {
+            const std::string expected =
+                least == most ? std::to_string(least)
+                              : std::to_string(least) + " to " + std::to_string(most);
+            throw inputErrorAt(path_, line.number,
+                               "'" + key + "' expects " + expected + " numbers, found " +
+                                   std::to_string(count));
+        }
+        std::string rewritten = key;
+        bool differs = false;
+        for (size_t i = 1; i <= count; ++i) {
+            const std::string_view word = line.words[i];
+            const std::optional<ObjNumber> number = readObjNumber(word);
+            if (!number)
+                throw inputErrorAt(path_, line.number,
+                                   "'" + key + "' expects numbers, found " + inQuotes(word));
+            rewritten += ' ';
+            if (number->reading == ObjNumberReading::exact) {
+                rewritten += word;
+                continue;
+            }
+            differs = true;
+            char value[32];
+            std::snprintf(value, sizeof value, "%.9g", number->value);
+            rewritten += value;
+            warnAboutNumber(line, key, word, *number);
+        }
+        if (!differs) return std::nullopt;
+        return rewritten;
+    }
+
+    void warnAboutNumber(const WordLine& line, const std::string& key, std::string_view word,
+                         const ObjNumber& number) {
+        const std::string what = "'" + key + "' number " + inQuotes(word);
+        switch (number.reading) {
+        case ObjNumberReading::leadingPart: {
+            char value[32];
+            std::snprintf(value, sizeof value, "%g", number.value);
+            return notes_.warning(path_, line.number, "leading number",
+                                  what + " has more after its number: PathLab reads " + value +
+                                      ", as tinyobjloader does");
+        }
+        case ObjNumberReading::notFinite:
+            return notes_.warning(path_, line.number, "not finite",
+                                  what + " is not finite: PathLab reads it as 0, as tinyobjloader "
+                                         "does");
+        case ObjNumberReading::beyondFloat:
+            return notes_.warning(path_, line.number, "beyond float",
+                                  what + " is beyond a float's range: PathLab reads it as 0");
+        case ObjNumberReading::exact: return;
+        }
+    }
+
+    /// Checks a face's corners. A vertex index out of range is an error (the triangle cannot be
+    /// built); a texture or normal index out of range is dropped from its corner, as
+    /// tinyobjloader reads past it with a warning: the face as tinyobjloader must then read it
+    /// where an index was dropped, else nothing.
+    std::optional<std::string> readFace(const WordLine& line, const ElementCounts& soFar,
+                                        const ElementCounts& inFile) {
+        if (line.words.size() < 4)
+            throw inputErrorAt(path_, line.number, "a face needs at least 3 corners");
+        std::string rewritten = "f";
+        bool differs = false;
+        for (size_t i = 1; i < line.words.size(); ++i) {
+            const std::string_view corner = line.words[i];
+            std::array<std::string, 3> part;
+            size_t field = 0, start = 0;
+            for (size_t k = 0; k <= corner.size(); ++k) {
+                if (k == corner.size() || corner[k] == '/') {
+                    if (field > 2)
+                        throw inputErrorAt(path_, line.number,
+                                           "face corner " + inQuotes(corner) + " has too many '/'");
+                    part[field++] = corner.substr(start, k - start);
+                    start = k + 1;
+                }
+            }
+            if (!resolveIndex(path_, line, corner, part[0], soFar.positions, inFile.positions)) {
+                const long index = std::strtol(part[0].c_str(), nullptr, 10);
+                throw inputErrorAt(
+                    path_, line.number,
+                    "face corner " + inQuotes(corner) + " refers to vertex " +
+                        std::to_string(index) + ", but the file has " +
+                        (index > 0 ? std::to_string(inFile.positions)
+                                   : std::to_string(soFar.positions) + " before this line"));
+            }
+            const auto keep = [&](std::string& index, long countSoFar, long countInFile,
+                                  const char* kind) {
+                if (index.empty() ||
+                    resolveIndex(path_, line, corner, index, countSoFar, countInFile))
+                    return;
+                dropped_.push_back({line.number, kind, std::string(corner),
+                                    std::strtol(index.c_str(), nullptr, 10), countInFile});
+                index.clear();
+                differs = true;
+            };
+            if (field >= 2) keep(part[1], soFar.texcoords, inFile.texcoords, "texture coordinate");
+            if (field == 3) keep(part[2], soFar.normals, inFile.normals, "normal");
+            rewritten += ' ' + part[0];
+            if (!part[2].empty())
+                rewritten += '/' + part[1] + '/' + part[2];
+            else if (!part[1].empty())
+                rewritten += '/' + part[1];
+        }
+        if (!differs) return std::nullopt;
+        return rewritten;
+    }
+
+    void warnAboutDroppedIndices() {
+        for (const DroppedIndex& d : dropped_) {
+            notes_.warning(path_, d.line, d.kind + " index",
+                           "face corner " + inQuotes(d.corner) + " refers to " + d.kind + " " +
+                               std::to_string(d.index) + ", but the file has " +
+                               std::to_string(d.count) + ": PathLab reads the corner without it, " +
+                               "as tinyobjloader reads past it");
+        }
+    }
+
     std::string useMaterial(const WordLine& line) {
         const std::string name(line.rest);
         if (!defined_.count(name)) undefined_.push_back({line.number, name});
@@ -209,6 +313,7 @@ private:
     std::set<std::string> defined_;           ///< the materials of the libraries read so far
     std::map<std::string, int> definedAt_;    ///< the 'mtllib' line that defines each
     std::vector<std::pair<int, std::string>> undefined_;
+    std::vector<DroppedIndex> dropped_;
 };
 
 } // namespace

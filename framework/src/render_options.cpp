@@ -1,6 +1,5 @@
 #include "pathlab/render_options.h"
 
-#include "pathlab/bounding_box.h"
 #include "pathlab/embree_only_options.h"
 #include "pathlab/input_error.h"
 #include "pathlab/obj_loader.h"
@@ -41,9 +40,8 @@ CameraSettings sceneCamera(const RenderOptions& options, const Scene& scene) {
     given.lookAt = options.cameraLookAtSet;
     given.fov = options.fovSet;
     given.viewDirection = options.viewDirection;
-    const CameraSettings camera =
-        framingCamera(boundingBoxOf(scene.positions), given,
-                      static_cast<float>(options.width) / static_cast<float>(options.height));
+    const CameraSettings camera = framingCamera(
+        scene, given, static_cast<float>(options.width) / static_cast<float>(options.height));
     const Vec3& at = camera.lookAt;
     const Vec3& from = camera.position;
     if (given.lookAt)
@@ -58,7 +56,7 @@ CameraSettings sceneCamera(const RenderOptions& options, const Scene& scene) {
                      at.x, at.y, at.z, from.x, from.y, from.z);
     else
         std::fprintf(stderr,
-                     "note: no camera given (--vp/--vi): looking at the model's centre (%g, %g, "
+                     "note: no camera given (--vp/--vi): looking at the model (%g, %g, "
                      "%g) from (%g, %g, %g); set --vp X Y Z --vi X Y Z to choose\n",
                      at.x, at.y, at.z, from.x, from.y, from.z);
     return camera;

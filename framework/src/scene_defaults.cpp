@@ -4,27 +4,132 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace pathlab {
 
 Vec3 framingDirection() { return normalize(Vec3{0.5f, 0.35f, 1.0f}); }
 
-CameraSettings framingCamera(const BoundingBox& bounds, const GivenCamera& given, float aspect) {
+namespace {
+
+/// The area the triangles present to a viewer along `direction` (unit), front and back alike.
+double presentedArea(const Scene& scene, const Vec3& direction) {
+    double area = 0;
+    for (const auto& t : scene.triangles) {
+        const Vec3& a = scene.positions[t[0]];
+        area +=
+            std::abs(dot(cross(scene.positions[t[1]] - a, scene.positions[t[2]] - a), direction));
+    }
+    return 0.5 * area;
+}
+
+/// The normal of the largest triangle, turned to the front: a flat model's face.
+Vec3 largestFace(const Scene& scene) {
+    Vec3 best{0, 0, 0};
+    for (const auto& t : scene.triangles) {
+        const Vec3& a = scene.positions[t[0]];
+        const Vec3 areaNormal = cross(scene.positions[t[1]] - a, scene.positions[t[2]] - a);
+        if (length(areaNormal) > length(best)) best = areaNormal;
+    }
+    if (length(best) == 0) return framingDirection();
+    return normalize(dot(best, framingDirection()) < 0 ? -best : best);
+}
+
+/// The camera's frame for looking along -towardCamera with `up` roughly up in the image.
+struct ViewFrame {
+    Vec3 right, up, towardCamera;
+};
+
+ViewFrame viewFrame(const Vec3& towardCamera, const Vec3& up) {
+    Vec3 right = cross(up, towardCamera);
+    if (length(right) < 1e-6f) // looking straight along `up`: any right will do
+        right =
+            cross(std::abs(towardCamera.x) < 0.9f ? Vec3{1, 0, 0} : Vec3{0, 1, 0}, towardCamera);
+    right = normalize(right);
+    return {right, cross(towardCamera, right), towardCamera};
+}
+
+/// Calls `visit` with each vertex a triangle of `scene` uses (some more than once).
+template <typename Visit> void forEachTriangleVertex(const Scene& scene, Visit visit) {
+    for (const auto& triangle : scene.triangles)
+        for (const uint32_t v : triangle) visit(scene.positions[v]);
+}
+
+/// Moves `centre` across the view (not along it) to the middle of the model's extent as seen
+/// along the frame's axis, so that the fit below wastes no side of the image.
+Vec3 centredAcross(const Scene& scene, const ViewFrame& frame, const Vec3& centre) {
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    float lo[2] = {inf, inf}, hi[2] = {-inf, -inf};
+    forEachTriangleVertex(scene, [&](const Vec3& p) {
+        const float x = dot(p - centre, frame.right), y = dot(p - centre, frame.up);
+        lo[0] = std::min(lo[0], x), hi[0] = std::max(hi[0], x);
+        lo[1] = std::min(lo[1], y), hi[1] = std::max(hi[1], y);
+    });
+    if (!(lo[0] <= hi[0])) return centre;
+    return centre + frame.right * (0.5f * (lo[0] + hi[0])) + frame.up * (0.5f * (lo[1] + hi[1]));
+}
+
+/// The least distance from `lookAt` back along the frame's axis at which every vertex is within
+/// FramingFill of the image's half-extents tanX and tanY: a vertex at (x, y) across the view and
+/// z towards the camera is in view from distance D when |x| <= (D - z)·tanX, likewise for y.
+float fittingDistance(const Scene& scene, const ViewFrame& frame, const Vec3& lookAt, float tanX,
+                      float tanY, float radius) {
+    float distance = 0;
+    forEachTriangleVertex(scene, [&](const Vec3& p) {
+        const Vec3 d = p - lookAt;
+        const float x = std::abs(dot(d, frame.right)), y = std::abs(dot(d, frame.up));
+        const float z = dot(d, frame.towardCamera);
+        // Never closer than a little in front of the nearest vertex.
+        distance = std::max({distance, z + 0.01f * radius, z + x / (FramingFill * tanX),
+                             z + y / (FramingFill * tanY)});
+    });
+    return distance > 0 ? distance : radius;
+}
+
+} // namespace
+
+Vec3 framingDirectionFor(const Scene& scene, const Vec3& up) {
+    const Vec3 usual = framingDirection();
+    std::vector<Vec3> candidates = {largestFace(scene), {1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
+                                    {0, -1, 0},         {0, 0, 1}, {0, 0, -1}};
+    const double usualArea = presentedArea(scene, usual);
+    Vec3 best = usual;
+    double bestArea = usualArea;
+    for (const Vec3& candidate : candidates) {
+        const double area = presentedArea(scene, candidate);
+        if (area > bestArea) best = candidate, bestArea = area;
+    }
+    if (3 * usualArea >= bestArea) return usual;
+    // Straight along `up` the camera has no left or right: lean towards the usual side.
+    const Vec3 upward = normalize(up);
+    if (std::abs(dot(best, upward)) > 0.97f) {
+        const Vec3 front = usual - upward * dot(usual, upward);
+        best = normalize(best + normalize(front) * 0.3f);
+    }
+    return best;
+}
+
+CameraSettings framingCamera(const Scene& scene, const GivenCamera& given, float aspect) {
     CameraSettings camera = given.settings;
     if (!given.fov) camera.fovDegrees = FramingFovDegrees;
-    // The sphere fits a cone of half-angle θ from distance r / sin θ; θ is the narrower of the
-    // vertical and horizontal half-angles.
-    const float halfVertical = 0.5f * camera.fovDegrees * Pi / 180.0f;
-    const float halfHorizontal = std::atan(std::tan(halfVertical) * aspect);
-    const float radius = bounds.radius() > 0 ? bounds.radius() : 1.0f;
-    const float distance = radius / std::sin(std::min(halfVertical, halfHorizontal));
-    const Vec3 towardCamera =
-        given.viewDirection ? -normalize(*given.viewDirection) : framingDirection();
-    if (!given.lookAt) camera.lookAt = bounds.centre();
-    if (!given.position) camera.position = camera.lookAt + towardCamera * distance;
+    const BoundingBox bounds = scene.bounds();
+    if (given.position) {
+        if (!given.lookAt) camera.lookAt = bounds.centre();
+    } else {
+        const Vec3 towardCamera = given.viewDirection ? -normalize(*given.viewDirection)
+                                                      : framingDirectionFor(scene, camera.up);
+        const ViewFrame frame = viewFrame(towardCamera, camera.up);
+        if (!given.lookAt) camera.lookAt = centredAcross(scene, frame, bounds.centre());
+        const float tanY = std::tan(0.5f * camera.fovDegrees * Pi / 180.0f);
+        const float radius = bounds.radius() > 0 ? bounds.radius() : 1.0f;
+        camera.position =
+            camera.lookAt + towardCamera * fittingDistance(scene, frame, camera.lookAt,
+                                                           tanY * aspect, tanY, radius);
+    }
     // A position given at the centre itself would look nowhere: look past it instead.
     if (length(camera.lookAt - camera.position) == 0)
-        camera.lookAt = camera.position - towardCamera;
+        camera.lookAt = camera.position - framingDirection();
     return camera;
 }
 

@@ -49,13 +49,26 @@ std::vector<std::string_view> textLines(std::string_view text) {
     return lines;
 }
 
+namespace {
+
+constexpr std::string_view space = " \t\r\v\f";
+
+/// Where a line's comment starts: a '#' that begins a word. One inside a word is part of it, as
+/// tinyobjloader reads "1.#IND" (MSVC's NaN) or a material named "red#2".
+size_t commentStart(std::string_view line) {
+    for (size_t at = line.find('#'); at != std::string_view::npos; at = line.find('#', at + 1))
+        if (at == 0 || space.find(line[at - 1]) != std::string_view::npos) return at;
+    return line.size();
+}
+
+} // namespace
+
 std::vector<WordLine> wordLines(std::string_view text) {
-    static constexpr std::string_view space = " \t\r\v\f";
     std::vector<WordLine> lines;
     int number = 0;
     for (const std::string_view line : textLines(text)) {
         ++number;
-        const std::string_view content = line.substr(0, line.find('#'));
+        const std::string_view content = line.substr(0, commentStart(line));
         WordLine words{number, line, {}, {}};
         for (size_t at = content.find_first_not_of(space); at != std::string_view::npos;) {
             const size_t end = std::min(content.find_first_of(space, at), content.size());

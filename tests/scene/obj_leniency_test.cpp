@@ -233,7 +233,7 @@ TEST_CASE("a colour of one number is grey, as the MTL format says; other odd col
     const std::string dir = test::temporaryFolder("kd");
     writeFile(dir + "/m.mtl", "Kd 1 1 1\n"
                               "newmtl grey\nKd 0.5\n"
-                              "newmtl half\nKd 0.5 half 0.5\n"
+                              "newmtl tail\nKd 0.5 0.25x 0.5\n"
                               "newmtl negative\nKd -1 0.25 0\n");
     writeFile(dir + "/a.obj", std::string("mtllib m.mtl\n") + triangle + "usemtl grey\nf 1 2 3\n");
     const Rendered r = render(dir);
@@ -244,8 +244,8 @@ TEST_CASE("a colour of one number is grey, as the MTL format says; other odd col
                             "0.5 0.5), as the MTL format says"));
     CHECK(has(r.output, "warning: " + dir + "/m.mtl:1: 'Kd' comes before any 'newmtl': ignored"));
     CHECK(has(r.output, "warning: " + dir +
-                            "/m.mtl:5: 'Kd' expects numbers, found 'half': PathLab reads it as "
-                            "0"));
+                            "/m.mtl:5: 'Kd' number '0.25x' is read as 0.25, as tinyobjloader "
+                            "reads it"));
     CHECK(has(r.output,
               "warning: " + dir + "/m.mtl:7: 'Kd' cannot be negative: PathLab reads -1 as 0"));
 
@@ -255,10 +255,75 @@ TEST_CASE("a colour of one number is grey, as the MTL format says; other odd col
     CHECK(grey.Kd.r == 0.5f);
     CHECK(grey.Kd.g == 0.5f);
     CHECK(grey.Kd.b == 0.5f);
-    CHECK(materialNamed(scene, "half").Kd.g == 0.0f);
-    CHECK(materialNamed(scene, "half").Kd.b == 0.5f);
+    CHECK(materialNamed(scene, "tail").Kd.g == 0.25f);
+    CHECK(materialNamed(scene, "tail").Kd.b == 0.5f);
     CHECK(materialNamed(scene, "negative").Kd.r == 0.0f);
     CHECK(materialNamed(scene, "negative").Kd.g == 0.25f);
+}
+
+TEST_CASE("a colour or Ni that is no number at all is an error naming its line",
+          "[scene][obj-leniency][bad-input]") {
+    const std::string dir = test::temporaryFolder("kd-error");
+    writeFile(dir + "/a.obj", std::string("mtllib m.mtl\n") + triangle + "usemtl m\nf 1 2 3\n");
+    writeFile(dir + "/m.mtl", "newmtl m\nKd 0.5 half 0.5\n");
+    expectRejected(dir, "m.mtl:2: 'Kd' expects numbers, found 'half'");
+    writeFile(dir + "/m.mtl", "newmtl m\nNi glass\n");
+    expectRejected(dir, "m.mtl:2: 'Ni' expects numbers, found 'glass'");
+}
+
+TEST_CASE("numbers as tinyobjloader reads them: a tail after the number, nan, inf, out of range",
+          "[scene][obj-leniency][solutions]") {
+    const std::string dir = test::temporaryFolder("numbers");
+    // Each odd vertex is read as tinyobjloader reads it, and the triangle stays the same one:
+    // 0.0x is 0, 1.#IND (MSVC's NaN, its '#' inside a word and so no comment) is 1, nan is 0,
+    // 1e-300 underflows to 0 and 1e+39 is beyond a float (0, with a warning, like nan).
+    writeFile(dir + "/a.obj", "v 0.0x nan 1e-300\nv 1.#IND 0 1e+39\nv 0 1 -inf # a comment\n"
+                              "f 1 2 3\n");
+    const Rendered r = render(dir);
+    INFO(r.output);
+    expectGreyImage(r);
+    CHECK(has(r.output, "warning: " + dir +
+                            "/a.obj:1: 'v' number '0.0x' has more after its number: PathLab "
+                            "reads 0, as tinyobjloader does (and 1 more like it)"));
+    CHECK(has(r.output, "warning: " + dir +
+                            "/a.obj:1: 'v' number 'nan' is not finite: PathLab reads it as 0, "
+                            "as tinyobjloader does (and 1 more like it)"));
+    CHECK(has(r.output, "warning: " + dir +
+                            "/a.obj:2: 'v' number '1e+39' is beyond a float's range: PathLab "
+                            "reads it as 0"));
+    CHECK(!has(r.output, "1e-300"));
+
+    Scene scene;
+    loadObj(dir + "/a.obj", scene);
+    REQUIRE(scene.positions.size() >= 3);
+    const Vec3 expected[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    for (int i = 0; i < 3; ++i) {
+        CHECK(scene.positions[scene.triangles.at(0)[i]].x == expected[i].x);
+        CHECK(scene.positions[scene.triangles.at(0)[i]].y == expected[i].y);
+        CHECK(scene.positions[scene.triangles.at(0)[i]].z == expected[i].z);
+    }
+}
+
+TEST_CASE("a face corner's texture or normal index past the file's list is dropped, with a "
+          "warning; a vertex index past it stays an error",
+          "[scene][obj-leniency][solutions]") {
+    const std::string dir = test::temporaryFolder("indices");
+    writeFile(dir + "/a.obj", std::string(triangle) + "vt 0 0\nf 1/1/1 2/7 3//2\n");
+    const Rendered r = render(dir);
+    INFO(r.output);
+    expectGreyImage(r);
+    CHECK(has(r.output, "warning: " + dir +
+                            "/a.obj:5: face corner '1/1/1' refers to normal 1, but the file has "
+                            "0: PathLab reads the corner without it, as tinyobjloader reads past "
+                            "it (and 1 more like it)"));
+    CHECK(has(r.output, "warning: " + dir +
+                            "/a.obj:5: face corner '2/7' refers to texture coordinate 7, but the "
+                            "file has 1: PathLab reads the corner without it"));
+
+    // Negative indices count back from the vertices before the face, as the format says.
+    writeFile(dir + "/a.obj", "f -3 -2 -1\n" + std::string(triangle));
+    expectRejected(dir, "a.obj:1: face corner '-3' refers to vertex -3, but the file has 0 "
+                        "before this line");
 }
 
 TEST_CASE("keys PathLab does not model, in MTL and OBJ: one note per file listing them",
@@ -317,7 +382,7 @@ TEST_CASE("what would make a wrong mesh stays an error of one line",
     expectRejected(dir, "a.obj: no triangles (its 1 triangle(s) have zero area)");
 
     writeFile(dir + "/a.obj", "<?xml version=\"1.0\"?>\n<scene>\n</scene>\n");
-    expectRejected(dir, "a.obj: looks like XML, not OBJ");
+    expectRejected(dir, "a.obj: an Embree XML scene; PathLab reads OBJ");
 }
 
 TEST_CASE("UTF-16 files are named as such; words of other bytes are escaped",
@@ -355,7 +420,7 @@ TEST_CASE("UTF-16 files are named as such; words of other bytes are escaped",
     CHECK(r.exitStatus == 0);
     CHECK(has(r.output, "it does not know: w\\x01t\xC3\xA9\n"));
     CHECK(has(r.output, "material 'caf\xC3\xA9\\x07' is not defined"));
-    CHECK(has(r.output, "'Kd' expects numbers, found '0.5\\xFF'"));
+    CHECK(has(r.output, "'Kd' number '0.5\\xFF' is read as 0.5"));
     CHECK(r.output.find('\x1B') == std::string::npos);
     writeFile(dir + "/s.ecs", "-i a.obj\n-fr\x1B[2Job 1\n");
     expectRejected(dir, "s.ecs:2: unknown option '-fr\\x1B[2Job'", "s.ecs");

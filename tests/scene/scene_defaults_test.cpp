@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 
 using namespace pathlab;
 
@@ -35,18 +36,25 @@ RenderOptions optionsFor(const std::vector<std::string>& arguments) {
     return parseRenderOptions(static_cast<int>(argv.size()), argv.data());
 }
 
-/// Whether `point` projects inside the image of a camera of `width` x `height` pixels, in front
-/// of it: the same frame as pathlab::Camera's.
-bool inView(const CameraSettings& camera, int width, int height, const Vec3& point) {
+/// How far out the farthest of `scene`'s triangle vertices projects, as a share of the image's
+/// half-extent: at most 1 when every vertex is in view.
+float reach(const Scene& scene, const CameraSettings& camera, int width, int height) {
     const Vec3 forward = normalize(camera.lookAt - camera.position);
     const Vec3 right = normalize(cross(forward, camera.up));
     const Vec3 up = cross(right, forward);
-    const Vec3 d = point - camera.position;
-    const float depth = dot(d, forward);
     const float halfHeight = std::tan(0.5f * camera.fovDegrees * Pi / 180.0f);
     const float halfWidth = halfHeight * static_cast<float>(width) / static_cast<float>(height);
-    return depth > 0 && std::abs(dot(d, right) / depth) <= halfWidth &&
-           std::abs(dot(d, up) / depth) <= halfHeight;
+    float most = 0;
+    for (const auto& triangle : scene.triangles) {
+        for (const uint32_t v : triangle) {
+            const Vec3 d = scene.positions[v] - camera.position;
+            const float depth = dot(d, forward);
+            if (depth <= 0) return std::numeric_limits<float>::infinity();
+            most = std::max({most, std::abs(dot(d, right) / depth) / halfWidth,
+                             std::abs(dot(d, up) / depth) / halfHeight});
+        }
+    }
+    return most;
 }
 
 } // namespace
@@ -61,29 +69,40 @@ TEST_CASE("a model without a camera is framed whole, from the front, above and t
         const Scene scene = loadScene(options);
         REQUIRE(scene.camera.has_value());
         const CameraSettings& camera = *scene.camera;
-        const BoundingBox box = boundingBoxOf(scene.positions);
         INFO(width << "x" << height);
-        CHECK(camera.lookAt.x == Approx(box.centre().x));
-        CHECK(camera.lookAt.y == Approx(box.centre().y));
-        CHECK(camera.lookAt.z == Approx(box.centre().z));
         CHECK(camera.fovDegrees == Approx(45));
         CHECK(camera.up.y == 1);
-        // From the +z side, above and to the +x side.
+        // From the +z side, above and to the +x side: framingDirection().
         const Vec3 from = camera.position - camera.lookAt;
-        CHECK(from.z > 0);
-        CHECK(from.y > 0);
-        CHECK(from.x > 0);
-        for (int corner = 0; corner < 8; ++corner) {
-            const Vec3 p{corner & 1 ? box.hi.x : box.lo.x, corner & 2 ? box.hi.y : box.lo.y,
-                         corner & 4 ? box.hi.z : box.lo.z};
-            CHECK(inView(camera, width, height, p));
-        }
-        // Not so far that the model is small: the sphere around it touches the narrower side.
-        const float distance = length(from);
-        const float halfV = 0.5f * 45.0f * Pi / 180.0f;
-        const float halfH = std::atan(std::tan(halfV) * float(width) / float(height));
-        CHECK(distance == Approx(box.radius() / std::sin(std::min(halfV, halfH))));
+        CHECK(dot(normalize(from), framingDirection()) == Approx(1));
+        // Every vertex in view, and one at the margin: not so far back that the model is small.
+        CHECK(reach(scene, camera, width, height) == Approx(FramingFill));
     }
+}
+
+TEST_CASE("a flat model seen nearly edge-on from the front is framed face-on, not along up",
+          "[scene]") {
+    const std::string dir = test::temporaryFolder("defaults-flat");
+    const std::string path = dir + "/floor.obj";
+    // A floor (y = 0, facing up): from framingDirection() it shows 30% of its area, so the
+    // camera looks down on it, leaning to the front.
+    writeFile(path, "v -5 0 -5\nv 5 0 -5\nv 5 0 5\nv -5 0 5\nf 1 4 3 2\n");
+    const Scene scene = loadScene(optionsFor({"-i", path, "--size", "64", "64"}));
+    const Vec3 from = normalize(scene.camera->position - scene.camera->lookAt);
+    CHECK(from.y > 0.9f);
+    CHECK(from.y < 0.97f);
+    CHECK(from.z > 0);
+    CHECK(reach(scene, *scene.camera, 64, 64) == Approx(FramingFill));
+    // The far corners are in view: the floor fills a good part of the image.
+    const std::string image = dir + "/floor.pfm";
+    const auto run = test::runViewer(
+        "-i " + path + " --size 32 32 --spp 4 --lab importance --solution -o " + image);
+    INFO(run.output);
+    REQUIRE(run.exitStatus == 0);
+    const Image rendered = readImage(image);
+    int lit = 0;
+    for (size_t i = 0; i < rendered.rgb.size(); i += 3) lit += rendered.rgb[i] > 0;
+    CHECK(lit > 32 * 32 / 3);
 }
 
 TEST_CASE("--vu and --fov given without a position are kept by the framing camera", "[scene]") {
@@ -94,12 +113,10 @@ TEST_CASE("--vu and --fov given without a position are kept by the framing camer
     CHECK(scene.camera->up.z == 1);
 }
 
-TEST_CASE("--vp alone looks at the model's centre; --vi alone stands the framing distance back",
-          "[scene]") {
+TEST_CASE("--vp alone looks at the model's centre; --vi alone stands back just enough", "[scene]") {
     const std::string obj = tableWithoutCameraOrLight();
     const Scene framed = loadScene(optionsFor({"-i", obj}));
-    const float framingDistance = length(framed.camera->position - framed.camera->lookAt);
-    const BoundingBox box = boundingBoxOf(framed.positions);
+    const BoundingBox box = framed.bounds();
 
     const Scene positioned = loadScene(optionsFor({"-i", obj, "--vp", "0", "5", "20"}));
     CHECK(positioned.camera->position.z == 20);
@@ -110,14 +127,14 @@ TEST_CASE("--vp alone looks at the model's centre; --vi alone stands the framing
     const Scene aimed = loadScene(optionsFor({"-i", obj, "--vi", "4", "0", "5"}));
     CHECK(aimed.camera->lookAt.x == 4);
     const Vec3 back = aimed.camera->position - aimed.camera->lookAt;
-    CHECK(length(back) == Approx(framingDistance));
-    const Vec3 expected = framingDirection();
-    CHECK(dot(normalize(back), expected) == Approx(1));
+    CHECK(dot(normalize(back), framingDirection()) == Approx(1));
+    CHECK(reach(aimed, *aimed.camera, 512, 512) == Approx(FramingFill));
 
-    // --vd without --vp looks along it at the model.
+    // --vd without --vp looks along it at the model, the whole model in view.
     const Scene along = loadScene(optionsFor({"-i", obj, "--vd", "0", "0", "1"}));
-    CHECK(along.camera->lookAt.z == Approx(box.centre().z));
-    CHECK(along.camera->position.z == Approx(box.centre().z - framingDistance));
+    const Vec3 view = normalize(along.camera->lookAt - along.camera->position);
+    CHECK(view.z == Approx(1));
+    CHECK(reach(along, *along.camera, 512, 512) == Approx(FramingFill));
 }
 
 TEST_CASE("the framing camera and the default light each say so in one note", "[scene]") {
@@ -126,8 +143,8 @@ TEST_CASE("the framing camera and the default light each say so in one note", "[
         test::runViewer("-i " + tableWithoutCameraOrLight() + " --size 16 16 --spp 1 -o " + image);
     INFO(run.output);
     CHECK(run.exitStatus == 0);
-    CHECK(run.output.find("note: no camera given (--vp/--vi): looking at the model's centre (6, "
-                          "0, 6) from (") != std::string::npos);
+    CHECK(run.output.find("note: no camera given (--vp/--vi): looking at the model (") !=
+          std::string::npos);
     CHECK(run.output.find("; set --vp X Y Z --vi X Y Z to choose\n") != std::string::npos);
     CHECK(run.output.find("note: the scene has no light (no Ke material, no --pointlight, no "
                           "--dirlight): added a point light of ") != std::string::npos);

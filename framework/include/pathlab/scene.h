@@ -1,6 +1,7 @@
 #pragma once
 /// The scene as loaded from files: triangles, materials, lights and camera, before Embree.
 
+#include "pathlab/bounding_box.h"
 #include "pathlab/camera.h"
 #include "pathlab/color.h"
 #include "pathlab/material.h"
@@ -47,6 +48,10 @@ struct Scene {
         materialNames.push_back(name);
         return static_cast<uint32_t>(materials.size() - 1);
     }
+
+    /// The box around the vertices the triangles use (an OBJ may list vertices no face uses,
+    /// even at 1e+10); the unit cube around the origin when there are no triangles.
+    BoundingBox bounds() const;
 
     /// A camera that frames the whole scene from the front (pathlab/scene_defaults.h), for
     /// scenes without one.

@@ -28,12 +28,23 @@ constexpr float FramingFovDegrees = 45.0f;
 /// OBJ convention with +y up, which Blender's OBJ export writes), a little above and to the side.
 Vec3 framingDirection();
 
-/// `given` completed where it lacks a position or a look-at point. With neither, the camera
-/// looks at the centre of `bounds` from framingDirection(), just far enough that the sphere
-/// around the box fits the vertical field of view and the image's `aspect` (width / height);
-/// with the position alone, it looks at the centre; with the look-at point alone, it stands
-/// that distance from it along framingDirection(). The up vector is kept.
-CameraSettings framingCamera(const BoundingBox& bounds, const GivenCamera& given, float aspect);
+/// The unit direction from `scene`'s model towards a camera PathLab places: framingDirection(),
+/// unless the model shows less than a third of the area from there that it shows face-on (its largest
+/// triangle's normal) or along an axis: then the best of those, so that a flat model (a floor,
+/// one triangle) is not seen edge-on. Never straight along `up`, where the camera has no sides.
+Vec3 framingDirectionFor(const Scene& scene, const Vec3& up);
+
+/// The share of the image's narrower half-extent the framed model reaches: a margin of 5%.
+constexpr float FramingFill = 0.95f;
+
+/// `given` completed where it lacks a position or a look-at point, for a model made of the
+/// vertices of `scene`'s triangles. With neither, the camera looks along framingDirectionFor() at
+/// the model, centred on it as seen from there, just far enough back that every vertex is in
+/// the image of `aspect` (width / height) and one reaches FramingFill of it: a flat or long
+/// model fills the image as a round one does. With the look-at point alone, it stands back from
+/// that point along framingDirectionFor() (or against --vd) just as far; with the position alone,
+/// it looks at the centre of the model's box. The up vector is kept.
+CameraSettings framingCamera(const Scene& scene, const GivenCamera& given, float aspect);
 
 /// Whether next-event estimation has a light to sample: a triangle whose material emits
 /// (Ke > 0), a point light or a directional light.

@@ -23,11 +23,12 @@ std::vector<std::string_view> textLines(std::string_view text);
 struct WordLine {
     int number = 0;                      ///< 1-based
     std::string_view text;               ///< as in the file, comment included
-    std::vector<std::string_view> words; ///< split at white space, up to a '#'
-    std::string_view rest;               ///< what follows the first word, up to a '#', trimmed
+    std::vector<std::string_view> words; ///< split at white space, up to a '#' that begins a word
+    std::string_view rest;               ///< what follows the first word, up to that '#', trimmed
 };
 
-/// The lines of `text` that hold more than white space and a '#' comment.
+/// The lines of `text` that hold more than white space and a comment (from a '#' that begins a
+/// word to the line's end).
 std::vector<WordLine> wordLines(std::string_view text);
 
 } // namespace pathlab
