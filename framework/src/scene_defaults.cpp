@@ -1,6 +1,7 @@
 #include "pathlab/scene_defaults.h"
 
 #include "pathlab/constants.h"
+#include "pathlab/model_coverage.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,17 +13,6 @@ namespace pathlab {
 Vec3 framingDirection() { return normalize(Vec3{0.5f, 0.35f, 1.0f}); }
 
 namespace {
-
-/// The area the triangles present to a viewer along `direction` (unit), front and back alike.
-double presentedArea(const Scene& scene, const Vec3& direction) {
-    double area = 0;
-    for (const auto& t : scene.triangles) {
-        const Vec3& a = scene.positions[t[0]];
-        area +=
-            std::abs(dot(cross(scene.positions[t[1]] - a, scene.positions[t[2]] - a), direction));
-    }
-    return 0.5 * area;
-}
 
 /// The normal of the largest triangle, turned to the front: a flat model's face.
 Vec3 largestFace(const Scene& scene) {
@@ -89,25 +79,72 @@ float fittingDistance(const Scene& scene, const ViewFrame& frame, const Vec3& lo
 
 } // namespace
 
-Vec3 framingDirectionFor(const Scene& scene, const Vec3& up) {
-    const Vec3 usual = framingDirection();
-    std::vector<Vec3> candidates = {largestFace(scene), {1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
-                                    {0, -1, 0},         {0, 0, 1}, {0, 0, -1}};
-    const double usualArea = presentedArea(scene, usual);
-    Vec3 best = usual;
-    double bestArea = usualArea;
-    for (const Vec3& candidate : candidates) {
-        const double area = presentedArea(scene, candidate);
-        if (area > bestArea) best = candidate, bestArea = area;
-    }
-    if (3 * usualArea >= bestArea) return usual;
-    // Straight along `up` the camera has no left or right: lean towards the usual side.
+namespace {
+
+/// `camera` (its up vector and field of view) placed to look at the model from `towardCamera`,
+/// at `lookAt` or, if that is not given, at the model centred as seen from there.
+CameraSettings placed(const Scene& scene, const BoundingBox& bounds, CameraSettings camera,
+                      const Vec3& towardCamera, bool lookAtGiven, float aspect) {
+    const ViewFrame frame = viewFrame(towardCamera, camera.up);
+    if (!lookAtGiven) camera.lookAt = centredAcross(scene, frame, bounds.centre());
+    const float tanY = std::tan(0.5f * camera.fovDegrees * Pi / 180.0f);
+    const float radius = bounds.radius() > 0 ? bounds.radius() : 1.0f;
+    camera.position = camera.lookAt + towardCamera * fittingDistance(scene, frame, camera.lookAt,
+                                                                     tanY * aspect, tanY, radius);
+    return camera;
+}
+
+/// The directions a camera PathLab places may look from, after the usual one: the largest
+/// face's normal and the 26 of the cube around the model (faces, edges, corners), none
+/// straight along `up`, where a camera has no left or right (those lean to the usual side).
+std::vector<Vec3> otherDirections(const Scene& scene, const Vec3& up) {
+    std::vector<Vec3> directions = {largestFace(scene)};
+    for (int x = -1; x <= 1; ++x)
+        for (int y = -1; y <= 1; ++y)
+            for (int z = -1; z <= 1; ++z)
+                if (x || y || z)
+                    directions.push_back(normalize(Vec3{float(x), float(y), float(z)}));
     const Vec3 upward = normalize(up);
-    if (std::abs(dot(best, upward)) > 0.97f) {
-        const Vec3 front = usual - upward * dot(usual, upward);
-        best = normalize(best + normalize(front) * 0.3f);
+    const Vec3 usual = framingDirection();
+    const Vec3 front = normalize(usual - upward * dot(usual, upward));
+    for (Vec3& d : directions)
+        if (std::abs(dot(d, upward)) > 0.97f) d = normalize(d + front * 0.3f);
+    return directions;
+}
+
+/// Whether `camera` stands back from the model at least its radius (the sphere around its box)
+/// from every vertex: a view along a row of objects, from close behind the first, fills the
+/// image with that one and hides the rest.
+bool standsBack(const Scene& scene, float radius, const CameraSettings& camera) {
+    bool back = true;
+    forEachTriangleVertex(scene, [&](const Vec3& p) {
+        back = back && length(p - camera.position) >= FramingLeastNearDistance * radius;
+    });
+    return back;
+}
+
+} // namespace
+
+Vec3 framingDirectionFor(const Scene& scene, const CameraSettings& camera, bool lookAtGiven,
+                         float aspect) {
+    const BoundingBox bounds = scene.bounds();
+    const Vec3 usual = framingDirection();
+    const double usualShare =
+        coveredShare(scene, placed(scene, bounds, camera, usual, lookAtGiven, aspect), aspect);
+    if (usualShare >= FramingEnoughShare) return usual;
+    Vec3 best = usual;
+    double bestShare = usualShare;
+    for (const Vec3& d : otherDirections(scene, camera.up)) {
+        const CameraSettings candidate = placed(scene, bounds, camera, d, lookAtGiven, aspect);
+        if (!standsBack(scene, bounds.radius(), candidate)) continue;
+        const double share = coveredShare(scene, candidate, aspect);
+        // Of views that fill the image alike (a flat model from above and from below), the one
+        // nearer the usual direction.
+        const bool tie = std::abs(share - bestShare) < 1e-9;
+        if (share > bestShare + 1e-9 || (tie && dot(d, usual) > dot(best, usual)))
+            best = d, bestShare = share;
     }
-    return best;
+    return bestShare >= FramingBetterBy * usualShare ? best : usual;
 }
 
 CameraSettings framingCamera(const Scene& scene, const GivenCamera& given, float aspect) {
@@ -117,15 +154,10 @@ CameraSettings framingCamera(const Scene& scene, const GivenCamera& given, float
     if (given.position) {
         if (!given.lookAt) camera.lookAt = bounds.centre();
     } else {
-        const Vec3 towardCamera = given.viewDirection ? -normalize(*given.viewDirection)
-                                                      : framingDirectionFor(scene, camera.up);
-        const ViewFrame frame = viewFrame(towardCamera, camera.up);
-        if (!given.lookAt) camera.lookAt = centredAcross(scene, frame, bounds.centre());
-        const float tanY = std::tan(0.5f * camera.fovDegrees * Pi / 180.0f);
-        const float radius = bounds.radius() > 0 ? bounds.radius() : 1.0f;
-        camera.position =
-            camera.lookAt + towardCamera * fittingDistance(scene, frame, camera.lookAt,
-                                                           tanY * aspect, tanY, radius);
+        const Vec3 towardCamera = given.viewDirection
+                                      ? -normalize(*given.viewDirection)
+                                      : framingDirectionFor(scene, camera, given.lookAt, aspect);
+        camera = placed(scene, bounds, camera, towardCamera, given.lookAt, aspect);
     }
     // A position given at the centre itself would look nowhere: look past it instead.
     if (length(camera.lookAt - camera.position) == 0)

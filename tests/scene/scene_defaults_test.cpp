@@ -6,6 +6,7 @@
 #include "pathlab/bounding_box.h"
 #include "pathlab/constants.h"
 #include "pathlab/image_io.h"
+#include "pathlab/model_coverage.h"
 #include "pathlab/render_options.h"
 #include "pathlab/scene_defaults.h"
 
@@ -72,9 +73,23 @@ TEST_CASE("a model without a camera is framed whole, from the front, above and t
         INFO(width << "x" << height);
         CHECK(camera.fovDegrees == Approx(45));
         CHECK(camera.up.y == 1);
-        // From the +z side, above and to the +x side: framingDirection().
+        // From the +z side, above and to the +x side: framingDirection(), where the table fills
+        // enough of the image from there. In a tall image the wide table fills too little of it
+        // seen from the front, so the camera looks from where it fills at least twice as much.
         const Vec3 from = camera.position - camera.lookAt;
-        CHECK(dot(normalize(from), framingDirection()) == Approx(1));
+        const double share = coveredShare(scene, camera, float(width) / float(height));
+        if (width >= height) {
+            CHECK(dot(normalize(from), framingDirection()) == Approx(1));
+            CHECK(share >= FramingEnoughShare);
+        } else {
+            CHECK(dot(normalize(from), framingDirection()) < 0.99f);
+            GivenCamera fromTheFront;
+            fromTheFront.viewDirection = -framingDirection();
+            const float aspect = float(width) / float(height);
+            const CameraSettings front = framingCamera(scene, fromTheFront, aspect);
+            CHECK(coveredShare(scene, front, aspect) < FramingEnoughShare);
+            CHECK(share >= FramingBetterBy * coveredShare(scene, front, aspect));
+        }
         // Every vertex in view, and one at the margin: not so far back that the model is small.
         CHECK(reach(scene, camera, width, height) == Approx(FramingFill));
     }
@@ -208,4 +223,32 @@ TEST_CASE("a model without a camera or a light renders visibly in every lab",
             lit += rendered.rgb[3 * p] + rendered.rgb[3 * p + 1] + rendered.rgb[3 * p + 2] > 0;
         CHECK(double(lit) >= 0.1 * double(pixels));
     }
+}
+
+TEST_CASE("the share of the image a model covers: a square seen face-on, tiny and hidden ones",
+          "[scene]") {
+    Scene scene;
+    // A square of side 1 at the origin, seen from distance 1 with a 90° field of view: the
+    // image spans [-1, 1] there, so the square covers the middle half of each side, 1/4.
+    scene.positions = {{-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}};
+    scene.triangles = {{0, 1, 2}, {0, 2, 3}};
+    CameraSettings camera;
+    camera.position = {0, 0, 1};
+    camera.lookAt = {0, 0, 0};
+    camera.fovDegrees = 90;
+    CHECK(coveredShare(scene, camera, 1.0f) == Approx(0.25).margin(2.0 / (48 * 48)));
+    // (A corner on a pixel edge may mark one pixel more.) Its back side counts as its front does.
+    camera.position = {0, 0, -1};
+    CHECK(coveredShare(scene, camera, 1.0f) == Approx(0.25).margin(2.0 / (48 * 48)));
+    // In an image twice as wide the square covers a quarter of the width, half the height.
+    CHECK(coveredShare(scene, camera, 2.0f) == Approx(0.125).margin(2.0 / (48 * 24)));
+    // Behind the camera: nothing.
+    camera.position = {0, 0, 1};
+    camera.lookAt = {0, 0, 2};
+    CHECK(coveredShare(scene, camera, 1.0f) == 0);
+    // A triangle far smaller than a pixel marks the one its first vertex falls in.
+    scene.positions = {{0.01f, 0.01f, 0}, {0.011f, 0.01f, 0}, {0.01f, 0.011f, 0}};
+    scene.triangles = {{0, 1, 2}};
+    camera.lookAt = {0, 0, 0};
+    CHECK(coveredShare(scene, camera, 1.0f) == Approx(1.0 / (48 * 48)));
 }

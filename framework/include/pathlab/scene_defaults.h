@@ -28,11 +28,22 @@ constexpr float FramingFovDegrees = 45.0f;
 /// OBJ convention with +y up, which Blender's OBJ export writes), a little above and to the side.
 Vec3 framingDirection();
 
-/// The unit direction from `scene`'s model towards a camera PathLab places: framingDirection(),
-/// unless the model shows less than a third of the area from there that it shows face-on (its largest
-/// triangle's normal) or along an axis: then the best of those, so that a flat model (a floor,
-/// one triangle) is not seen edge-on. Never straight along `up`, where the camera has no sides.
-Vec3 framingDirectionFor(const Scene& scene, const Vec3& up);
+/// A view that fills this share of the image is good enough: the usual direction is kept.
+constexpr double FramingEnoughShare = 0.15;
+/// Below that, another direction is taken only when the model fills this many times as much of
+/// the image from there: a model is seen from the front unless that shows it poorly.
+constexpr double FramingBetterBy = 2;
+/// ... and only from where no vertex is nearer than this many times the model's radius.
+constexpr float FramingLeastNearDistance = 0.75f;
+
+/// The unit direction from `scene`'s model towards a camera PathLab places (`camera`'s up
+/// vector and field of view, looking at its lookAt if `lookAtGiven`): framingDirection(),
+/// unless the model fills less than FramingEnoughShare of the image from there
+/// (model_coverage.h) and FramingBetterBy times as much from its largest face's normal or from
+/// one of the 26 directions of the cube around it: then the best of those. So a flat model is
+/// not seen edge-on, nor a thin one end-on.
+Vec3 framingDirectionFor(const Scene& scene, const CameraSettings& camera, bool lookAtGiven,
+                         float aspect);
 
 /// The share of the image's narrower half-extent the framed model reaches: a margin of 5%.
 constexpr float FramingFill = 0.95f;
