@@ -278,6 +278,7 @@ private:
             return -1;
         }
         reading_.libraries.push_back(readMaterialLibrary(file, notes_));
+        reading_.libraryFiles.push_back(file);
         for (const std::string& material : reading_.libraries.back().names) {
             defined_.insert(material);
             definedAt_.emplace(material, line.number);

@@ -86,6 +86,17 @@ TEST_CASE("a scene's files: the .ecs, the .obj it names and the .mtl that names"
     CHECK(sceneFilesHash(ecs) != before);
 }
 
+TEST_CASE("a scene's material library whose name has spaces is one of its files", "[grader]") {
+    Scratch scratch;
+    std::ofstream(scratch.path / "s.ecs") << "-i model.obj\n-vp 0 0 -2 -vi 0 0 0\n";
+    std::ofstream(scratch.path / "my materials.mtl") << "newmtl red\nKd 0.8 0.1 0.1\n";
+    std::ofstream(scratch.path / "model.obj")
+        << "mtllib my materials.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n";
+    const std::vector<std::string> files = sceneFiles((scratch.path / "s.ecs").string());
+    REQUIRE(files.size() == 3);
+    CHECK(fs::path(files[2]).filename() == "my materials.mtl");
+}
+
 TEST_CASE("a stored reference is stale when its scene files, the rubric's sizes or the kit change",
           "[grader]") {
     Scratch scratch;

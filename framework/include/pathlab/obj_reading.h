@@ -18,6 +18,9 @@ struct ObjReading {
     /// ("mtllib 0"; one line for each file), unknown keywords left out; geometry as in the file.
     std::string textForTinyobj;
     std::vector<MaterialLibrary> libraries;
+    /// The path of each of `libraries`' files, as found beside the .obj (a name with spaces
+    /// whole, where a file of that name is there).
+    std::vector<std::string> libraryFiles;
     /// A warning already says that some faces are grey (an undefined material, a library not
     /// found), so the note for faces without a material would repeat it.
     bool greyFacesExplained = false;

@@ -3,11 +3,11 @@
 #include "common/content_hash.h"
 
 #include "pathlab/input_error.h"
+#include "pathlab/input_notes.h"
+#include "pathlab/obj_reading.h"
 #include "pathlab/render_options.h"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace pathlab::grader {
 
@@ -15,22 +15,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The material libraries an .obj names on its `mtllib` lines that exist (tinyobjloader looks
-/// for them beside it).
+/// The material libraries an .obj names on its `mtllib` lines that exist, found as the viewer
+/// finds them (beside it; a name with spaces whole).
 std::vector<std::string> materialLibraries(const std::string& objPath) {
-    std::ifstream in(objPath);
-    if (!in) throw InputError(objPath + ": cannot be read");
+    InputNotes notes; // what the viewer would warn of is the render's to print, not this list's
     std::vector<std::string> libraries;
-    std::string line;
-    while (std::getline(in, line)) {
-        std::istringstream words(line);
-        std::string key, name;
-        if (!(words >> key) || key != "mtllib") continue;
-        while (words >> name)
-            if (const fs::path mtl = fs::absolute(fs::path(objPath).parent_path() / name);
-                fs::exists(mtl))
-                libraries.push_back(mtl.string());
-    }
+    for (const std::string& file : readObj(objPath, notes).libraryFiles)
+        libraries.push_back(fs::absolute(file).string());
     return libraries;
 }
 
