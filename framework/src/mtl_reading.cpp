@@ -38,7 +38,9 @@ public:
     MtlReader(const std::string& path, InputNotes& notes) : path_(path), notes_(notes) {}
 
     MaterialLibrary read(std::string_view text) {
-        for (const WordLine& line : wordLines(text)) readLine(line);
+        const std::vector<WordLine> lines = wordLines(text);
+        for (const WordLine& line : lines) readLine(line);
+        finishMaterial();
         warnAboutEnergy();
         return std::move(library_);
     }
@@ -48,7 +50,10 @@ private:
         const std::string_view key = line.words[0];
         if (key == "newmtl") return newMaterial(line);
         const bool modelled = colourKeys.count(key) || key == "Ni";
-        if (!modelled) {
+        if (!library_.names.empty()) noteOpacity(line);
+        if (key == "Tf" && !library_.names.empty()) {
+            filter_ = &line; // read when the material ends, once its d or Tr is known
+        } else if (!modelled) {
             notes_.ignored(path_, ignoredIntro, std::string(key));
             // Forwarded: tinyobjloader gives a material with map_Kd and no Kd a Kd of 0.6.
             if (!library_.names.empty()) forward(line.text);
@@ -62,7 +67,32 @@ private:
         }
     }
 
+    /// Whether the material says it is opaque: 'd 1' or 'Tr 0', which exporters write beside a
+    /// 'Tf 1 1 1' that then filters nothing.
+    void noteOpacity(const WordLine& line) {
+        if (line.words.size() < 2) return;
+        const std::optional<float> value = parseFloat(line.words[1]);
+        if (line.words[0] == "d" && value == 1.0f) opaque_ = true;
+        if (line.words[0] == "Tr" && value == 0.0f) opaque_ = true;
+    }
+
+    /// A 'Tf' (transmission filter) is the material's transmission, as tinyobjloader reads it,
+    /// unless the material says it is opaque.
+    void finishMaterial() {
+        if (filter_ && opaque_) {
+            notes_.warning(path_, filter_->number, "Tf on opaque",
+                           "'Tf' on a material that says it is opaque ('d 1' or 'Tr 0'): "
+                           "PathLab ignores it (read as transmission, 'Tf 1 1 1' would make "
+                           "the material clear glass)");
+        } else if (filter_) {
+            readColour(*filter_);
+        }
+        filter_ = nullptr;
+        opaque_ = false;
+    }
+
     void newMaterial(const WordLine& line) {
+        finishMaterial();
         const std::string name(line.rest);
         if (name.empty()) {
             notes_.warning(path_, line.number, "empty newmtl",
@@ -206,6 +236,8 @@ private:
     InputNotes& notes_;
     MaterialLibrary library_;
     std::vector<Energy> energy_;
+    const WordLine* filter_ = nullptr; ///< the current material's 'Tf' line, if it has one
+    bool opaque_ = false;              ///< the current material says 'd 1' or 'Tr 0'
 };
 
 } // namespace

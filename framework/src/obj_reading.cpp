@@ -50,12 +50,19 @@ struct ElementCounts {
     long positions = 0, texcoords = 0, normals = 0;
 };
 
-// Keywords PathLab knows and reads past, quietly: groups, smoothing, lines, points, curves.
-const std::set<std::string_view> ignoredObjKeys = {
-    "o",        "g",     "s",     "l",          "p",        "vp",   "mg",    "cstype",
-    "deg",      "bmat",  "step",  "curv",       "curv2",    "surf", "parm",  "trim",
-    "hole",     "scrv",  "sp",    "end",        "con",      "lod",  "bevel", "c_interp",
-    "d_interp", "ctech", "stech", "shadow_obj", "trace_obj"};
+// Keywords PathLab knows and reads past quietly: names, groups, smoothing and render hints,
+// which change nothing it draws.
+const std::set<std::string_view> quietObjKeys = {"o",     "g",     "s",          "mg",
+                                                 "lod",   "bevel", "c_interp",   "d_interp",
+                                                 "ctech", "stech", "shadow_obj", "trace_obj"};
+
+// Elements other than faces: points, lines, curves and surfaces, and the data only they use.
+// PathLab draws none of them, and says so once per file.
+const std::set<std::string_view> leftOutObjKeys = {
+    "p",    "l",    "vp",   "cstype", "deg",  "bmat", "step", "curv", "curv2",
+    "surf", "parm", "trim", "hole",   "scrv", "sp",   "end",  "con"};
+
+const char* leftOutIntro = "PathLab renders faces only; it leaves out the file's ";
 
 const char* unknownIntro = "PathLab ignores the OBJ keywords it does not know: ";
 
@@ -94,7 +101,9 @@ public:
                 replacement = useMaterial(line);
             } else if (key == "mtllib") {
                 replacement = materialLibraries(line);
-            } else if (!ignoredObjKeys.count(key)) {
+            } else if (leftOutObjKeys.count(key)) {
+                notes_.ignored(path_, leftOutIntro, std::string(key));
+            } else if (!quietObjKeys.count(key)) {
                 notes_.ignored(path_, unknownIntro, std::string(key));
                 replacement = ""; // not forwarded: tinyobjloader need not guess at it
             }

@@ -144,7 +144,7 @@ Vec3 framingDirectionFor(const Scene& scene, const CameraSettings& camera, bool 
         if (share > bestShare + 1e-9 || (tie && dot(d, usual) > dot(best, usual)))
             best = d, bestShare = share;
     }
-    return bestShare >= FramingBetterBy * usualShare ? best : usual;
+    return bestShare > 0 && bestShare >= FramingBetterBy * usualShare ? best : usual;
 }
 
 CameraSettings framingCamera(const Scene& scene, const GivenCamera& given, float aspect) {

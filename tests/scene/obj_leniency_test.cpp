@@ -261,6 +261,35 @@ TEST_CASE("a colour of one number is grey, as the MTL format says; other odd col
     CHECK(materialNamed(scene, "negative").Kd.g == 0.25f);
 }
 
+TEST_CASE("a Tf on a material that says it is opaque (d 1, Tr 0) is no transmission",
+          "[scene][obj-leniency]") {
+    const std::string dir = test::temporaryFolder("tf");
+    // As exporters write an opaque material; the d comes before or after the Tf.
+    writeFile(dir + "/m.mtl", "newmtl opaque\nKd 0.6 0.1 0.1\nTf 1 1 1\nd 1\n"
+                              "newmtl alsoOpaque\nTr 0\nTf 1 1 1\n"
+                              "newmtl clear\nTf 0.5 0.5 0.5\nd 0.5\n"
+                              "newmtl filter\nTf 0.25 0.25 0.25\n");
+    writeFile(dir + "/a.obj",
+              std::string("mtllib m.mtl\n") + triangle + "usemtl opaque\nf 1 2 3\n");
+    const auto run =
+        test::runViewer("-i " + dir + "/a.obj --size 8 8 --spp 1 -o " + dir + "/out.png");
+    INFO(run.output);
+    CHECK(run.exitStatus == 0);
+    CHECK(has(run.output,
+              "warning: " + dir +
+                  "/m.mtl:3: 'Tf' on a material that says it is opaque ('d 1' or "
+                  "'Tr 0'): PathLab ignores it (read as transmission, 'Tf 1 1 1' would make "
+                  "the material clear glass) (and 1 more like it)"));
+    CHECK(!has(run.output, "energy conserving"));
+
+    Scene scene;
+    loadObj(dir + "/a.obj", scene);
+    CHECK(materialNamed(scene, "opaque").Kt.r == 0.0f);
+    CHECK(materialNamed(scene, "alsoOpaque").Kt.r == 0.0f);
+    CHECK(materialNamed(scene, "clear").Kt.r == 0.5f);
+    CHECK(materialNamed(scene, "filter").Kt.r == 0.25f);
+}
+
 TEST_CASE("a colour or Ni that is no number at all is an error naming its line",
           "[scene][obj-leniency][bad-input]") {
     const std::string dir = test::temporaryFolder("kd-error");
@@ -326,14 +355,15 @@ TEST_CASE("a face corner's texture or normal index past the file's list is dropp
                         "before this line");
 }
 
-TEST_CASE("keys PathLab does not model, in MTL and OBJ: one note per file listing them",
+TEST_CASE("keys PathLab does not model, in MTL and OBJ, and elements it does not draw: one note "
+          "per file listing them",
           "[scene][obj-leniency][solutions]") {
     const std::string dir = test::temporaryFolder("ignored");
     writeFile(dir + "/m.mtl", "newmtl white\nKd 0.5 0.5 0.5\nd 0.5\nTr 0.5\nillum 2\n"
                               "map_Kd wood.png\nbump -bm 2 bumps.png\nshininess 4\nshininess 5\n");
     writeFile(dir + "/a.obj", std::string("mtllib m.mtl\n") + triangle +
                                   "o thing\ng group\ns 1\nwat 1 2\nusemtl white\n"
-                                  "frobnicate\nf 1 2 3\nwat 3\n");
+                                  "frobnicate\nf 1 2 3\nwat 3\nl 1 2\np 3\nl 2 3\n");
     const Rendered r = render(dir);
     INFO(r.output);
     expectGreyImage(r);
@@ -343,7 +373,9 @@ TEST_CASE("keys PathLab does not model, in MTL and OBJ: one note per file listin
     CHECK(has(r.output, "note: " + dir +
                             "/a.obj: PathLab ignores the OBJ keywords it does not know: "
                             "frobnicate, wat\n"));
-    CHECK(lines(r.output, "note:") == 2);
+    CHECK(has(r.output, "note: " + dir +
+                            "/a.obj: PathLab renders faces only; it leaves out the file's l, p\n"));
+    CHECK(lines(r.output, "note:") == 3);
     CHECK(lines(r.output, "warning:") == 0);
 }
 

@@ -225,30 +225,41 @@ TEST_CASE("a model without a camera or a light renders visibly in every lab",
     }
 }
 
-TEST_CASE("the share of the image a model covers: a square seen face-on, tiny and hidden ones",
+TEST_CASE("the share of the image a model covers: a square seen face-on, from behind, "
+          "behind a wall, tiny and behind the camera",
           "[scene]") {
     Scene scene;
-    // A square of side 1 at the origin, seen from distance 1 with a 90° field of view: the
-    // image spans [-1, 1] there, so the square covers the middle half of each side, 1/4.
+    // A square of side 1 at the origin facing +z (counter-clockwise seen from there), seen
+    // from distance 1 with a 90° field of view: the image spans [-1, 1] there, so the square
+    // covers the middle half of each side, 1/4 (a corner on a pixel edge may mark one pixel
+    // more).
     scene.positions = {{-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}};
     scene.triangles = {{0, 1, 2}, {0, 2, 3}};
     CameraSettings camera;
     camera.position = {0, 0, 1};
     camera.lookAt = {0, 0, 0};
     camera.fovDegrees = 90;
-    CHECK(coveredShare(scene, camera, 1.0f) == Approx(0.25).margin(2.0 / (48 * 48)));
-    // (A corner on a pixel edge may mark one pixel more.) Its back side counts as its front does.
-    camera.position = {0, 0, -1};
-    CHECK(coveredShare(scene, camera, 1.0f) == Approx(0.25).margin(2.0 / (48 * 48)));
+    const double pixel = 1.0 / (48 * 48);
+    CHECK(coveredShare(scene, camera, 1.0f) == Approx(0.25).margin(2 * pixel));
     // In an image twice as wide the square covers a quarter of the width, half the height.
-    CHECK(coveredShare(scene, camera, 2.0f) == Approx(0.125).margin(2.0 / (48 * 24)));
-    // Behind the camera: nothing.
+    CHECK(coveredShare(scene, camera, 2.0f) == Approx(0.125).margin(4 * pixel));
+    // From behind, its back side: nothing counts.
+    camera.position = {0, 0, -1};
+    CHECK(coveredShare(scene, camera, 1.0f) == Approx(0).margin(2 * pixel));
+    // Behind a wall facing away from the camera (a room's wall seen from outside): hidden.
     camera.position = {0, 0, 1};
+    scene.positions.insert(scene.positions.end(),
+                           {{-1, -1, 0.5f}, {-1, 1, 0.5f}, {1, 1, 0.5f}, {1, -1, 0.5f}});
+    scene.triangles.push_back({4, 5, 6});
+    scene.triangles.push_back({4, 6, 7});
+    CHECK(coveredShare(scene, camera, 1.0f) == Approx(0).margin(2 * pixel));
+    // Behind the camera: nothing.
+    scene.triangles.resize(2);
     camera.lookAt = {0, 0, 2};
     CHECK(coveredShare(scene, camera, 1.0f) == 0);
     // A triangle far smaller than a pixel marks the one its first vertex falls in.
     scene.positions = {{0.01f, 0.01f, 0}, {0.011f, 0.01f, 0}, {0.01f, 0.011f, 0}};
     scene.triangles = {{0, 1, 2}};
     camera.lookAt = {0, 0, 0};
-    CHECK(coveredShare(scene, camera, 1.0f) == Approx(1.0 / (48 * 48)));
+    CHECK(coveredShare(scene, camera, 1.0f) == Approx(pixel));
 }

@@ -8,10 +8,12 @@
 namespace pathlab {
 
 /// The share (0 to 1) of the pixels of an image `columns` wide, of `aspect` width / height,
-/// whose centres a triangle of `scene` covers as `camera` sees it, front and back alike. A
-/// triangle smaller than a pixel marks the pixel its first vertex falls in, so a fine mesh
-/// counts as what it covers. Triangles behind the camera are left out. Above a few hundred
-/// thousand triangles an even sample of them is drawn, which covers nearly what all do.
+/// through whose centre `camera` sees the front side of a triangle of `scene` (its vertices
+/// counter-clockwise) as the nearest surface: a room whose walls face inward counts from its
+/// open side, not from behind its walls. A triangle smaller than a pixel marks the pixel its
+/// first vertex falls in, so a fine mesh counts as what it covers. Triangles reaching behind
+/// the camera are left out. Above a few hundred thousand triangles an even sample of them is
+/// drawn, which covers nearly what all do.
 double coveredShare(const Scene& scene, const CameraSettings& camera, float aspect,
                     int columns = 48);
 
