@@ -2,6 +2,7 @@
 
 #include "pathlab/input_error.h"
 #include "pathlab/obj_number.h"
+#include "pathlab/polygon_triangulation.h"
 #include "pathlab/printable_text.h"
 #include "pathlab/text_file.h"
 
@@ -87,7 +88,9 @@ public:
             const std::string_view key = line.words[0];
             std::optional<std::string> replacement;
             if (key == "v") {
-                replacement = readNumbers(line, 3, 7); // x y z [w | r g b]
+                std::vector<float> xyz;
+                replacement = readNumbers(line, 3, 7, &xyz); // x y z [w | r g b]
+                positions_.push_back({xyz[0], xyz[1], xyz[2]});
                 ++soFar.positions;
             } else if (key == "vn") {
                 replacement = readNumbers(line, 3, 3);
@@ -123,7 +126,8 @@ private:
     /// Checks the count of numbers after the keyword, between `least` and `most`, and reads
     /// each as tinyobjloader does (readObjNumber); the line as tinyobjloader must then read it
     /// where a number was read differently from its word, else nothing.
-    std::optional<std::string> readNumbers(const WordLine& line, size_t least, size_t most) {
+    std::optional<std::string> readNumbers(const WordLine& line, size_t least, size_t most,
+                                           std::vector<float>* values = nullptr) {
         const size_t count = line.words.size() - 1;
         const std::string key(line.words[0]);
         if (count < least || count > most) {
@@ -142,6 +146,7 @@ private:
             if (!number)
                 throw inputErrorAt(path_, line.number,
                                    "'" + key + "' expects numbers, found " + inQuotes(word));
+            if (values) values->push_back(number->value);
             rewritten += ' ';
             if (number->reading == ObjNumberReading::exact) {
                 rewritten += word;
@@ -189,6 +194,8 @@ private:
             throw inputErrorAt(path_, line.number, "a face needs at least 3 corners");
         std::string rewritten = "f";
         bool differs = false;
+        std::vector<std::string> corners;
+        std::vector<long> vertices; // 1-based
         for (size_t i = 1; i < line.words.size(); ++i) {
             const std::string_view corner = line.words[i];
             std::array<std::string, 3> part;
@@ -202,7 +209,9 @@ private:
                     start = k + 1;
                 }
             }
-            if (!resolveIndex(path_, line, corner, part[0], soFar.positions, inFile.positions)) {
+            const long vertex =
+                resolveIndex(path_, line, corner, part[0], soFar.positions, inFile.positions);
+            if (!vertex) {
                 const long index = std::strtol(part[0].c_str(), nullptr, 10);
                 throw inputErrorAt(
                     path_, line.number,
@@ -223,14 +232,49 @@ private:
             };
             if (field >= 2) keep(part[1], soFar.texcoords, inFile.texcoords, "texture coordinate");
             if (field == 3) keep(part[2], soFar.normals, inFile.normals, "normal");
-            rewritten += ' ' + part[0];
+            std::string kept = part[0];
             if (!part[2].empty())
-                rewritten += '/' + part[1] + '/' + part[2];
+                kept += '/' + part[1] + '/' + part[2];
             else if (!part[1].empty())
-                rewritten += '/' + part[1];
+                kept += '/' + part[1];
+            rewritten += ' ' + kept;
+            corners.push_back(kept);
+            vertices.push_back(vertex);
         }
+        if (const auto cut = cutConcave(line, corners, vertices)) return cut;
         if (!differs) return std::nullopt;
         return rewritten;
+    }
+
+    /// The triangles of a concave face, as 'f' lines, where PathLab cuts it (tinyobjloader cuts
+    /// a quad along its shorter diagonal and a larger polygon by its own ear clipping, either of
+    /// which can cover more than a concave face); nothing for a convex face or a triangle,
+    /// which tinyobjloader cuts as it always has, or a face of vertices defined after it.
+    std::optional<std::string> cutConcave(const WordLine& line,
+                                          const std::vector<std::string>& corners,
+                                          const std::vector<long>& vertices) {
+        if (corners.size() < 4) return std::nullopt;
+        std::vector<Vec3> points;
+        for (const long v : vertices) {
+            if (v > static_cast<long>(positions_.size())) return std::nullopt;
+            points.push_back(positions_[static_cast<size_t>(v - 1)]);
+        }
+        if (isConvexPolygon(points)) return std::nullopt;
+        const auto triangles = earClip(points);
+        const std::string face = "face of " + std::to_string(corners.size()) + " corners";
+        if (!triangles) {
+            notes_.warning(path_, line.number, "self-crossing face",
+                           face + " is concave and crosses itself: tinyobjloader cuts it into "
+                                  "triangles, which may cover more or less than it");
+            return std::nullopt;
+        }
+        notes_.note(path_, line.number, "concave face",
+                    face + " is concave: PathLab cuts it into triangles by ear clipping");
+        std::string lines;
+        for (const auto& t : *triangles)
+            lines += (lines.empty() ? "f " : "\nf ") + corners[t[0]] + ' ' + corners[t[1]] + ' ' +
+                     corners[t[2]];
+        return lines;
     }
 
     void warnAboutDroppedIndices() {
@@ -324,6 +368,7 @@ private:
     std::map<std::string, int> definedAt_;    ///< the 'mtllib' line that defines each
     std::vector<std::pair<int, std::string>> undefined_;
     std::vector<DroppedIndex> dropped_;
+    std::vector<Vec3> positions_; ///< the vertices read so far, for cutting concave faces
 };
 
 } // namespace
