@@ -219,8 +219,8 @@ private:
                     std::snprintf(text, sizeof text, "Kd+Ks+Kt = %g in %s exceeds 1", sum,
                                   channel[c]);
                     notes_.warning(path_, m.line, "energy",
-                                   "material " + inQuotes(m.name) +
-                                       " is not energy conserving: " + text);
+                                   "material " + inQuotes(m.name) + " is not energy conserving: " +
+                                       text + ": PathLab uses the values as written");
                     break;
                 }
             }

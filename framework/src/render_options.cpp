@@ -54,6 +54,12 @@ CameraSettings sceneCamera(const RenderOptions& options, const Scene& scene) {
                      "note: no --vi given: looking at the model's centre (%g, %g, %g) from (%g, "
                      "%g, %g); set --vi X Y Z to choose\n",
                      at.x, at.y, at.z, from.x, from.y, from.z);
+    else if (given.viewDirection)
+        std::fprintf(stderr,
+                     "note: no --vp given: looking along --vd at the model (%g, %g, %g) from "
+                     "(%g, %g, %g), far enough back to see all of it; set --vp X Y Z to "
+                     "choose\n",
+                     at.x, at.y, at.z, from.x, from.y, from.z);
     else
         std::fprintf(stderr,
                      "note: no camera given (--vp/--vi): looking at the model (%g, %g, "

@@ -418,7 +418,7 @@ TEST_CASE("what would make a wrong mesh stays an error of one line",
 }
 
 TEST_CASE("UTF-16 files are named as such; words of other bytes are escaped",
-          "[scene][obj-leniency][bad-input]") {
+          "[scene][obj-leniency][bad-input][solutions]") {
     const std::string dir = test::temporaryFolder("utf16");
     const auto utf16 = [](const std::string& ascii, bool bom) {
         std::string text = bom ? "\xFF\xFE" : "";

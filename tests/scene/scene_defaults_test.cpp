@@ -96,7 +96,7 @@ TEST_CASE("a model without a camera is framed whole, from the front, above and t
 }
 
 TEST_CASE("a flat model seen nearly edge-on from the front is framed face-on, not along up",
-          "[scene]") {
+          "[scene][solutions]") {
     const std::string dir = test::temporaryFolder("defaults-flat");
     const std::string path = dir + "/floor.obj";
     // A floor (y = 0, facing up): from framingDirection() it shows 30% of its area, so the
@@ -165,6 +165,13 @@ TEST_CASE("the framing camera and the default light each say so in one note", "[
                           "--dirlight): added a point light of ") != std::string::npos);
     CHECK(run.output.find(" W/sr at the camera; give --pointlight X Y Z R G B or --dirlight DX "
                           "DY DZ R G B instead\n") != std::string::npos);
+
+    const auto along = test::runViewer("-i " + tableWithoutCameraOrLight() +
+                                       " --vd 0 0 1 --size 16 16 --spp 1 -o " + image);
+    INFO(along.output);
+    CHECK(along.output.find("note: no --vp given: looking along --vd at the model (") !=
+          std::string::npos);
+    CHECK(along.output.find("no camera given") == std::string::npos);
 }
 
 TEST_CASE("the default light is a headlight: a white surface facing it has radiance 1", "[scene]") {
