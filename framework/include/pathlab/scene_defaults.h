@@ -32,7 +32,7 @@ Vec3 framingDirection();
 constexpr double FramingEnoughShare = 0.15;
 /// Below that, another direction is taken only when the model fills this many times as much of
 /// the image from there: a model is seen from the front unless that shows it poorly.
-constexpr double FramingBetterBy = 2;
+constexpr double FramingBetterBy = 1.5;
 /// ... and only from where no vertex is nearer than this many times the model's radius.
 constexpr float FramingLeastNearDistance = 0.75f;
 
