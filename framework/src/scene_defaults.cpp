@@ -77,10 +77,6 @@ float fittingDistance(const Scene& scene, const ViewFrame& frame, const Vec3& lo
     return distance > 0 ? distance : radius;
 }
 
-} // namespace
-
-namespace {
-
 /// `camera` (its up vector and field of view) placed to look at the model from `towardCamera`,
 /// at `lookAt` or, if that is not given, at the model centred as seen from there.
 CameraSettings placed(const Scene& scene, const BoundingBox& bounds, CameraSettings camera,
