@@ -34,13 +34,6 @@ PathContext::PathContext(const RenderScene& scene, const LabParameters& paramete
     : sampler(PathDriver::samplerFor(0, 0, 0)), maxDepth(parameters.maxDepth),
       continueProb(parameters.continueProb), scene_(scene) {}
 
-Sampler PathDriver::samplerFor(uint64_t seed, uint64_t pixelIndex, uint64_t sampleIndex) {
-    const uint64_t key = mix64(mix64(mix64(seed) ^ pixelIndex) ^ sampleIndex);
-    Pcg32 rng;
-    rng.seed(key, mix64(key ^ 0x5851f42d4c957f2dull));
-    return Sampler(rng);
-}
-
 Hit PathContext::traceUnrecorded(const Ray& ray, CallSite caller) {
     // A ray built by a lab: Embree would trace a non-unit direction, with every distance and
     // offset along it scaled, and a NaN one would find nothing. Both come from a step before.

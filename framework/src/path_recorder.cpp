@@ -30,7 +30,7 @@ PathRecorder::PathRecorder(PathProbe probe, const Sampler& start)
 
 std::vector<float> PathRecorder::drawsSince(const Sampler& now) {
     std::vector<float> draws;
-    Pcg32 stepping = stream_;
+    RandomStream stepping = stream_;
     while (!(stepping == now.rng_)) {
         if (draws.size() == MaxDrawsCounted) {
             stepping = now.rng_;

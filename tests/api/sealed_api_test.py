@@ -67,7 +67,7 @@ FORBIDDEN = [
 # from framework/lab_list.txt into BUILD/generated/include.
 DOCUMENTED_HEADERS = {
     "lab.h", "lab_declarations.h", "lab_list.h", "call_site.h", "color.h", "constants.h", "cosine_hemisphere.h", "hit.h",
-    "material.h", "orthonormal_basis.h", "path_context.h", "pcg32.h", "ray.h", "sampler.h",
+    "material.h", "orthonormal_basis.h", "path_context.h", "random_stream.h", "ray.h", "sampler.h",
     "scattering.h", "small_angle_sin_cos.h", "todo.h", "vec3.h",
 }
 

@@ -3,6 +3,7 @@
 
 #include "pathlab/camera_packet.h"
 #include "pathlab/path_context.h"
+#include "pathlab/random_stream.h"
 #include "pathlab/ray_counters.h"
 #include "pathlab/ray_log.h"
 
@@ -29,12 +30,30 @@ public:
     /// What pathTrace is given.
     PathContext& context() { return ctx_; }
 
+    /// Where the random numbers of a pixel's sample 0 begin: a hash of the seed and the pixel,
+    /// made once per pixel. Sample k's begin SampleStride·k further on.
+    static uint64_t pixelStreamStart(uint64_t seed, uint64_t pixelIndex) {
+        return mix64(mix64(seed) ^ pixelIndex);
+    }
+    /// How far apart one pixel's samples start: 2^32 draws, more than any path takes, so their
+    /// numbers never overlap.
+    static constexpr uint64_t SampleStride = StreamGamma << 32;
     /// The random numbers of one sample of one pixel, the same wherever and whenever it is
     /// rendered.
-    static Sampler samplerFor(uint64_t seed, uint64_t pixelIndex, uint64_t sampleIndex);
+    static Sampler samplerFor(uint64_t seed, uint64_t pixelIndex, uint64_t sampleIndex) {
+        return samplerAt(pixelStreamStart(seed, pixelIndex), sampleIndex);
+    }
+    /// The same, from the pixel's pixelStreamStart: what a sample costs is this add.
+    static Sampler samplerAt(uint64_t pixelStart, uint64_t sampleIndex) {
+        return Sampler(RandomStream(pixelStart + sampleIndex * SampleStride));
+    }
     /// Restarts the context's random numbers for one sample of one pixel.
     void startSample(uint64_t seed, uint64_t pixelIndex, uint64_t sampleIndex) {
         restoreSampler(samplerFor(seed, pixelIndex, sampleIndex));
+    }
+    /// The same, from the pixel's pixelStreamStart.
+    void startSampleAt(uint64_t pixelStart, uint64_t sampleIndex) {
+        restoreSampler(samplerAt(pixelStart, sampleIndex));
     }
     /// The context's random numbers where they are now, to take up again with restoreSampler.
     Sampler savedSampler() const { return ctx_.sampler; }

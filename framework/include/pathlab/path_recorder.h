@@ -5,7 +5,7 @@
 
 #include "pathlab/color.h"
 #include "pathlab/hit.h"
-#include "pathlab/pcg32.h"
+#include "pathlab/random_stream.h"
 #include "pathlab/ray.h"
 #include "pathlab/ray_log.h"
 #include "pathlab/sampler.h"
@@ -82,7 +82,7 @@ private:
     int vertexOf(const Hit& hit) const;
 
     PathProbe probe_;
-    Pcg32 stream_; ///< where the lab's random numbers stood at the last call
+    RandomStream stream_; ///< where the lab's random numbers stood at the last call
     std::vector<PathEvent> events_;
     std::vector<Ray> rays_;
     std::vector<Hit> hits_;

@@ -1,19 +1,12 @@
 #pragma once
 /// PCG32 (O'Neill, "PCG: A Family of Simple Fast Space-Efficient Statistically Good Algorithms
 /// for Random Number Generation", 2014): 64-bit state, 32-bit output, 2^63 selectable streams.
+/// The tests' own generator, independent of the one the renderer hands a lab
+/// (random_stream.h), so that a test's inputs share no structure with what it tests.
 
 #include <cstdint>
 
 namespace pathlab {
-
-/// Mixes a 64-bit value into a well-distributed one (SplitMix64's finaliser). Used to turn
-/// (seed, pixel, sample) into a PCG32 state and stream so neighbouring inputs are unrelated.
-constexpr uint64_t mix64(uint64_t z) {
-    z += 0x9e3779b97f4a7c15ull;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
 
 class Pcg32 {
 public:

@@ -1,7 +1,7 @@
 #pragma once
 /// The random numbers one path uses, deterministic per (seed, pixel, sample).
 
-#include "pathlab/pcg32.h"
+#include "pathlab/random_stream.h"
 #include "pathlab/vec3.h"
 
 namespace pathlab {
@@ -26,8 +26,8 @@ public:
 private:
     friend class PathDriver;
     friend class PathRecorder; // reads where the stream stands, to count a lab's draws
-    explicit Sampler(const Pcg32& rng) : rng_(rng) {}
-    Pcg32 rng_;
+    explicit Sampler(const RandomStream& rng) : rng_(rng) {}
+    RandomStream rng_;
 };
 
 } // namespace pathlab
