@@ -45,7 +45,11 @@ std::string wentOn(const InspectedVertex& v) {
         const bool below = v.roulette->draw < v.roulette->continueProb;
         text += std::string(text.empty() ? "" : " ") + "(roulette " + number(v.roulette->draw) +
                 (below ? " < " : " >= ") + number(v.roulette->continueProb) + ")";
-        if (below != v.roulette->wentOn)
+        // A surface that scatters nothing (a light's, all of Kd, Ks and Kt black) ends the path
+        // whatever the draw said.
+        const Material& m = v.material;
+        const bool canScatter = !isBlack(m.Kd) || !isBlack(m.Ks) || !isBlack(m.Kt);
+        if (below != v.roulette->wentOn && (canScatter || !below))
             text += below ? " ENDED although the draw is below continueProb"
                           : " WENT ON although the draw is not below continueProb";
     }

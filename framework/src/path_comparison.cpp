@@ -57,6 +57,9 @@ private:
             const InspectedCall& a = ours_.calls[i];
             const InspectedCall& b = theirs_.calls[i];
             if (a.type != b.type) return differentCall(a, b, at);
+            if (a.type == "end" && lab_.usesRoulette && a.drawsBefore.empty() &&
+                !b.drawsBefore.empty())
+                return endedWithoutRouletteDraw(at);
             if (a.drawsBefore.size() != b.drawsBefore.size()) {
                 comparable = false;
                 return divergence(at, "draw-order", "",
@@ -99,6 +102,26 @@ private:
         }
         const auto& x = ours_.vertices[static_cast<size_t>(a.vertex)];
         return wentOn(at, x.arrivedBy);
+    }
+
+    /// Both ended their paths at `at`: the lab without a random number, the reference after its
+    /// roulette draw (which said stop). Where the reference went on instead, endedEarly says so.
+    PathDivergence endedWithoutRouletteDraw(int at) {
+        const InspectedVertex* mine = vertex(ours_, at);
+        const int depth = mine ? mine->depth : 0;
+        const std::string where = vertexName(at) + " (depth " + std::to_string(depth) + ")";
+        if (depth >= lab_.maxDepth)
+            return divergence(at, "depth", step(2),
+                              "your path ended at " + where +
+                                  " without a random number, where the reference drew its "
+                                  "roulette number: a depth limit is still there? Lab 4 ends "
+                                  "paths only by roulette (maxDepth is " +
+                                  std::to_string(lab_.maxDepth) + ")");
+        return divergence(at, "roulette", step(2),
+                          "your path ended at " + where +
+                              " without a random number from ctx.sampler, where the reference "
+                              "drew its roulette number: does your roulette draw come from "
+                              "ctx.sampler.get1D()?");
     }
 
     /// The lab ended its path at `at`; the reference sent a `component` ray from there.
