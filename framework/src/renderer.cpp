@@ -5,6 +5,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -12,7 +13,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
-#include <thread>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -30,8 +31,19 @@
 namespace pathlab {
 
 struct Renderer::Arena {
+    /// TBB runs at most as many threads as this process may use (its cores, or fewer when its
+    /// affinity is limited, as a Slurm job's is), however large an arena is asked for: more
+    /// (--threads 8 on 2 cores) must raise that limit for as long as this renderer lives. Only
+    /// raised: a limit below TBB's own would hold back every other renderer alive (TBB keeps the
+    /// smallest limit asked for).
+    std::optional<tbb::global_control> moreThreadsThanCores;
     tbb::task_arena arena;
-    explicit Arena(int threads) : arena(threads) {}
+    explicit Arena(int threads) : arena(threads) {
+        if (static_cast<size_t>(threads) >
+            tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism))
+            moreThreadsThanCores.emplace(tbb::global_control::max_allowed_parallelism,
+                                         static_cast<size_t>(threads));
+    }
 };
 
 namespace {
@@ -93,8 +105,8 @@ private:
 
 Renderer::Renderer(const RenderScene& scene, int threads)
     : scene_(scene),
-      threads_(threads > 0 ? threads
-                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))),
+      // Every core this process may use: TBB's count, which a Slurm job's affinity mask limits.
+      threads_(threads > 0 ? threads : std::max(1, tbb::info::default_concurrency())),
       arena_(std::make_unique<Arena>(threads_)) {
     ensureDeepStacks();
 }
@@ -105,8 +117,9 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
                           PathTraceFunction pathTrace, const LabParameters& parameters,
                           uint64_t seed, int spp, const std::atomic<bool>* cancel, RayLog* log) {
     const int width = buffer.width(), height = buffer.height();
-    const int tilesX = (width + TileSize - 1) / TileSize;
-    const int tilesY = (height + TileSize - 1) / TileSize;
+    const int tileSize = tileSize_;
+    const int tilesX = (width + tileSize - 1) / tileSize;
+    const int tilesY = (height + tileSize - 1) / tileSize;
     const uint64_t firstSample = static_cast<uint64_t>(buffer.samplesPerPixel());
     std::atomic<uint64_t> intersect{0}, occluded{0};
     std::vector<RayLog> tileLogs(log ? static_cast<size_t>(tilesX) * tilesY : 0);
@@ -117,8 +130,8 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
     const auto renderTile = [&](int tile) {
         PathDriver driver(scene_, parameters);
         if (log) driver.recordRaysInto(&tileLogs[static_cast<size_t>(tile)]);
-        const int x0 = (tile % tilesX) * TileSize, y0 = (tile / tilesX) * TileSize;
-        const int x1 = std::min(x0 + TileSize, width), y1 = std::min(y0 + TileSize, height);
+        const int x0 = (tile % tilesX) * tileSize, y0 = (tile / tilesX) * tileSize;
+        const int x1 = std::min(x0 + tileSize, width), y1 = std::min(y0 + tileSize, height);
         // Camera rays go to Embree a packet at a time; each sample's pathTrace then finds its
         // camera ray's hit waiting in the context. Samples keep their order within a pixel, so
         // every pixel's sums add up exactly as one by one.
@@ -148,9 +161,11 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
         for (int y = y0; y < y1; ++y) {
             for (int x = x0; x < x1; ++x) {
                 const int pixel = y * width + x;
+                const uint64_t pixelStart =
+                    PathDriver::pixelStreamStart(seed, static_cast<uint64_t>(pixel));
                 for (int s = 0; s < spp; ++s) {
                     const uint64_t sampleIndex = firstSample + static_cast<uint64_t>(s);
-                    driver.startSample(seed, static_cast<uint64_t>(pixel), sampleIndex);
+                    driver.startSampleAt(pixelStart, sampleIndex);
                     const Vec2 jitter = driver.context().sampler.get2D();
                     packet.rays[packet.count] = camera.generateRay(
                         static_cast<float>(x) + jitter.x, static_cast<float>(y) + jitter.y);

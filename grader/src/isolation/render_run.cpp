@@ -88,9 +88,13 @@ std::string renderSandboxed(const RenderRequest& r, const ProcessLimits& limits,
     run.scratchBytes = 64LL << 20;
     ProcessLimits sandboxLimits = limits;
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    sandboxLimits.cpuSeconds = limits.wallSeconds * (r.threads > 0 ? r.threads : cores);
+    const unsigned threads = r.threads > 0 ? static_cast<unsigned>(r.threads) : cores;
+    sandboxLimits.cpuSeconds = limits.wallSeconds * threads;
     sandboxLimits.fileBytes = 64LL << 20;
-    sandboxLimits.processes = 64;
+    // Threads count as processes: 64 for the viewer's own (bubblewrap, the window-less render
+    // thread, TBB's helpers) beside one per render thread, so a node of 64 cores or more can
+    // render on all of them.
+    sandboxLimits.processes = 64 + threads;
     SandboxOutcome outcome = runInSandbox(run, sandboxLimits, r.runner->sandbox);
     process = outcome.process;
     if (!process.succeeded()) return "";
