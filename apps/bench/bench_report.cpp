@@ -122,6 +122,50 @@ void printMemory(const MemoryFigures& m, std::FILE* out) {
                  m.width, m.height, m.frames, m.peakMiB);
 }
 
+void printScaling(const ScalingFigures& f, std::FILE* out) {
+    std::fprintf(out,
+                 "\nScaling: %s solution on %s, %dx%d, 1 spp per pass as the window renders, "
+                 "fastest of %d passes\n  threads       ",
+                 std::string(labName(f.lab)).c_str(), f.scene.c_str(), f.width, f.height, f.passes);
+    for (const ScalingFigures::Point& p : f.byThreads) std::fprintf(out, "%9d", p.value);
+    std::fprintf(out, "\n  samples/s     ");
+    for (const ScalingFigures::Point& p : f.byThreads)
+        std::fprintf(out, "%9s", millions(p.samplesPerSecond).c_str());
+    std::fprintf(out, "\n  tile size     ");
+    for (const ScalingFigures::Point& p : f.byTileSize) std::fprintf(out, "%9d", p.value);
+    std::fprintf(out, "   (%d threads)\n  tiles         ", f.tileThreads);
+    for (const ScalingFigures::Point& p : f.byTileSize)
+        std::fprintf(out, "%9d",
+                     ((f.width + p.value - 1) / p.value) * ((f.height + p.value - 1) / p.value));
+    std::fprintf(out, "\n  samples/s     ");
+    for (const ScalingFigures::Point& p : f.byTileSize)
+        std::fprintf(out, "%9s", millions(p.samplesPerSecond).c_str());
+    std::fprintf(out,
+                 "\n  the window's hand-off between frames (the image's figures and its copy for "
+                 "display): %.2f ms,\n  %.0f%% of a frame at %d threads; were the passes to scale "
+                 "on, %.0f%% at 16 threads, %.0f%% at 64\n",
+                 f.handOffSeconds * 1e3, 100 * f.handOffShare(f.tileThreads), f.tileThreads,
+                 100 * f.handOffShare(16), 100 * f.handOffShare(64));
+}
+
+json scalingJson(const ScalingFigures& f) {
+    json threads = json::array(), tiles = json::array();
+    for (const ScalingFigures::Point& p : f.byThreads)
+        threads.push_back({{"threads", p.value}, {"samples_per_second", p.samplesPerSecond}});
+    for (const ScalingFigures::Point& p : f.byTileSize)
+        tiles.push_back({{"tile_size", p.value}, {"samples_per_second", p.samplesPerSecond}});
+    return {{"scene", f.scene},
+            {"solution", labName(f.lab)},
+            {"width", f.width},
+            {"height", f.height},
+            {"by_threads", threads},
+            {"tile_threads", f.tileThreads},
+            {"by_tile_size", tiles},
+            {"hand_off_ms", f.handOffSeconds * 1e3},
+            {"hand_off_share", f.handOffShare(f.tileThreads)},
+            {"hand_off_share_at_64_threads", f.handOffShare(64)}};
+}
+
 void printFirstFrame(const FirstFrameLatency& f, std::FILE* out) {
     if (!f.measured) {
         std::fprintf(out, "\nThe viewer's first frame: %s\n", f.note.c_str());
@@ -228,6 +272,7 @@ json memoryJson(const MemoryFigures& m) {
 void printReport(const BenchReport& report, std::FILE* out) {
     for (const SceneFigures& s : report.scenes) printScene(s, out);
     printPeers(report.peers, out);
+    for (const ScalingFigures& f : report.scaling) printScaling(f, out);
     printFirstFrame(report.firstFrame, out);
     printMemory(report.memory, out);
 }
@@ -237,10 +282,13 @@ std::string reportJson(const BenchReport& report) {
     for (const SceneFigures& s : report.scenes) scenes.push_back(sceneJson(s));
     json peers = json::array();
     for (const PeerComparison& c : report.peers) peers.push_back(peerJson(c));
+    json scaling = json::array();
+    for (const ScalingFigures& f : report.scaling) scaling.push_back(scalingJson(f));
     const json document = {{"pathlab_version", PATHLAB_VERSION},
                            {"cores", std::thread::hardware_concurrency()},
                            {"scenes", scenes},
                            {"embree_pathtracer", peers},
+                           {"scaling", scaling},
                            {"first_frame", firstFrameJson(report.firstFrame)},
                            {"memory", memoryJson(report.memory)}};
     return document.dump(2) + "\n";

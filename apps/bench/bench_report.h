@@ -4,6 +4,7 @@
 #include "first_frame.h"
 #include "memory_probe.h"
 #include "peer_comparison.h"
+#include "scaling_measurement.h"
 #include "scene_measurement.h"
 
 #include <cstdio>
@@ -17,9 +18,10 @@ struct BenchReport {
     std::vector<PeerComparison> peers; ///< one per path length
     FirstFrameLatency firstFrame;
     MemoryFigures memory;
+    std::vector<ScalingFigures> scaling; ///< empty with --peer-only
 };
 
-/// One table per scene, then the comparison with Embree's pathtracer and the memory figure.
+/// One table per scene, then the comparison with Embree's pathtracer, scaling and memory.
 void printReport(const BenchReport& report, std::FILE* out);
 
 /// The same figures as one JSON document (rates in per-second units, memory in MiB).

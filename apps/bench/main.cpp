@@ -6,6 +6,7 @@
 #include "first_frame.h"
 #include "memory_probe.h"
 #include "peer_comparison.h"
+#include "scaling_measurement.h"
 #include "scene_measurement.h"
 
 #include "pathlab/input_error.h"
@@ -66,6 +67,10 @@ int runBench(BenchOptions options) {
     report.memory.note = "not measured (--peer-only)";
     report.firstFrame.note = "not measured (--peer-only)";
     if (!options.peerOnly) {
+        std::fprintf(stderr, "bench: scaling ...\n");
+        const SceneSettings settings{options.width,  options.height, 1,
+                                     options.passes, threads,        options.parameters};
+        report.scaling.push_back(measureScaling(scenes.front(), settings, Lab::Roulette, threads));
         report.firstFrame = measureFirstFrame((thisProgram().parent_path() / "viewer").string(),
                                               scenes.front(), options.firstFrameRuns);
         report.memory = measurePeakMemory(thisProgram(), scenes.front(), options);

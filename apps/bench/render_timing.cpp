@@ -7,8 +7,9 @@
 
 namespace pathlab::bench {
 
-RenderTiming timeRender(const RenderJob& job, int spp, int passes, int threads) {
+RenderTiming timeRender(const RenderJob& job, int spp, int passes, int threads, int tileSize) {
     Renderer renderer(job.scene, threads);
+    renderer.setTileSize(tileSize);
     AccumulationBuffer image(job.width, job.height);
     const uint64_t seed = 0;
     renderer.renderPass(image, job.camera, job.pathTrace, job.parameters, seed, spp);

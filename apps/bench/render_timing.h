@@ -34,7 +34,8 @@ struct RenderTiming {
 
 /// One warm-up pass, then `passes` timed passes of `spp` samples per pixel with `threads`
 /// threads, each added to the same image as the viewer's window does; the fastest pass counts.
-RenderTiming timeRender(const RenderJob& job, int spp, int passes, int threads);
+RenderTiming timeRender(const RenderJob& job, int spp, int passes, int threads,
+                        int tileSize = Renderer::TileSize);
 
 /// The rays of one pass of one sample per pixel, in the order they were traced.
 RayLog recordRays(const RenderJob& job, int threads);

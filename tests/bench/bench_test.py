@@ -102,6 +102,21 @@ def smoke(bench):
     elif not first["note"]:
         sys.exit("the first-frame latency was not measured and says not why")
 
+    scaling = report["scaling"]
+    if len(scaling) != 1 or "\nScaling: roulette solution" not in table:
+        sys.exit(f"no scaling figures: {scaling}\n{table}")
+    threads = [p["threads"] for p in scaling[0]["by_threads"]]
+    if threads[:4] != [1, 2, 4, 8]:
+        sys.exit(f"scaling measured at threads {threads}, not 1, 2, 4, 8 (more than this "
+                 "machine's cores included)")
+    if [p["tile_size"] for p in scaling[0]["by_tile_size"]] != [8, 16, 32, 64]:
+        sys.exit(f"tile sizes measured: {scaling[0]['by_tile_size']}")
+    for p in scaling[0]["by_threads"] + scaling[0]["by_tile_size"]:
+        positive(p["samples_per_second"], f"scaling samples/s at {p}")
+    positive(scaling[0]["hand_off_ms"], "the window's hand-off between frames")
+    if not 0 < scaling[0]["hand_off_share"] <= scaling[0]["hand_off_share_at_64_threads"] < 1:
+        sys.exit(f"the hand-off's share should grow with threads: {scaling[0]}")
+
     memory = report["memory"]
     if not memory["measured"]:
         sys.exit(f"peak memory not measured: {memory.get('note')}")
