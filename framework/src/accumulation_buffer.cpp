@@ -1,5 +1,7 @@
 #include "pathlab/accumulation_buffer.h"
 
+#include "parallel_hand_off.h"
+
 #include "pathlab/image_noise.h"
 
 #include <tbb/parallel_for.h>
@@ -85,10 +87,15 @@ size_t AccumulationBuffer::chunkCount() const {
 
 template <typename PerChunk> void AccumulationBuffer::forEachChunk(const PerChunk& perChunk) const {
     const int pixels = static_cast<int>(sum_.size());
+    const char loopStarts = 0, chunksFinished = 0; // their addresses name the hand-offs to TSan
+    releaseTo(&loopStarts);
     tbb::parallel_for(size_t(0), chunkCount(), [&](size_t chunk) {
+        acquireFrom(&loopStarts);
         const int begin = static_cast<int>(chunk * PixelsPerChunk);
         perChunk(chunk, begin, std::min(pixels, begin + PixelsPerChunk));
+        releaseTo(&chunksFinished);
     });
+    acquireFrom(&chunksFinished);
 }
 
 std::vector<float> AccumulationBuffer::meanImage() const {

@@ -1,5 +1,7 @@
 #include "pathlab/renderer.h"
 
+#include "parallel_hand_off.h"
+
 #include "pathlab/camera_packet.h"
 #include "pathlab/path_driver.h"
 
@@ -16,17 +18,6 @@
 #include <optional>
 #include <utility>
 #include <vector>
-
-#if defined(__SANITIZE_THREAD__)
-#define PATHLAB_THREAD_SANITIZER 1
-#elif defined(__has_feature)
-#if __has_feature(thread_sanitizer)
-#define PATHLAB_THREAD_SANITIZER 1
-#endif
-#endif
-#ifdef PATHLAB_THREAD_SANITIZER
-#include <sanitizer/tsan_interface.h>
-#endif
 
 namespace pathlab {
 
@@ -52,22 +43,6 @@ namespace {
 /// furnace can go hundreds deep, more than TBB's default worker stack allows.
 void ensureDeepStacks() {
     static tbb::global_control stack(tbb::global_control::thread_stack_size, 16u << 20);
-}
-
-/// What TBB guarantees a parallel_for, told to ThreadSanitizer: everything before it happens
-/// before each tile, and each tile before everything after it. TBB hands tiles to its workers
-/// and back inside libtbb, which is not instrumented, so TSan would otherwise take every read of
-/// the pass's state by a worker for a race. Nothing is said between tiles: a race between two
-/// tiles is still reported. Without TSan these are nothing.
-void releaseTo([[maybe_unused]] const void* handOff) {
-#ifdef PATHLAB_THREAD_SANITIZER
-    __tsan_release(const_cast<void*>(handOff));
-#endif
-}
-void acquireFrom([[maybe_unused]] const void* handOff) {
-#ifdef PATHLAB_THREAD_SANITIZER
-    __tsan_acquire(const_cast<void*>(handOff));
-#endif
 }
 
 /// Samples a tile finishes before it adds them to the renderer's progress: a fraction of a

@@ -71,11 +71,8 @@ TEST_CASE("8 threads on any machine: all render at once, and the image is the se
     INFO("this machine has " << std::thread::hardware_concurrency() << " hardware threads");
     CHECK(eight.mostInside == 8);
     REQUIRE(eight.samples.size() == 8);
-    // 64 tiles of 1024 samples among 8 threads: each took some, none took nearly all.
-    for (const auto& [thread, samples] : eight.samples) {
-        CHECK(samples >= 1024);
-        CHECK(samples <= 128 * 128 * 4 / 2);
-    }
+    // Each thread went on with the tile its first sample was in: 16x16 pixels of 4 samples.
+    for (const auto& [thread, samples] : eight.samples) CHECK(samples >= 1024);
     REQUIRE(single.size() == oversubscribed.size());
     CHECK(std::memcmp(single.data(), oversubscribed.data(), single.size() * sizeof(float)) == 0);
 }
