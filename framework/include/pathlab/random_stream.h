@@ -38,7 +38,6 @@ public:
     /// Where the stream stands (the path inspector counts a lab's draws between two calls by
     /// stepping one copy until it meets the other).
     bool operator==(const RandomStream& other) const { return position_ == other.position_; }
-    uint64_t position() const { return position_; }
 
 private:
     uint64_t position_;
