@@ -66,7 +66,8 @@ std::string wentOn(const InspectedVertex& v) {
 std::string depthNote(const InspectedVertex& v, const PixelInspection& inspection) {
     if (inspection.usesRoulette)
         return !v.roulette && v.continuedBy.empty()
-                   ? " ENDED without a random number drawn (a depth limit?)"
+                   ? " ENDED without a random number drawn (its roulette not written yet, or a "
+                     "depth limit kept?)"
                    : "";
     if (v.depth < inspection.maxDepth || v.continuedBy.empty()) return "";
     return " WENT ON from depth " + std::to_string(v.depth) + " = maxDepth";
