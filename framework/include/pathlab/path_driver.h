@@ -43,7 +43,7 @@ public:
     static Sampler samplerFor(uint64_t seed, uint64_t pixelIndex, uint64_t sampleIndex) {
         return samplerAt(pixelStreamStart(seed, pixelIndex), sampleIndex);
     }
-    /// The same, from the pixel's pixelStreamStart: what a sample costs is this add.
+    /// The same, from the pixel's pixelStreamStart: all a sample costs is this multiply-add.
     static Sampler samplerAt(uint64_t pixelStart, uint64_t sampleIndex) {
         return Sampler(RandomStream(pixelStart + sampleIndex * SampleStride));
     }
