@@ -11,13 +11,13 @@
 
 #include "pathlab/input_error.h"
 #include "pathlab/program_main.h"
+#include "pathlab/renderer.h"
 #include "pathlab/render_stats.h"
 #include "pathlab/this_process.h"
 #include "pathlab/whole_file.h"
 
 #include <cstdio>
 #include <filesystem>
-#include <thread>
 
 namespace {
 
@@ -47,9 +47,7 @@ std::vector<BenchScene> scenesToMeasure(const BenchOptions& options) {
 int runBench(BenchOptions options) {
     const std::vector<BenchScene> scenes = scenesToMeasure(options);
     if (options.memoryProbe) return runMemoryProbe(scenes.front(), options);
-    const int threads = options.threads > 0
-                            ? options.threads
-                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int threads = options.threads > 0 ? options.threads : Renderer::defaultThreads();
     if (!options.jsonFile.empty()) checkWritable(options.jsonFile);
 
     BenchReport report;

@@ -4,8 +4,6 @@
 #include "embree_pathtracer.h"
 #include "render_timing.h"
 
-#include "runner/lab_tables.h"
-
 #include "process/child_process.h"
 
 #include "pathlab/accumulation_buffer.h"
@@ -64,13 +62,10 @@ PeerComparison comparePeer(const BenchOptions& options, int threads, int pathLen
     const PathtracerJob embree{program, scene, c.width, c.height, c.maxPathLength, threads};
 
     const RenderScene ours(loadScene(renderOptionsFor(scene, c.width, c.height)));
-    const Camera camera(ours.scene().camera.value_or(ours.scene().framingCamera()), c.width,
-                        c.height);
+    const Camera camera = sceneCamera(ours, c.width, c.height);
     LabParameters parameters = options.parameters;
     parameters.maxDepth = pathLength - 1;
-    const RenderJob job{
-        ours,       camera,  findPathTrace(Lab::Importance, Implementation::Solution),
-        parameters, c.width, c.height};
+    const RenderJob job = solutionJob(ours, camera, Lab::Importance, parameters, c.width, c.height);
     // The two in turn, a few rounds, the fastest of each: a busy moment of the machine then
     // slows one round of one of them, not the ratio.
     for (int round = 0; round < c.rounds; ++round) {

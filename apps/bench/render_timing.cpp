@@ -1,11 +1,22 @@
 #include "render_timing.h"
 
+#include "runner/lab_tables.h"
+
 #include "pathlab/accumulation_buffer.h"
 #include "pathlab/renderer.h"
 
 #include <chrono>
 
 namespace pathlab::bench {
+
+Camera sceneCamera(const RenderScene& scene, int width, int height) {
+    return Camera(scene.scene().camera.value_or(scene.scene().framingCamera()), width, height);
+}
+
+RenderJob solutionJob(const RenderScene& scene, const Camera& camera, Lab lab,
+                      const LabParameters& parameters, int width, int height) {
+    return {scene, camera, findPathTrace(lab, Implementation::Solution), parameters, width, height};
+}
 
 RenderTiming timeRender(const RenderJob& job, int spp, int passes, int threads, int tileSize) {
     Renderer renderer(job.scene, threads);

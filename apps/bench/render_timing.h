@@ -20,6 +20,13 @@ struct RenderJob {
     int width, height;
 };
 
+/// The camera a scene is measured through: its own, or the one the viewer frames the model with.
+Camera sceneCamera(const RenderScene& scene, int width, int height);
+
+/// A reference solution's render of `scene` through `camera`.
+RenderJob solutionJob(const RenderScene& scene, const Camera& camera, Lab lab,
+                      const LabParameters& parameters, int width, int height);
+
 /// The fastest timed pass.
 struct RenderTiming {
     double seconds = 0;    ///< of that pass

@@ -1,7 +1,5 @@
 #include "scaling_measurement.h"
 
-#include "runner/lab_tables.h"
-
 #include "pathlab/accumulation_buffer.h"
 #include "pathlab/render_options.h"
 
@@ -45,14 +43,9 @@ ScalingFigures measureScaling(const BenchScene& benchScene, const SceneSettings&
                               int cores) {
     const RenderOptions options = renderOptionsFor(benchScene, settings.width, settings.height);
     const RenderScene scene(loadScene(options));
-    const Camera camera(scene.scene().camera.value_or(scene.scene().framingCamera()),
-                        settings.width, settings.height);
-    const RenderJob job{scene,
-                        camera,
-                        findPathTrace(lab, Implementation::Solution),
-                        settings.parameters,
-                        settings.width,
-                        settings.height};
+    const Camera camera = sceneCamera(scene, settings.width, settings.height);
+    const RenderJob job =
+        solutionJob(scene, camera, lab, settings.parameters, settings.width, settings.height);
 
     ScalingFigures f;
     f.scene = benchScene.name;

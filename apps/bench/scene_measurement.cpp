@@ -1,7 +1,5 @@
 #include "scene_measurement.h"
 
-#include "runner/lab_tables.h"
-
 #include "pathlab/render_options.h"
 
 namespace pathlab::bench {
@@ -28,20 +26,15 @@ TraversalTimes SceneFigures::rawOneThread() const {
 SceneFigures measureScene(const BenchScene& benchScene, const SceneSettings& settings) {
     const RenderOptions options = renderOptionsFor(benchScene, settings.width, settings.height);
     const RenderScene scene(loadScene(options));
-    const Camera camera(scene.scene().camera.value_or(scene.scene().framingCamera()),
-                        settings.width, settings.height);
+    const Camera camera = sceneCamera(scene, settings.width, settings.height);
 
     SceneFigures figures;
     figures.name = benchScene.name;
     figures.triangles = scene.scene().triangles.size();
     figures.settings = settings;
     for (Lab lab : AllLabs) {
-        const RenderJob job{scene,
-                            camera,
-                            findPathTrace(lab, Implementation::Solution),
-                            settings.parameters,
-                            settings.width,
-                            settings.height};
+        const RenderJob job =
+            solutionJob(scene, camera, lab, settings.parameters, settings.width, settings.height);
         SolutionFigures s{lab, {}, {}, {}, {}};
         s.render = timeRender(job, settings.spp, settings.passes, settings.threads);
         s.renderOneThread = timeRender(job, settings.spp, settings.passes, 1);

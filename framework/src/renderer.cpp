@@ -79,14 +79,14 @@ private:
 } // namespace
 
 Renderer::Renderer(const RenderScene& scene, int threads)
-    : scene_(scene),
-      // Every core this process may use: TBB's count, which a Slurm job's affinity mask limits.
-      threads_(threads > 0 ? threads : std::max(1, tbb::info::default_concurrency())),
+    : scene_(scene), threads_(threads > 0 ? threads : defaultThreads()),
       arena_(std::make_unique<Arena>(threads_)) {
     ensureDeepStacks();
 }
 
 Renderer::~Renderer() = default;
+
+int Renderer::defaultThreads() { return std::max(1, tbb::info::default_concurrency()); }
 
 bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
                           PathTraceFunction pathTrace, const LabParameters& parameters,

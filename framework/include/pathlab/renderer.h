@@ -28,8 +28,10 @@ using PathTraceFunction = Color (*)(const Ray& ray, int depth, PathContext& ctx)
 /// not depend on the number of threads or the order tiles run in.
 class Renderer {
 public:
-    /// `threads` = 0 uses every core.
+    /// `threads` = 0 uses defaultThreads().
     Renderer(const RenderScene& scene, int threads);
+    /// Every core this process may use: TBB's count, which a Slurm job's affinity mask limits.
+    static int defaultThreads();
     ~Renderer();
 
     /// Adds `spp` samples to every pixel of `buffer`, traced with `pathTrace`. If `cancel` is
