@@ -87,7 +87,9 @@ size_t AccumulationBuffer::chunkCount() const {
 
 template <typename PerChunk> void AccumulationBuffer::forEachChunk(const PerChunk& perChunk) const {
     const int pixels = static_cast<int>(sum_.size());
-    const char loopStarts = 0, chunksFinished = 0; // their addresses name the hand-offs to TSan
+    // Their addresses name the hand-offs to TSan; static, so that a task names them without
+    // reading the loop's closure (parallel_hand_off.h).
+    static const char loopStarts = 0, chunksFinished = 0;
     releaseTo(&loopStarts);
     tbb::parallel_for(size_t(0), chunkCount(), [&](size_t chunk) {
         acquireFrom(&loopStarts);

@@ -6,6 +6,13 @@
 /// frame's hand-off) for a race. Nothing is said between tasks: a race between two tiles is
 /// still reported. Without TSan these are nothing. (Private to the framework: the renderer and
 /// the accumulation buffer use it.)
+///
+/// A hand-off is named by the address of a static object of the loop's function. A task must
+/// name it before it has acquired anything, so not through the loop's closure: the closure lives
+/// on the starting thread's stack, and a worker's read of it, unordered for TSan, raced with
+/// whatever that thread had put at the same address before (seen now and then in a headless
+/// render's image passes). Calls of the same loop on two threads at once share the name, which
+/// can only hide a race between them, never report one that is not there.
 
 #if defined(__SANITIZE_THREAD__)
 #define PATHLAB_THREAD_SANITIZER 1

@@ -100,7 +100,9 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
     std::vector<RayLog> tileLogs(log ? static_cast<size_t>(tilesX) * tilesY : 0);
     FirstNonfiniteSample nonfinite;
     FirstFailure failure;
-    const char passStarts = 0, tilesFinished = 0; // their addresses name the hand-offs to TSan
+    // Their addresses name the hand-offs to TSan; static, so that a task names them without
+    // reading the loop's closure (parallel_hand_off.h).
+    static const char passStarts = 0, tilesFinished = 0;
 
     const auto renderTile = [&](int tile) {
         PathDriver driver(scene_, parameters);
