@@ -35,8 +35,11 @@ def check(condition, what):
 
 def exit_code(label="", seconds=None):
     """1 if a check failed, else 0, after a line saying how many failed (and how long it took,
-    if `seconds` is given)."""
+    if `seconds` is given). The failed checks are said again above that line: a log shown only
+    by its end (CI's summary, a test run inside another) still shows what failed."""
     took = f" in {seconds:.0f} s" if seconds is not None else ""
+    for what in failures:
+        print("FAILED: " + what)
     print(f"{label}{len(failures)} check(s) failed{took}")
     return 1 if failures else 0
 
