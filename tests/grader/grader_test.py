@@ -4,6 +4,11 @@ pass every check; the lab stubs fail with a diagnosis; every mutant in mutants.j
 the intended check with the intended words (or passes it: a lab that differs from the solutions
 without a bug, or one graded under a rubric of its own); the report formats are well formed.
 
+--part timed runs the gradings whose verdict rests on the frame-rate check (the solutions, and
+the mutants judged by their speed), which nothing may run beside (ctest `grader.checks`);
+--part untimed the rest (the stubs, and the mutants judged with --no-speed), which can share the
+machine (ctest `grader.mutants`). Without --part, both.
+
 --slow adds the mutants that need the frame-rate check and a false-fail validation: 200
 gradings of the solutions' correctness and noise with distinct seeds, which should all pass
 (each correctness check has a family-wise false-fail rate <= 1e-3 before its retry on fresh
@@ -17,7 +22,8 @@ import xml.etree.ElementTree as ET
 
 from support import LABS, arguments, check, finish, grader
 
-args = arguments((["--slow"], {"action": "store_true"}))
+args = arguments((["--slow"], {"action": "store_true"}),
+                 (["--part"], {"choices": ("timed", "untimed")}))
 GRADER = grader(args)
 
 
@@ -132,10 +138,11 @@ def rubric_with(tmp, name, base, changes):
     return path
 
 
-def mutants(tmp, slow):
+def mutants(tmp, slow, timed=(True, False)):
     """Each entry of mutants.json: the check that `fails` (or `passes`: a correct lab unlike the
     solutions, or one under a rubric of its own) and the words the feedback must contain (`says`: one string or several). An entry
-    may grade another entry's lab (`mutant`) under a changed rubric (`rubric`)."""
+    may grade another entry's lab (`mutant`) under a changed rubric (`rubric`). `timed`: the
+    entries judged by the speed check (True), the others (False), or both."""
     table = json.load(open(os.path.join(args.source, "tests", "grader", "mutants.json")))["mutants"]
     rubric = fast_rubric(tmp)
     rows = []
@@ -144,6 +151,8 @@ def mutants(tmp, slow):
         if m.get("slow", False) != slow:
             continue
         target_name = m.get("fails") or m.get("passes")
+        if (target_name == "speed") not in timed:
+            continue
         should_pass = "passes" in m
         mutant_rubric = rubric_with(tmp, name, rubric, m["rubric"]) if "rubric" in m else rubric
         extra = ["--lab", m["lab"], "--rubric", mutant_rubric]
@@ -198,7 +207,10 @@ with tempfile.TemporaryDirectory() as tmp:
         mutants(tmp, slow=True)
         false_fail_validation(tmp)
     else:
-        solutions_pass(tmp)
-        stubs_fail(tmp)
-        mutants(tmp, slow=False)
+        if args.part != "untimed":
+            solutions_pass(tmp)
+            mutants(tmp, slow=False, timed=(True,))
+        if args.part != "timed":
+            stubs_fail(tmp)
+            mutants(tmp, slow=False, timed=(False,))
 finish()

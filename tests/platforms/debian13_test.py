@@ -16,7 +16,8 @@ What it proves, each phase timed:
    handouts, the window under Xvfb), the lab tests against mutants, the benchmark and its
    agreement with Embree's own pathtracer. LEFT_OUT lists the tests not run there, and why.
 5. The grader's batch grading of a class, hostile submissions included, in its bubblewrap
-   sandbox: grader.batch's test with --class-only, after ctest, alone (it times renders).
+   sandbox: grader.batch's test with --class-only, after ctest (its timed renders beside no
+   other test of the root's).
 
 The root is entered through enter_root.sh: every mount is made in namespaces of the test's own
 and vanishes with them, so none is ever left below the build folder, even when the test fails,
@@ -52,12 +53,15 @@ LEFT_OUT = {
                "and tests are those run here, minus the solutions",
     "gradescope": "builds the Gradescope autograder afresh, 4 minutes; its sandbox is the one "
                   "grader.batch uses here",
-    "grader.checks": "3 minutes, and its speed check of the solutions' branching lab fails "
+    "grader.checks": "the gradings judged by their speed, and its speed check of the solutions' branching lab fails "
                      "now and then on this 2-core machine, on Debian 12 as on 13 (0.60 times "
                      "the reference, at least 0.75): 0.3 s of timed rendering after the "
                      "start-up is subtracted, against 0.1 to 0.5 s of jitter per run; the "
                      "grader's checks run here in grader.batch, on correct, buggy and hostile "
                      "submissions",
+    "grader.mutants": "the grader's verdicts on the stubs and each mutant, 3 minutes; the grader "
+                      "is the same code on every system, and the class graded here in "
+                      "grader.batch has correct, buggy and hostile submissions",
     "grader.batch": "run after ctest on its own, with --class-only: the class graded once in the "
                     "sandbox, each verdict and each hostile submission checked; it leaves out the "
                     "batch run again, killed and restarted, and sharded, which are the grader's "
