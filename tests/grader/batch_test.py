@@ -146,13 +146,16 @@ def make_class(root, outside, port):
 
 # The reference solutions with shared state their images never use: a global counter, and a
 # function-local static that every thread reads and writes. The line of each race, as feedback
-# names it, is the line holding the marker comment.
+# names it, is the line holding the marker comment. Each races on every call: a race over
+# before TBB's second thread joins the render, such as a running maximum of the depth (written
+# only while it grows, in the first samples), is one the race check cannot see, as
+# docs/instructor-guide.md says; under CI's load such a lab here went unnoticed.
 RACES = {
     "uniform": ("Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {\n",
                 "int samplesTraced = 0;\n\n", "    ++samplesTraced; // RACE\n", "samplesTraced"),
     "importance": ("Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {\n", "",
-                   "    static int deepest = 0;\n    if (depth > deepest) deepest = depth; // RACE\n",
-                   "deepest"),
+                   "    static long callsSoFar = 0;\n    ++callsSoFar; // RACE\n",
+                   "callsSoFar"),
 }
 
 
