@@ -2,7 +2,9 @@
 # (vcpkg, Homebrew, Debian ships most of them too), pkg-config second (Dear ImGui on Debian and
 # Ubuntu), a source folder last (Dear ImGui and tinyobjloader where no package has them).
 # Each ends as one target the rest of the build links: embree, OpenImageIO::OpenImageIO,
-# TBB::tbb, pathlab_tinyobjloader, nlohmann_json::nlohmann_json, glfw, OpenGL::GL, pathlab_imgui.
+# TBB::tbb, pathlab_tinyobjloader, nlohmann_json::nlohmann_json, glfw, OpenGL::GL, pathlab_imgui,
+# Boost::headers (Boost.Math's distributions, header-only: the grader's and the tests' p-values
+# and quantiles).
 include(${CMAKE_CURRENT_LIST_DIR}/drop_missing_include_dirs.cmake)
 
 # Embree 3 on Debian 12, Embree 4 on Debian 13, Ubuntu 24.04, Homebrew and vcpkg; embree_api.h
@@ -32,6 +34,7 @@ find_package(nlohmann_json REQUIRED)
 find_package(Threads REQUIRED)
 find_package(glfw3 3.3 REQUIRED)
 find_package(OpenGL REQUIRED)
+find_package(Boost 1.71 REQUIRED)
 
 # tinyobjloader: its package's library, or its one header compiled here. The header is the way
 # when the library was built against another C++ standard library than this build's (the clang

@@ -15,6 +15,7 @@ apt_packages=(
     libtbb-dev                          # threads
     libtinyobjloader-dev                # OBJ/MTL
     nlohmann-json3-dev                  # stats and grader JSON
+    libboost-math-dev                   # the grader's and the tests' distributions (Boost.Math)
     libglfw3-dev libgl-dev libimgui-dev # the window
     catch2                              # tests
     xvfb xdotool                        # tests of the window without a screen
@@ -40,7 +41,7 @@ fi
 # ---- macOS (Homebrew) -------------------------------------------------------------------------
 # Homebrew has no Dear ImGui and no tinyobjloader: a release of each goes in third_party/, where
 # CMake finds them (cmake/dependencies.cmake).
-brew_packages=(cmake ninja pkg-config python embree openimageio tbb nlohmann-json glfw catch2)
+brew_packages=(cmake ninja pkg-config python embree openimageio tbb nlohmann-json glfw catch2 boost)
 imgui_release=v1.90.9
 tinyobjloader_release=v2.0.0rc13
 

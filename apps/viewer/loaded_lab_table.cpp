@@ -1,7 +1,7 @@
 // The student labs of the submission viewer (viewer-submission): not linked in, but loaded from
 // the shared library that `grader batch` compiled from a submission, named by the environment
 // variable PATHLAB_LABS_LIBRARY. Before the library's first line runs, the process loses the
-// right to start processes or programs (no_new_processes.h).
+// right to start processes or programs (no_new_processes.h), and ignores SIGPIPE.
 #include "no_new_processes.h"
 
 #include "runner/lab_tables.h"
@@ -9,6 +9,7 @@
 #include "pathlab/input_error.h"
 #include "pathlab/this_process.h"
 
+#include <csignal>
 #include <cstdlib>
 #include <string>
 
@@ -22,6 +23,9 @@ LabTable load() {
         throw InputError("PATHLAB_LABS_LIBRARY is not set: this viewer runs a submission's labs, "
                          "compiled into a shared library by `grader batch`");
     forbidNewProcesses();
+    // The grader stops reading a render's output past a limit: a lab that prints on then gets
+    // EPIPE, not a signal that ends the render.
+    std::signal(SIGPIPE, SIG_IGN);
     std::string why;
     using Entry = const LabTable* (*)();
     const auto entry = reinterpret_cast<Entry>(findLibrarySymbol(path, "pathlab_lab_table", why));

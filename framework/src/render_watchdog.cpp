@@ -10,8 +10,9 @@
 namespace pathlab {
 
 RenderWatchdog::RenderWatchdog(const RenderProgress& progress, double seconds,
-                               std::function<WatchedLab()> watchedLab)
-    : progress_(progress), seconds_(seconds), watchedLab_(std::move(watchedLab)) {
+                               std::function<WatchedLab()> watchedLab, bool fromStart)
+    : progress_(progress), seconds_(seconds), fromStart_(fromStart),
+      watchedLab_(std::move(watchedLab)) {
     if (seconds_ > 0) thread_ = std::thread([this] { watch(); });
 }
 
@@ -51,7 +52,8 @@ void RenderWatchdog::watch() {
     std::unique_lock<std::mutex> lock(mutex_);
     while (!wake_.wait_for(lock, tickDuration, [this] { return stopping_; })) {
         const uint64_t count = progress_.samplesFinished();
-        if (count != lastCount || !progress_.passRunning()) {
+        const bool watched = progress_.passRunning() || (fromStart_ && count == 0);
+        if (count != lastCount || !watched) {
             lastCount = count;
             stillFor = 0;
             continue;

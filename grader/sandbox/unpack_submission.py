@@ -5,7 +5,8 @@ nothing else, to the scratch folder.
     unpack_submission.py SUBMISSION MAX_BYTES
 
 SUBMISSION is a folder, a .zip, a .tar.gz/.tgz/.tar, or a git repository (a folder holding
-.git, or a bare repository): for a repository, the files of its HEAD commit. Only regular files
+.git, or a bare repository): for a repository, the files of its HEAD commit, read as blobs
+from its object store (GitObjects: none of its configuration, attributes, filters or hooks). Only regular files
 named branching.cpp, uniform.cpp, importance.cpp or roulette.cpp are taken, each at most
 MAX_BYTES; symbolic links, devices and everything else are skipped and never followed. Where a
 name occurs more than once, the copy in a folder named `labs` wins, then the shallowest; two
@@ -14,9 +15,9 @@ equally good copies are ambiguous and neither is taken.
 Writes the files taken to ./NAME and a report to ./intake.json:
     {"kind": "...", "taken": {name: path}, "problems": ["..."]}
 """
-import io
 import json
 import os
+import re
 import stat
 import subprocess
 import sys
@@ -127,27 +128,111 @@ def from_tar(fileobj, candidates):
         return candidates.choose()
 
 
-def git_head_tar(repository):
-    """The files of HEAD as a tar stream, read by git without running anything of the repo's."""
-    git_dir = os.path.join(repository, ".git") if os.path.isdir(os.path.join(repository, ".git")) else repository
-    run = subprocess.run(["git", "-c", "core.fsmonitor=false", "-c", "safe.directory=*",
-                          "--git-dir", git_dir, "archive", "--format=tar", "HEAD"],
-                         capture_output=True, timeout=60)
-    if run.returncode != 0:
-        raise ValueError("git could not read its HEAD commit: " + run.stderr.decode(errors="replace").strip()[:200])
-    return io.BytesIO(run.stdout)
+GIT_OBJECT_ID = re.compile(r"[0-9a-f]{40}([0-9a-f]{24})?")
 
 
-def git_head_commit(repository):
-    """HEAD's commit hash and its committer time (seconds since 1970), as git reads them."""
-    git_dir = os.path.join(repository, ".git") if os.path.isdir(os.path.join(repository, ".git")) else repository
-    run = subprocess.run(["git", "-c", "core.fsmonitor=false", "-c", "safe.directory=*",
-                          "--git-dir", git_dir, "log", "-1", "--format=%H %ct", "HEAD"],
-                         capture_output=True, timeout=60)
-    words = run.stdout.decode(errors="replace").split()
-    if run.returncode != 0 or len(words) != 2:
-        return "", None
-    return words[0], int(words[1])
+def git_dir_of(repository):
+    """The repository's git folder: its .git, or the repository itself when bare."""
+    dot_git = os.path.join(repository, ".git")
+    if os.path.isdir(dot_git) and not os.path.islink(dot_git):
+        return dot_git
+    if os.path.lexists(dot_git):
+        raise ValueError(".git is not a folder (a worktree or a submodule points elsewhere): "
+                         "submit the repository itself")
+    return repository
+
+
+def read_small(path, limit=65536):
+    """A file's text, never through a link; None if there is none."""
+    try:
+        with open(path, "rb", opener=lambda p, f: os.open(p, f | os.O_NOFOLLOW)) as f:
+            return f.read(limit).decode("utf-8", errors="replace")
+    except OSError:
+        return None
+
+
+def resolve_head(git_dir):
+    """HEAD's commit, read from the repository's files as git would (a symbolic ref, a loose ref
+    or packed-refs): no git command runs in the submission's repository."""
+    name = "HEAD"
+    for _ in range(5):
+        text = read_small(os.path.join(git_dir, name))
+        if text is None and name.startswith("refs/"):
+            for line in (read_small(os.path.join(git_dir, "packed-refs"), 16 << 20) or "").splitlines():
+                words = line.split()
+                if len(words) == 2 and words[1] == name:
+                    text = words[0]
+                    break
+        if text is None:
+            raise ValueError(f"git could not read its HEAD commit: {name} is missing")
+        text = text.strip()
+        if text.startswith("ref: "):
+            name = text[5:].strip()
+            if not name.startswith("refs/") or ".." in name.split("/"):
+                raise ValueError(f"git could not read its HEAD commit: HEAD names '{name}'")
+            continue
+        if GIT_OBJECT_ID.fullmatch(text):
+            return text
+        raise ValueError(f"git could not read its HEAD commit: {name} holds '{text[:60]}'")
+    raise ValueError("git could not read its HEAD commit: symbolic references go round")
+
+
+class GitObjects:
+    """The objects of a submission's repository, read by git as plain data: git runs in a fresh,
+    empty repository of our own whose object store is the submission's, so that nothing of the
+    submission's configuration, attributes, filters or hooks is read, let alone run."""
+
+    def __init__(self, repository):
+        self.git_dir = git_dir_of(repository)
+        own = os.path.abspath("git-reader")
+        for folder in ("objects", "refs"):
+            os.makedirs(os.path.join(own, folder), exist_ok=True)
+        with open(os.path.join(own, "HEAD"), "w") as f:
+            f.write("ref: refs/heads/none\n")
+        self.environment = {"PATH": os.environ.get("PATH", "/usr/bin:/bin"), "HOME": os.getcwd(),
+                            "GIT_DIR": own,
+                            "GIT_OBJECT_DIRECTORY": os.path.join(self.git_dir, "objects"),
+                            "GIT_CONFIG_NOSYSTEM": "1", "GIT_CONFIG_GLOBAL": os.devnull,
+                            "GIT_ATTR_NOSYSTEM": "1", "GIT_NO_REPLACE_OBJECTS": "1",
+                            "GIT_TERMINAL_PROMPT": "0", "LC_ALL": "C"}
+
+    def git(self, *arguments):
+        run = subprocess.run(["git", *arguments], capture_output=True, timeout=60, env=self.environment)
+        if run.returncode != 0:
+            raise ValueError("git could not read the repository: "
+                             + run.stderr.decode(errors="replace").strip()[:200])
+        return run.stdout
+
+    def head_files(self, candidates):
+        """Offers every file of HEAD's tree to `candidates`, each read as a blob (no filter)."""
+        commit = resolve_head(self.git_dir)
+        listing = self.git("ls-tree", "-r", "-l", "-z", "--full-tree", commit)
+        for i, entry in enumerate(listing.split(b"\0")):
+            if not entry:
+                continue
+            if i >= MAX_ENTRIES:
+                candidates.problems.append(f"more than {MAX_ENTRIES} files: the rest were not looked at")
+                break
+            meta, _, path = entry.partition(b"\t")
+            mode, kind, object_id, size = meta.split()
+            regular = kind == b"blob" and mode in (b"100644", b"100755")
+
+            def read(object_id=object_id.decode()):
+                return self.git("cat-file", "blob", object_id)[:candidates.limit + 1]
+
+            candidates.offer(path.decode(errors="replace"), int(size) if size.isdigit() else 0, regular, read)
+        return candidates.choose()
+
+    def head_commit(self):
+        """HEAD's commit id and its committer time (seconds since 1970)."""
+        commit = resolve_head(self.git_dir)
+        for line in self.git("cat-file", "commit", commit).decode(errors="replace").splitlines():
+            match = re.match(r"committer .* (\d+) [+-]\d{4}$", line)
+            if match:
+                return commit, int(match.group(1))
+            if not line:
+                break
+        return commit, None
 
 
 def newest_time(paths):
@@ -177,8 +262,9 @@ def main():
         lower = submission.lower()
         if os.path.isdir(submission) and is_git_repository(submission):
             report["kind"] = "git repository (HEAD)"
-            report["taken"] = from_tar(git_head_tar(submission), candidates)
-            report["commit"], report["submitted_at"] = git_head_commit(submission)
+            objects = GitObjects(submission)
+            report["taken"] = objects.head_files(candidates)
+            report["commit"], report["submitted_at"] = objects.head_commit()
             report["time_source"] = "last commit"
         elif os.path.isdir(submission):
             report["kind"] = "folder"

@@ -17,6 +17,7 @@
 #include <sys/prctl.h>
 #endif
 #include <sys/resource.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -56,8 +57,11 @@ struct ChildPlan {
     bool dieWithParent = false;
     bool reapOrphans = false;
     int user = -1;
-    int outputFd = -1;  ///< becomes its stdout and stderr (-1: ours)
-    int collectFd = -1; ///< becomes its descriptor 3 (-1: none)
+    int outputFd = -1;          ///< becomes its stdout and stderr (-1: ours)
+    int collectFd = -1;         ///< becomes its descriptor 3 (-1: none)
+    std::vector<int> passedFds; ///< become its descriptors FirstPassedFd, ...
+    bool isolated = false;
+    int nullInput = -1; ///< /dev/null, its input when isolated
 };
 
 ChildPlan planFor(const std::vector<std::string>& argv, const ChildSetup& setup) {
@@ -83,6 +87,8 @@ ChildPlan planFor(const std::vector<std::string>& argv, const ChildSetup& setup)
     plan.dieWithParent = setup.dieWithParent;
     plan.reapOrphans = setup.reapOrphans;
     plan.user = setup.user;
+    plan.passedFds = setup.passedFds;
+    plan.isolated = setup.isolated;
     return plan;
 }
 
@@ -116,6 +122,16 @@ void interposeReaper() {
 }
 #endif
 
+/// In the child: closes descriptors `from` to `to` - 1 (to -1: every one from `from` on).
+void closeDescriptorsFrom(int from, int to) {
+    const long open = ::sysconf(_SC_OPEN_MAX);
+    const int end = to >= 0 ? to : static_cast<int>(open > 0 ? std::min(open, 1L << 20) : 1024);
+#if defined(__linux__) && defined(SYS_close_range)
+    if (from < end && ::syscall(SYS_close_range, from, end - 1, 0) == 0) return;
+#endif
+    for (int fd = from; fd < end; ++fd) ::close(fd);
+}
+
 /// In the child, between fork and exec: only async-signal-safe calls.
 [[noreturn]] void becomeChild(const ChildPlan& plan) {
 #if defined(__linux__)
@@ -135,21 +151,42 @@ void interposeReaper() {
         const auto id = static_cast<uid_t>(plan.user);
         if (::setgroups(0, nullptr) != 0 || ::setgid(id) != 0 || ::setuid(id) != 0) ::_exit(126);
     }
+    // The passed descriptors, first copied above the numbers they are to take (closed at exec),
+    // so that none is overwritten by another's move before it moved itself.
+    const int passed = static_cast<int>(plan.passedFds.size());
+    int moved[256];
+    if (passed > 256) ::_exit(127);
+    for (int i = 0; i < passed; ++i)
+        if ((moved[i] = ::fcntl(plan.passedFds[i], F_DUPFD_CLOEXEC, FirstPassedFd + passed)) < 0)
+            ::_exit(127);
     if (plan.outputFd >= 0) {
         ::dup2(plan.outputFd, STDOUT_FILENO);
         ::dup2(plan.outputFd, STDERR_FILENO);
     }
     if (plan.collectFd >= 0) ::dup2(plan.collectFd, 3); // dup2 clears close-on-exec on the copy
+    if (plan.isolated && (plan.nullInput < 0 || ::dup2(plan.nullInput, STDIN_FILENO) < 0))
+        ::_exit(127);
+    // Only now: a descriptor number they take may have been one of those above.
+    for (int i = 0; i < passed; ++i)
+        if (::dup2(moved[i], FirstPassedFd + i) < 0) ::_exit(127);
+    if (plan.isolated) {
+        closeDescriptorsFrom(plan.collectFd >= 0 ? 4 : 3, FirstPassedFd);
+        closeDescriptorsFrom(FirstPassedFd + passed, -1);
+        char* noEnvironment[] = {nullptr};
+        ::execve(plan.argv[0], plan.argv.data(), noEnvironment);
+        ::_exit(127);
+    }
     ::execv(plan.argv[0], plan.argv.data());
     ::_exit(127);
 }
 
 /// Appends what is ready on `fd` to `text`, keeping at most `keep` bytes (the last ones when
-/// `keepTail`, else the first, flagging `overflow`). False at end of file.
-bool drain(int fd, std::string& text, size_t keep, bool keepTail, bool& overflow) {
+/// `keepTail`, else the first, flagging `overflow`). Returns how many bytes were read: 0 at end
+/// of file.
+size_t drain(int fd, std::string& text, size_t keep, bool keepTail, bool& overflow) {
     char buffer[65536];
     const ssize_t n = ::read(fd, buffer, sizeof buffer);
-    if (n <= 0) return false;
+    if (n <= 0) return 0;
     if (keepTail) {
         text.append(buffer, static_cast<size_t>(n));
         if (text.size() > keep) text.erase(0, text.size() - keep);
@@ -158,7 +195,7 @@ bool drain(int fd, std::string& text, size_t keep, bool keepTail, bool& overflow
     } else {
         text.append(buffer, static_cast<size_t>(n));
     }
-    return true;
+    return static_cast<size_t>(n);
 }
 
 } // namespace
@@ -175,12 +212,15 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const ChildSetu
     else
         ready = openPipe(outputPipe);
     if (ready && setup.collectPipe) ready = openPipe(collectPipe);
+    int nullInput = setup.isolated ? ::open("/dev/null", O_RDONLY | O_CLOEXEC) : -1;
+    plan.nullInput = nullInput;
     plan.outputFd = outputPipe[1];
     plan.collectFd = collectPipe[1];
     const pid_t pid = ready ? ::fork() : -1;
     if (pid == 0) becomeChild(plan);
     closeIfOpen(outputPipe[1]);
     closeIfOpen(collectPipe[1]);
+    closeIfOpen(nullInput);
     if (pid < 0) {
         closeIfOpen(outputPipe[0]);
         closeIfOpen(collectPipe[0]);
@@ -214,19 +254,32 @@ void ChildProcess::swap(ChildProcess& other) noexcept {
     std::swap(ownGroup_, other.ownGroup_);
     std::swap(reaped_, other.reaped_);
     std::swap(status_, other.status_);
+    std::swap(cpuSeconds_, other.cpuSeconds_);
 }
+
+namespace {
+
+double seconds(const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * t.tv_usec; }
+
+} // namespace
 
 bool ChildProcess::poll() {
     if (!started()) return true;
-    if (!reaped_) reaped_ = ::waitpid(pid_, &status_, WNOHANG) == pid_;
+    rusage usage{};
+    if (!reaped_ && ::wait4(pid_, &status_, WNOHANG, &usage) == pid_) {
+        reaped_ = true;
+        cpuSeconds_ = seconds(usage.ru_utime) + seconds(usage.ru_stime);
+    }
     return reaped_;
 }
 
 void ChildProcess::wait() {
     if (reaped_ || !started()) return;
-    while (::waitpid(pid_, &status_, 0) < 0 && errno == EINTR) {
+    rusage usage{};
+    while (::wait4(pid_, &status_, 0, &usage) < 0 && errno == EINTR) {
     }
     reaped_ = true;
+    cpuSeconds_ = seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
 int ChildProcess::exitCode() const {
@@ -234,6 +287,8 @@ int ChildProcess::exitCode() const {
     if (WIFEXITED(status_)) return WEXITSTATUS(status_);
     return WIFSIGNALED(status_) ? 128 + WTERMSIG(status_) : -1;
 }
+
+void ChildProcess::closeOutput() { closeIfOpen(output_); }
 
 void ChildProcess::kill() {
     if (!started()) return;
@@ -257,6 +312,7 @@ ChildRun runChild(const std::vector<std::string>& argv, const ChildSetup& setup,
     // Read both pipes until both close or time runs out.
     bool outputOpen = child.outputPipe() >= 0, collectOpen = child.collectPipe() >= 0;
     bool ignored = false;
+    size_t outputRead = 0;
     while (outputOpen || collectOpen) {
         const double left = limits.wallSeconds - elapsed();
         if (left <= 0) {
@@ -267,11 +323,20 @@ ChildRun runChild(const std::vector<std::string>& argv, const ChildSetup& setup,
         pollfd fds[2] = {{outputOpen ? child.outputPipe() : -1, POLLIN, 0},
                          {collectOpen ? child.collectPipe() : -1, POLLIN, 0}};
         if (::poll(fds, 2, static_cast<int>(std::min(left, 0.25) * 1000) + 1) <= 0) continue;
-        if (fds[0].revents != 0)
-            outputOpen = drain(child.outputPipe(), run.output, limits.outputBytes, true, ignored);
+        if (fds[0].revents != 0) {
+            const size_t read =
+                drain(child.outputPipe(), run.output, limits.outputBytes, true, ignored);
+            outputOpen = read > 0;
+            outputRead += read;
+            if (outputOpen && outputRead > limits.outputReadBytes) {
+                run.outputCutOff = true;
+                outputOpen = false;
+                child.closeOutput();
+            }
+        }
         if (fds[1].revents != 0)
             collectOpen = drain(child.collectPipe(), run.collected, limits.collectBytes, false,
-                                run.collectOverflow);
+                                run.collectOverflow) > 0;
     }
     // The pipes closed (or it was killed): wait for the end, still within the limit.
     while (!child.poll()) {
@@ -287,6 +352,7 @@ ChildRun runChild(const std::vector<std::string>& argv, const ChildSetup& setup,
     run.seconds = elapsed();
     run.waitStatus = child.waitStatus();
     run.exitCode = child.exitCode();
+    run.cpuSeconds = child.cpuSeconds();
     return run;
 }
 

@@ -26,8 +26,9 @@ HeadlessResult renderHeadless(const RenderOptions& options, const RenderScene& s
     HeadlessResult result{AccumulationBuffer(options.width, options.height), {}};
 
     const WatchedLab watched{options.lab, options.implementation};
-    const RenderWatchdog watchdog(renderer.progress(), options.watchdogSeconds,
-                                  [watched] { return watched; });
+    // From the start: the lab's code is loaded below (findPathTrace), and may hang as it loads.
+    const RenderWatchdog watchdog(
+        renderer.progress(), options.watchdogSeconds, [watched] { return watched; }, true);
     const auto start = std::chrono::steady_clock::now();
     {
         // A render into a file (viewer -o) shows its progress; the lab tests' renders, which

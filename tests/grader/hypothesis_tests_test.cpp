@@ -19,6 +19,13 @@ TEST_CASE("Student's t p-values and critical values match the tables", "[grader]
     CHECK(studentTwoSidedP(INFINITY, 9) == 0);
     // The grader's own threshold: 10 seeds, alpha 1e-3.
     CHECK(studentCritical(1e-3, 9) == Approx(4.780913).epsilon(1e-5));
+    // Far in the tail, where a search bounded at 1000 stopped: with one degree of freedom the
+    // t distribution is Cauchy's, whose quantile is tan(pi (1/2 - alpha/2)) = 2/(pi alpha).
+    CHECK(studentCritical(1e-9, 1) == Approx(2 / (M_PI * 1e-9)).epsilon(1e-6));
+    CHECK(studentTwoSidedP(2e6, 1) == Approx(2 / (M_PI * 2e6)).epsilon(1e-6));
+    // One-sided, from the tables: t(0.95, 4) = 2.131847, t(0.999, 9) = 4.296806.
+    CHECK(studentOneSidedCritical(0.05, 4) == Approx(2.131847).epsilon(1e-6));
+    CHECK(studentOneSidedCritical(1e-3, 9) == Approx(4.296806).epsilon(1e-6));
 }
 
 TEST_CASE("Welch's test gives the hand-worked p-value", "[grader]") {

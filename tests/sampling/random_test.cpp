@@ -1,6 +1,7 @@
 // PCG32 (the tests' generator) and the renderer's per-sample streams: reproducible, distinct
 // for distinct keys, and uncorrelated between neighbouring pixels, samples, seeds and draws.
 #include "catch.h"
+#include "statistics.h"
 
 #include "pathlab/path_driver.h"
 #include "pathlab/pcg32.h"
@@ -92,6 +93,10 @@ double chiSquareOfPairs(int n, const std::function<std::pair<float, float>(int)>
     return chi2;
 }
 
+/// Pearson's chi-square of a 16 x 16 grid (255 degrees of freedom) exceeds this with probability
+/// 1e-6 when the pairs are independent and uniform.
+const double pairsCritical = test::chiSquareCritical(255, 1e-6);
+
 } // namespace
 
 TEST_CASE("neighbouring pixels', successive samples' and seeds' streams are uncorrelated",
@@ -101,7 +106,7 @@ TEST_CASE("neighbouring pixels', successive samples' and seeds' streams are unco
     // independent uniforms the correlation of n pairs has standard error 1/sqrt(n) = 0.0032;
     // 5 standard errors fail a correct generator with probability 5.7e-7 per pair of draws,
     // 1e-5 over the 16 below. The pairs of draws are also binned on a 16 x 16 grid: chi-square
-    // with 255 degrees of freedom exceeds 377 with probability 1e-6 (Wilson-Hilferty).
+    // with 255 degrees of freedom exceeds pairsCritical (376.6) with probability 1e-6.
     const int n = 100000;
     const double limit = 5.0 / std::sqrt(double(n));
     const uint64_t width = 512;
@@ -139,7 +144,7 @@ TEST_CASE("neighbouring pixels', successive samples' and seeds' streams are unco
             INFO("draw " << k << " of a pixel's sample 0 at seed 0 against draw " << j << " of "
                          << neighbour.name);
             CHECK(std::fabs(correlation(n, pairAt)) < limit);
-            CHECK(chiSquareOfPairs(n, pairAt) < 377);
+            CHECK(chiSquareOfPairs(n, pairAt) < pairsCritical);
         }
     }
 }
@@ -160,11 +165,11 @@ TEST_CASE("the correlation checks notice streams that overlap or share their dra
         const float u = stream.nextFloat();
         return std::pair<float, float>{u, 0.999999f - u};
     };
-    CHECK(chiSquareOfPairs(n, mirrored) > 377);
+    CHECK(chiSquareOfPairs(n, mirrored) > pairsCritical);
 }
 
 TEST_CASE("successive draws of one sample are uncorrelated", "[sampling][rng]") {
-    // As above: 5 standard errors of the correlation, chi-square 377 on 255 degrees of freedom.
+    // As above: 5 standard errors of the correlation, chi-square on 255 degrees of freedom.
     const int n = 100000;
     for (int k = 0; k < 3; ++k) {
         const auto pairAt = [&](int i) {
@@ -175,7 +180,7 @@ TEST_CASE("successive draws of one sample are uncorrelated", "[sampling][rng]") 
         };
         INFO("draws " << k << " and " << k + 1);
         CHECK(std::fabs(correlation(n, pairAt)) < 5.0 / std::sqrt(double(n)));
-        CHECK(chiSquareOfPairs(n, pairAt) < 377);
+        CHECK(chiSquareOfPairs(n, pairAt) < pairsCritical);
     }
 }
 

@@ -33,9 +33,12 @@ public:
 
     /// Watches `progress` (which must outlive the watchdog); `seconds` = 0 watches nothing.
     /// `watchedLab` says, when it fires, which lab the stuck pass runs: it is called on the
-    /// watchdog's thread.
+    /// watchdog's thread. With `fromStart`, the time before the first pass begins counts too (a
+    /// headless render, whose lab's code loads just before: a static initializer of the lab that
+    /// never returns is caught as an endless loop is); without, only passes are watched (a
+    /// window idles between them).
     RenderWatchdog(const RenderProgress& progress, double seconds,
-                   std::function<WatchedLab()> watchedLab);
+                   std::function<WatchedLab()> watchedLab, bool fromStart = false);
     ~RenderWatchdog();
     RenderWatchdog(const RenderWatchdog&) = delete;
     RenderWatchdog& operator=(const RenderWatchdog&) = delete;
@@ -49,6 +52,7 @@ private:
 
     const RenderProgress& progress_;
     const double seconds_;
+    const bool fromStart_;
     const std::function<WatchedLab()> watchedLab_;
     std::mutex mutex_;
     std::condition_variable wake_;

@@ -1,7 +1,9 @@
 #include "checks/correctness_check.h"
 
+#include "checks/correctness_renders.h"
 #include "checks/hypothesis_tests.h"
 #include "checks/number_text.h"
+#include "checks/path_evidence.h"
 #include "checks/path_length.h"
 #include "checks/rays_per_sample.h"
 #include "checks/reproducibility_check.h"
@@ -27,6 +29,7 @@ struct SceneRuns {
     RaysPerSample rays;                            ///< over all seeds (the lab's own counts)
     bool stepsOpen = false; ///< the lab reported a TODO step not written yet (pathlab/todo.h)
     std::string failure, failureKind; ///< see RenderResult
+    std::string outputNote;           ///< see RenderResult
 
     /// The mean of the seeds' images, for the reports' pictures.
     std::vector<float> meanImage() const {
@@ -42,23 +45,10 @@ SceneRuns renderSeeds(const GraderSetup& setup, const GradingScene& scene, Lab l
                       uint64_t seedBase) {
     const Rubric& r = setup.rubric;
     SceneRuns runs;
-    // All seeds in one viewer process: its start-up, longer than a small render, is paid once.
-    const LabParameters parameters =
-        scene.parameters.value_or(LabParameters{r.maxDepth, r.continueProb});
     const int spp = r.forLab(lab).correctnessSpp;
-    const RenderRequest request{&setup.student,
-                                scene.path,
-                                lab,
-                                r.width,
-                                r.height,
-                                spp,
-                                parameters.maxDepth,
-                                parameters.continueProb,
-                                seedBase,
-                                r.seeds,
-                                setup.threads,
-                                setup.scratch};
+    const RenderRequest request = correctnessRequest(setup, scene, lab, seedBase, setup.student);
     const RenderResult result = renderLab(request, limitsOf(setup));
+    runs.outputNote = result.outputNote;
     if (!result.ok) {
         runs.failure = result.failure;
         runs.failureKind = result.failureKind;
@@ -114,6 +104,7 @@ struct RunFailure {
 struct Attempt {
     bool passed = false;
     std::vector<std::string> details, hiddenDetails;
+    std::vector<std::string> notes; ///< said whatever the verdict (RenderResult::outputNote)
     std::string diagnosis;
     RunFailure failure;
     double noise = -1; ///< see CorrectnessOutcome
@@ -121,15 +112,44 @@ struct Attempt {
     /// The first seed's image of the noise scene (or of the first scene), rendered again by the
     /// reproducibility check.
     SeedImage firstImage;
+    /// Every seed's image of the speed scene, which the speed check's timed runs must render
+    /// again, bit for bit.
+    std::vector<std::vector<float>> speedSceneImages;
 };
 
 /// What the renders of every scene leave for the verdict.
 struct SceneComparisons {
-    std::vector<Comparison> scenes;                 ///< one per scene, in the setup's order
-    std::vector<double> allP;                       ///< every scene's regions' p, in a row
+    std::vector<Comparison> scenes;    ///< one per scene, in the setup's order
+    std::vector<std::string> untraced; ///< per scene: missingPathEvidence, "" where it is traced
+    std::vector<double> allP;          ///< every scene's regions' p, in a row
     std::vector<PathLengthObservation> pathLengths; ///< lab 4 in the diffuse furnaces
     bool stepsOpen = false;                         ///< see SceneRuns
 };
+
+/// What the renders of `runs` show of paths, beside the reference's on the same scene.
+PathEvidence pathEvidence(const GraderSetup& setup, const GradingScene& scene, Lab lab,
+                          const SceneRuns& runs) {
+    const Rubric& r = setup.rubric;
+    const SceneReference& ref = scene.reference;
+    const Expectation& expected = ref.forLab(lab);
+    PathEvidence e;
+    e.variance = trimmedSampleVariance(runs.images, r.forLab(lab).correctnessSpp);
+    e.referenceVariance = ref.noise[lab];
+    e.bounceRays = runs.rays.bounce;
+    if (ref.bounceRaysKnown) e.referenceBounceRays = ref.bounceRays[lab];
+    e.meanImage = runs.meanImage();
+    e.referenceImage = expected.image;
+    e.width = r.width;
+    e.height = r.height;
+    e.tiles = r.tiles;
+    // The reference image is the mean of the solution that measured it (importance's or
+    // roulette's, expectation.cpp) over its seeds and spp.
+    const double samples = double(expected.spp) * expected.seeds;
+    e.referenceNoise =
+        samples > 0 ? ref.noise[isDepthLimited(lab) ? Lab::Importance : Lab::Roulette] / samples
+                    : 0;
+    return e;
+}
 
 /// Renders every scene and compares it with its reference, keeping in `attempt` the noise figure,
 /// the first image and the public scenes' pictures; a scene whose renders fail ends it, with
@@ -142,18 +162,26 @@ SceneComparisons renderAndCompare(const GraderSetup& setup, Lab lab, uint64_t se
         const SceneRuns runs = renderSeeds(setup, scene, lab, seedBase);
         if (!runs.failure.empty()) {
             attempt.failure = {"on " + scene.name + " the lab " +
-                                   withoutSceneName(runs.failure, scene),
+                                   failureAsShown(runs.failure, runs.failureKind, scene),
                                runs.failureKind};
             return found;
         }
         found.stepsOpen = found.stepsOpen || runs.stepsOpen;
-        if (scene.reference.scene == r.noiseScene || attempt.noise < 0)
+        if (!scene.hidden && !runs.outputNote.empty() &&
+            std::find(attempt.notes.begin(), attempt.notes.end(), runs.outputNote) ==
+                attempt.notes.end())
+            attempt.notes.push_back(runs.outputNote);
+        // The noise figure and the image rendered again come from a public scene: the noise
+        // scene, else the first.
+        if (!scene.hidden && (scene.reference.scene == r.noiseScene || attempt.noise < 0))
             attempt.noise = trimmedSampleVariance(runs.images, r.forLab(lab).correctnessSpp);
-        if (scene.reference.scene == r.noiseScene || !attempt.firstImage.scene)
+        if (!scene.hidden && (scene.reference.scene == r.noiseScene || !attempt.firstImage.scene))
             attempt.firstImage = {&scene, seedBase, setup.threads, runs.images.front()};
+        if (&scene == speedScene(setup)) attempt.speedSceneImages = runs.images;
         if (lab == Lab::Roulette && scene.furnace && scene.furnace->walls == FurnaceWalls::Diffuse)
             found.pathLengths.push_back({scene.furnace->continueProb, runs.rays.bounce});
         found.scenes.push_back(compare(runs, scene.reference.forLab(lab), r.seeds));
+        found.untraced.push_back(missingPathEvidence(pathEvidence(setup, scene, lab, runs)));
         found.allP.insert(found.allP.end(), found.scenes.back().p.begin(),
                           found.scenes.back().p.end());
         if (scene.hidden) continue; // its images are the instructor's
@@ -350,6 +378,23 @@ void explainRejection(const GraderSetup& setup, Lab lab, const SceneComparisons&
                                   " (what differs lies on paths these samples did not take)");
 }
 
+/// Means that match from images that do not come from paths (path_evidence.h): says which
+/// scenes in `attempt` and returns true; false where every scene's images are traced.
+bool explainUntraced(const GraderSetup& setup, const SceneComparisons& found, Attempt& attempt) {
+    bool untraced = false;
+    for (size_t s = 0; s < setup.scenes.size(); ++s) {
+        if (found.untraced[s].empty()) continue;
+        untraced = true;
+        const GradingScene& scene = setup.scenes[s];
+        if (scene.hidden)
+            attempt.hiddenDetails.push_back(scene.name + ": " + NotTracedDiagnosis);
+        else
+            attempt.details.push_back(scene.name + ": the means match, but " + found.untraced[s]);
+    }
+    if (untraced) attempt.diagnosis = NotTracedDiagnosis;
+    return untraced;
+}
+
 /// One attempt of the correctness check over all scenes. `noise`: the figure of an earlier
 /// attempt (-1: none), kept where this one does not reach the noise scene.
 Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, double noise) {
@@ -366,6 +411,7 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
         attempt.diagnosis = causeName(ignored);
         return attempt;
     }
+    if (!anyRejected(rejected) && explainUntraced(setup, found, attempt)) return attempt;
     if (!anyRejected(rejected)) {
         if (const std::string note = pathLengthNote(found.pathLengths); !note.empty())
             attempt.details.push_back(note);
@@ -398,11 +444,12 @@ CorrectnessOutcome checkCorrectness(const GraderSetup& setup, Lab lab) {
     CheckResult& check = outcome.check;
     check.kind = CheckKind::Correctness;
     check.maxScore = setup.rubric.forLab(lab).points.correctness;
-    Attempt attempt = correctnessAttempt(setup, lab, setup.seedBase * 1000, -1);
+    Attempt attempt = correctnessAttempt(setup, lab, firstSeedBase(setup), -1);
+    outcome.speedSceneImages = attempt.speedSceneImages;
     if (!attempt.passed && attempt.failure.empty()) {
         // A rejection at alpha happens to correct labs too, rarely: only a second rejection on
         // fresh seeds counts. A retry whose renders fail keeps the first attempt's words.
-        Attempt retry = correctnessAttempt(setup, lab, setup.seedBase * 1000 + 500, attempt.noise);
+        Attempt retry = correctnessAttempt(setup, lab, firstSeedBase(setup) + 500, attempt.noise);
         if (!retry.failure.empty()) {
             retry.details = std::move(attempt.details);
             retry.hiddenDetails = std::move(attempt.hiddenDetails);
@@ -442,10 +489,15 @@ CorrectnessOutcome checkCorrectness(const GraderSetup& setup, Lab lab) {
         check.diagnosis = failure.kind;
         if (failure.kind == NonfiniteRadianceFailure)
             details.push_back("likely cause: " + likelyNonfiniteCause(lab));
+    } else if (attempt.diagnosis == NotTracedDiagnosis) {
+        check.summary = "mean radiance matches " + expected + ", but " + NotTracedDiagnosis +
+                        " (twice, on fresh seeds)";
+        check.diagnosis = attempt.diagnosis;
     } else {
         check.summary = "mean radiance differs from " + expected + " (twice, on fresh seeds)";
         check.diagnosis = attempt.diagnosis.empty() ? "wrong mean radiance" : attempt.diagnosis;
     }
+    details.insert(details.end(), attempt.notes.begin(), attempt.notes.end());
     check.details = std::move(details);
     check.hiddenSceneDetails = std::move(attempt.hiddenDetails);
     return outcome;
@@ -483,15 +535,25 @@ GradingScene parameterCheckScene(const Rubric& rubric) {
     return scene;
 }
 
-std::string withoutSceneName(std::string text, const GradingScene& scene) {
-    if (!scene.hidden) return text;
-    for (const std::string& secret : {scene.path, scene.reference.scene}) {
-        if (secret.empty()) continue;
-        for (size_t at = text.find(secret); at != std::string::npos;
-             at = text.find(secret, at + scene.name.size()))
-            text.replace(at, secret.size(), scene.name);
-    }
-    return text;
+std::string failureAsShown(const std::string& failure, const std::string& kind,
+                           const GradingScene& scene) {
+    if (!scene.hidden) return failure;
+    // The kinds render_run.cpp names, each in words of the grader's only.
+    static const std::vector<std::pair<std::string, std::string>> words = {
+        {"crashed", "crashed"},
+        {"endless loop", "finished no sample for a long time (an endless loop?)"},
+        {"too slow", "was too slow for the CPU time limit"},
+        {"wall-clock limit", "did not finish within the wall-clock limit"},
+        {"stopped itself", "stopped its own process"},
+        {"out of memory", "ran out of memory"},
+        {"exited with an error", "exited with an error"},
+        {NonfiniteRadianceFailure, "returned NaN or infinite radiance"},
+        {"unreadable output", "left output the grader could not read"},
+    };
+    const auto known = std::find_if(words.begin(), words.end(),
+                                    [&](const auto& word) { return word.first == kind; });
+    return (known != words.end() ? known->second : "failed") +
+           " (on a hidden scene, what the lab printed is not shown)";
 }
 
 } // namespace pathlab::grader

@@ -17,6 +17,9 @@ struct CorrectnessOutcome {
     double noise = -1;
     std::vector<LabGrade::Pictures> pictures;
     bool rendersFinished = true; ///< false when a render crashed, hung or ran out
+    /// The first attempt's images of the speed scene, one per seed (correctness_renders.h): the
+    /// speed check's timed runs must render them again.
+    std::vector<std::vector<float>> speedSceneImages;
 };
 
 CorrectnessOutcome checkCorrectness(const GraderSetup& setup, Lab lab);
@@ -26,8 +29,11 @@ CorrectnessOutcome checkCorrectness(const GraderSetup& setup, Lab lab);
 /// is not a furnace.
 GradingScene parameterCheckScene(const Rubric& rubric);
 
-/// A render's failure text as feedback may show it: a hidden scene's path and name (which a
-/// lab's own output or the viewer's message may quote) replaced by what feedback calls it.
-std::string withoutSceneName(std::string text, const GradingScene& scene);
+/// A render's failure on `scene` as feedback may show it: on a public scene (or one the instructor
+/// reveals) the whole text, with what the lab printed; on a hidden one only what kind of failure
+/// it was, in the grader's own words: nothing the lab printed, wrote or counted there, which it
+/// could have made from the scene's files, and not the scene's name.
+std::string failureAsShown(const std::string& failure, const std::string& kind,
+                           const GradingScene& scene);
 
 } // namespace pathlab::grader

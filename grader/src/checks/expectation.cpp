@@ -1,6 +1,8 @@
 #include "checks/expectation.h"
 
 #include "checks/hypothesis_tests.h"
+#include "checks/rays_per_sample.h"
+#include "checks/run_limits.h"
 #include "checks/seed_variance.h"
 #include "common/content_hash.h"
 #include "common/scene_files.h"
@@ -41,7 +43,7 @@ Expectation measure(const LabRunner& solution, const std::string& scene, Lab lab
                         1,
                         0,
                         scratch};
-        const RenderResult result = renderLab(r, {rubric.secondsPerRun * 20, rubric.memoryBytes});
+        const RenderResult result = renderLab(r, renderLimits(rubric, 20));
         if (!result.ok)
             throw std::runtime_error("the reference solution of " + e.solution + " failed on " +
                                      scene + ": " + result.failure);
@@ -131,6 +133,7 @@ SceneReference measureReference(const LabRunner& solution, const std::string& sc
     for (Lab lab : AllLabs) {
         const int labSpp = rubric.forLab(lab).correctnessSpp;
         double sum = 0;
+        RayCounters rays;
         for (int g = 0; g < noiseGroups; ++g) {
             const RenderRequest r{&solution,
                                   scenePath,
@@ -144,17 +147,23 @@ SceneReference measureReference(const LabRunner& solution, const std::string& sc
                                   rubric.seeds,
                                   0,
                                   scratch};
-            const RenderResult result =
-                renderLab(r, {rubric.secondsPerRun * 20, rubric.memoryBytes});
+            const RenderResult result = renderLab(r, renderLimits(rubric, 20));
             if (!result.ok)
                 throw std::runtime_error("the reference solution failed: " + result.failure);
             std::vector<std::vector<float>> images;
-            for (const RenderedImage& rendered : result.images) images.push_back(rendered.rgb);
+            for (const RenderedImage& rendered : result.images) {
+                images.push_back(rendered.rgb);
+                rays += rendered.rays;
+            }
             sum += trimmedSampleVariance(images, labSpp) / noiseGroups;
             step();
         }
         ref.noise[lab] = sum;
         ref.noiseSpp[lab] = labSpp;
+        ref.bounceRays[lab] = raysPerSample(rays, double(rubric.width) * rubric.height * labSpp *
+                                                      rubric.seeds * noiseGroups)
+                                  .bounce;
+        ref.bounceRaysKnown = true;
     }
     ref.noiseSeeds = rubric.seeds;
     return ref;
@@ -165,8 +174,11 @@ void saveReference(const std::string& folder, const SceneReference& ref) {
     const std::string unbiasedImage = ref.scene + ".unbiased.exr";
     writeImage(folder + "/" + depthImage, ref.width, ref.height, ref.depthLimited.image);
     writeImage(folder + "/" + unbiasedImage, ref.width, ref.height, ref.unbiased.image);
-    nlohmann::json noise;
-    for (Lab lab : AllLabs) noise[std::string(labName(lab))] = ref.noise[lab];
+    nlohmann::json noise, bounceRays = nullptr;
+    for (Lab lab : AllLabs) {
+        noise[std::string(labName(lab))] = ref.noise[lab];
+        if (ref.bounceRaysKnown) bounceRays[std::string(labName(lab))] = ref.bounceRays[lab];
+    }
     const nlohmann::json j = {
         {"scene", ref.scene},
         {"made_by", "grader make-references"},
@@ -186,6 +198,7 @@ void saveReference(const std::string& folder, const SceneReference& ref) {
         {"noise_is", "per-sample variance of the reference solutions, from the spread of the "
                      "rubric's seeds at the rubric's spp, the noisiest 1% of pixels left out "
                      "(grader/src/seed_variance.h)"},
+        {"bounce_rays_per_sample", bounceRays},
     };
     writeFileAtomically(folder + "/" + ref.scene + ".json", j.dump(1) + "\n");
 }
@@ -227,6 +240,12 @@ SceneReference loadReference(const std::string& folder, const std::string& scene
         ref.unbiased = fromJson(j.at("unbiased"), folder, ref.width, ref.height);
         for (Lab lab : AllLabs) ref.noise[lab] = j.at("noise").at(std::string(labName(lab)));
         ref.noiseSeeds = j.at("noise_seeds");
+        ref.bounceRaysKnown =
+            j.contains("bounce_rays_per_sample") && j.at("bounce_rays_per_sample").is_object();
+        if (ref.bounceRaysKnown)
+            for (Lab lab : AllLabs)
+                ref.bounceRays[lab] =
+                    j.at("bounce_rays_per_sample").at(std::string(labName(lab))).get<double>();
         ref.noiseSpp.values = j.at("noise_spp").get<decltype(ref.noiseSpp.values)>();
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ": " + e.what());

@@ -38,6 +38,11 @@ struct SceneReference {
         noise; ///< each lab's solution's trimmedSampleVariance at the rubric's seeds and spp
     int noiseSeeds = 0; ///< the seeds and spp (by lab) the noise was measured at
     ByLab<int> noiseSpp;
+    /// Each lab's solution's bounce rays per sample in those renders: what a lab whose image
+    /// comes from tracing paths traces too (path_evidence.h). Not known in a reference made
+    /// before they were kept.
+    ByLab<double> bounceRays;
+    bool bounceRaysKnown = false;
 
     const Expectation& forLab(Lab lab) const {
         return isDepthLimited(lab) ? depthLimited : unbiased;

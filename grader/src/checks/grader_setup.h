@@ -52,8 +52,6 @@ struct GraderSetup {
     uint64_t seedBase = 1;
     int threads = 0;
     bool measureSpeed = true;
-    /// Each render's wall-time limit here and now (time_limit.h); 0: the rubric's.
-    double runSeconds = 0;
     /// A build without the solutions cannot check speed (measureSpeed false), but it still times
     /// the student's labs, for the speed ratios between them; the reference's ratios then come
     /// from the stored figures (lab_figures.json, by lab; 0 where none).

@@ -12,13 +12,13 @@
 
 namespace pathlab::grader {
 
-namespace {
-
 namespace fs = std::filesystem;
 
 std::string publicScenePath(const std::string& name) {
     return std::string(PATHLAB_MODELS_DIR) + "/" + name + ".ecs";
 }
+
+namespace {
 
 /// Whether a reference's noise figures were measured at the seeds and samples per pixel the
 /// rubric grades at: the noise check compares figures measured alike.

@@ -8,6 +8,9 @@
 
 namespace pathlab::grader {
 
+/// models/NAME.ecs: a public scene of the rubric.
+std::string publicScenePath(const std::string& name);
+
 /// Where the instructor keeps hidden scenes: grader/hidden_scenes/. Every command that grades
 /// uses it unless told otherwise (--scenes DIR, --scenes none).
 std::string defaultHiddenScenesFolder();

@@ -1,60 +1,25 @@
 #include "checks/hypothesis_tests.h"
 
+#include <boost/math/distributions/students_t.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 
 namespace pathlab::grader {
 
-namespace {
-
-/// The continued fraction of the regularised incomplete beta function (modified Lentz).
-double betaContinuedFraction(double a, double b, double x) {
-    const double tiny = 1e-300;
-    double c = 1, d = 1 - (a + b) * x / (a + 1);
-    d = 1 / (std::fabs(d) < tiny ? tiny : d);
-    double h = d;
-    for (int m = 1; m <= 300; ++m) {
-        const double m2 = 2.0 * m;
-        double numerator = m * (b - m) * x / ((a + m2 - 1) * (a + m2));
-        for (int half = 0; half < 2; ++half) {
-            d = 1 + numerator * d;
-            d = 1 / (std::fabs(d) < tiny ? tiny : d);
-            c = 1 + numerator / c;
-            if (std::fabs(c) < tiny) c = tiny;
-            const double delta = c * d;
-            h *= delta;
-            if (half == 1 && std::fabs(delta - 1) < 1e-15) return h;
-            numerator = -(a + m) * (a + b + m) * x / ((a + m2) * (a + m2 + 1));
-        }
-    }
-    return h;
-}
-
-/// I_x(a, b).
-double regularizedIncompleteBeta(double a, double b, double x) {
-    if (x <= 0) return 0;
-    if (x >= 1) return 1;
-    const double logFront =
-        std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log1p(-x);
-    if (x < (a + 1) / (a + b + 2)) return std::exp(logFront) * betaContinuedFraction(a, b, x) / a;
-    return 1 - std::exp(logFront) * betaContinuedFraction(b, a, 1 - x) / b;
-}
-
-} // namespace
-
 double studentTwoSidedP(double t, double dof) {
     if (!std::isfinite(t)) return 0;
-    return regularizedIncompleteBeta(dof / 2, 0.5, dof / (dof + t * t));
+    if (!(dof > 0)) return 1;
+    const boost::math::students_t distribution(dof);
+    return std::min(1.0, 2 * cdf(complement(distribution, std::fabs(t))));
 }
 
-double studentCritical(double alpha, double dof) {
-    double lo = 0, hi = 1e3;
-    for (int i = 0; i < 200; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (studentTwoSidedP(mid, dof) > alpha ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
+double studentCritical(double alpha, double dof) { return studentOneSidedCritical(alpha / 2, dof); }
+
+double studentOneSidedCritical(double alpha, double dof) {
+    const boost::math::students_t distribution(dof);
+    return quantile(complement(distribution, alpha));
 }
 
 MeanEstimate batchMean(const std::vector<double>& values) {
@@ -93,6 +58,13 @@ std::vector<bool> holmRejections(const std::vector<double>& p, double alpha) {
         rejected[order[rank]] = true;
     }
     return rejected;
+}
+
+double geometricMean(const std::vector<double>& values) {
+    if (values.empty()) return 0;
+    double logs = 0;
+    for (double v : values) logs += std::log(v);
+    return std::exp(logs / static_cast<double>(values.size()));
 }
 
 double median(std::vector<double> values) {

@@ -1,16 +1,20 @@
 #pragma once
-/// The grader's hypothesis tests: Student's t, batch means, Welch's test and Holm's step-down
-/// correction; and the median and float-rounding floor the checks compare with.
+/// The grader's hypothesis tests: Student's t (Boost.Math's), batch means, Welch's test and Holm's
+/// step-down correction; and the median and float-rounding floor the checks compare with.
 
 #include <vector>
 
 namespace pathlab::grader {
 
-/// Two-sided p-value of Student's t statistic with `dof` degrees of freedom.
+/// Two-sided p-value of Student's t statistic with `dof` degrees of freedom (any dof > 0, not
+/// only whole numbers: Welch's test makes fractional ones). Boost.Math's distribution.
 double studentTwoSidedP(double t, double dof);
 
 /// The two-sided critical value of Student's t at significance `alpha`.
 double studentCritical(double alpha, double dof);
+
+/// The one-sided critical value: P(T > value) = `alpha`.
+double studentOneSidedCritical(double alpha, double dof);
 
 struct MeanEstimate {
     double mean = 0;
@@ -32,6 +36,9 @@ std::vector<bool> holmRejections(const std::vector<double>& p, double alpha);
 
 /// The middle value (the upper one of an even count); 0 for none.
 double median(std::vector<double> values);
+
+/// exp(mean of the logarithms) of positive values; 0 for none.
+double geometricMean(const std::vector<double>& values);
 
 /// Relative size of the float rounding between two renders of the same expectation at
 /// different spp: a few parts in 1e7 of a float accumulation, bounded far below any bug's effect.

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cstdio>
 #include <fstream>
 
 namespace pathlab::grader {
@@ -24,7 +26,6 @@ Rubric loadRubric(const std::string& path) {
             LabRubric& l = r.labs[lab];
             l.points = {p.at("correctness"), p.at("noise"), p.at("speed")};
             l.correctnessSpp = j.at("correctness").at("spp").at(name);
-            l.speedSpp = j.at("speed").at("spp").at(name);
         }
         r.maxDepth = j.at("parameters").at("max_depth");
         r.continueProb = j.at("parameters").at("continue_prob");
@@ -41,8 +42,15 @@ Rubric loadRubric(const std::string& path) {
         r.minSpeedRatio = s.at("min_ratio");
         r.speedRuns = s.at("runs");
         r.speedScene = s.at("scene");
-        r.speedWidth = s.at("width");
-        r.speedHeight = s.at("height");
+        r.speedAlpha = s.value("alpha", r.speedAlpha);
+        // A rubric of before the timed runs were the correctness renders: their sizes no longer
+        // say anything, and are read as what they were.
+        for (const char* gone : {"width", "height", "spp"})
+            if (s.contains(gone))
+                std::fprintf(stderr,
+                             "%s: note: speed.%s is no longer used: the timed runs are the "
+                             "correctness renders of speed.scene\n",
+                             path.c_str(), gone);
         for (Lab lab : AllLabs) {
             const std::string measure = s.value("judged_by", nlohmann::json::object())
                                             .value(std::string(labName(lab)), "samples_per_second");
@@ -61,6 +69,9 @@ Rubric loadRubric(const std::string& path) {
         if (j.contains("hidden_scenes")) {
             r.hiddenScenesVisibility =
                 j.at("hidden_scenes").value("gradescope_visibility", r.hiddenScenesVisibility);
+            r.sceneVariants = j.at("hidden_scenes").value("variants", r.sceneVariants);
+            if (r.sceneVariants < 0 || r.sceneVariants > 10)
+                throw InputError(path + ": hidden_scenes.variants must be 0 to 10");
             const auto& v = r.hiddenScenesVisibility;
             if (v != "visible" && v != "hidden" && v != "after_due_date" && v != "after_published")
                 throw InputError(path + ": hidden_scenes.gradescope_visibility is '" + v +
@@ -75,6 +86,12 @@ Rubric loadRubric(const std::string& path) {
     if (r.seeds < 2 || r.width < r.tiles || r.height < r.tiles || r.tiles < 1 ||
         !(r.continueProb > 0 && r.continueProb < 1) || r.maxDepth < 0 || r.speedRuns < 1)
         throw InputError(path + ": seeds must be >= 2, tiles fit the image, 0 < continue_prob < 1");
+    if (std::find(r.scenes.begin(), r.scenes.end(), r.speedScene) == r.scenes.end())
+        throw InputError(path + ": speed.scene '" + r.speedScene +
+                         "' must be one of correctness.scenes: its correctness renders are the "
+                         "ones timed");
+    if (!(r.speedAlpha > 0 && r.speedAlpha < 1))
+        throw InputError(path + ": speed.alpha must lie between 0 and 1");
     const ParameterCheck& second = r.parameterCheck;
     if (!(second.continueProb > 0 && second.continueProb < 1) || second.maxDepth < 0 ||
         second.maxDepth == r.maxDepth || second.continueProb == r.continueProb)

@@ -39,8 +39,7 @@ struct ParameterCheck {
 /// What the rubric sets for each lab apart.
 struct LabRubric {
     LabPoints points;
-    int correctnessSpp = 0; ///< samples per pixel of each correctness render
-    int speedSpp = 0;       ///< samples per pixel of each timed render
+    int correctnessSpp = 0; ///< samples per pixel of each correctness render (and timed run)
     SpeedMeasure speedJudgedBy = SpeedMeasure::SamplesPerSecond; ///< where the rubric is silent
 };
 
@@ -55,15 +54,19 @@ struct Rubric {
     double maxNoiseRatio = 1.5;
     std::string noiseScene;
     double minSpeedRatio = 0.75;
-    int speedRuns = 5;
+    int speedRuns = 5;        ///< interleaved pairs at a time (speed_check.h)
+    double speedAlpha = 1e-3; ///< the chance that a lab at the threshold fails the speed check
+    /// The correctness scene whose renders are timed (speed_check.h): one of `scenes`.
     std::string speedScene;
-    int speedWidth = 256, speedHeight = 256;
     ParameterCheck parameterCheck;
     double secondsPerRun = 30;
     long long memoryBytes = 4LL << 30;
     /// When Gradescope shows students the hidden scenes' verdicts
     /// (hidden_scenes.gradescope_visibility): visible, hidden, after_due_date or after_published.
     std::string hiddenScenesVisibility = "after_published";
+    /// How many variants of the public scenes a batch grades on as hidden scenes when the
+    /// instructor keeps none (hidden_scenes.variants; scene_variants.h); 0: none.
+    int sceneVariants = 1;
     /// A fingerprint of every setting (the file's JSON, reformatted, without "about"): each
     /// result records it, so that results graded under another rubric are never mixed.
     std::string hash;

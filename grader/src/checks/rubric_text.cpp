@@ -1,5 +1,8 @@
 #include "checks/rubric_text.h"
 
+#include "checks/run_limits.h"
+#include "checks/speed_check.h"
+
 #include <sstream>
 
 namespace pathlab::grader {
@@ -61,16 +64,22 @@ std::string rubricText(const Rubric& r, const std::string& rubricPath, int hidde
         << " times the reference solution's (a correct lab only)\n";
 
     out << "\nspeed: at least " << r.minSpeedRatio
-        << " times the reference solution's, the median of " << r.speedRuns
-        << " interleaved timed renders of " << r.speedWidth << "x" << r.speedHeight << " on "
-        << r.speedScene << "\n  samples per pixel: " << perLab(r, &LabRubric::speedSpp)
-        << "\n  judged by:";
+        << " times the reference solution's samples per CPU-second, in the correctness renders "
+           "of "
+        << r.speedScene << " run again,\n  interleaved with the reference's, " << r.speedRuns
+        << " pairs at a time up to " << SpeedPairsCap * r.speedRuns
+        << "; failed only when below with confidence\n  (a correct lab at the threshold fails "
+           "with probability at most "
+        << r.speedAlpha << "; undecided at the end, it passes)\n  judged by:";
     for (Lab lab : AllLabs)
         out << " " << labName(lab) << " "
             << (r.forLab(lab).speedJudgedBy == SpeedMeasure::Efficiency ? "efficiency"
                                                                         : "samples/s")
             << (lab == Lab::Roulette ? "" : ",");
-    out << "\n\nlimits: " << r.secondsPerRun << " s per render (scaled to the machine's speed), "
+    out << "\n\nlimits: " << r.secondsPerRun << " s of CPU time per render thread, "
+        << r.secondsPerRun / 2 << " s without a finished sample, "
+        << r.secondsPerRun * WallLimitFactor
+        << " s of wall-clock time at most\n  (none depends on how busy the machine is), "
         << (r.memoryBytes >> 20) << " MB of memory\n";
     return out.str();
 }

@@ -2,9 +2,11 @@
 
 namespace pathlab::grader {
 
-ProcessLimits limitsOf(const GraderSetup& setup) {
-    return {setup.runSeconds > 0 ? setup.runSeconds : setup.rubric.secondsPerRun,
-            setup.rubric.memoryBytes};
+RenderLimits renderLimits(const Rubric& rubric, double scale) {
+    const double seconds = rubric.secondsPerRun * scale;
+    return {seconds, seconds / 2, seconds * WallLimitFactor, rubric.memoryBytes};
 }
+
+RenderLimits limitsOf(const GraderSetup& setup) { return renderLimits(setup.rubric); }
 
 } // namespace pathlab::grader

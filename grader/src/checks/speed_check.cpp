@@ -1,5 +1,6 @@
 #include "checks/speed_check.h"
 
+#include "checks/correctness_renders.h"
 #include "checks/hypothesis_tests.h"
 #include "checks/number_text.h"
 #include "checks/rays_per_sample.h"
@@ -7,18 +8,12 @@
 #include "isolation/timing_lock.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 namespace pathlab::grader {
 
 namespace {
-
-/// The mean of an image's pixels over all channels.
-double imageMean(const std::vector<float>& image) {
-    double sum = 0;
-    for (float v : image) sum += v;
-    return image.empty() ? 0 : sum / static_cast<double>(image.size());
-}
 
 /// A runner for the timed runs: on the timing cores, when the policy names some.
 LabRunner timedRunner(const LabRunner& runner, const TimingPolicy& timing) {
@@ -27,114 +22,71 @@ LabRunner timedRunner(const LabRunner& runner, const TimingPolicy& timing) {
     return timed;
 }
 
-/// The fixed cost of a run (start-up, loading, building Embree's BVH), measured by rendering one
-/// pixel of `lab`, so that samples/s counts rendering alone and cannot be reported by the lab
-/// itself.
-double startupSeconds(const GraderSetup& setup, const LabRunner& runner, const std::string& scene,
-                      Lab lab, int threads, StartUpTimes& startUps) {
-    // Once per grading for each scene, lab, viewer (the sandboxed one starts slower) and thread
-    // count: the speed check's own (Lab::Uniform) is measured just before its first timed runs,
-    // apart from the time limits' (Lab::Branching), measured at the start of the grading.
-    const std::string what = scene + "|" + std::string(labName(lab)) + "|" + runner.viewer + "|" +
-                             runner.libraryFor(lab) + "|" + std::to_string(threads);
+/// The CPU time of a run's start-up (loading the scene, building Embree's BVH), measured by
+/// rendering one pixel with the reference solutions' labs, never the lab's own: so that
+/// samples per CPU-second count rendering alone, and no lab can make its start-up look longer.
+double startUpCpuSeconds(const GraderSetup& setup, const LabRunner& runner,
+                         const GradingScene& scene, StartUpTimes& startUps) {
+    // Once per grading for each viewer (the sandboxed one starts slower) and thread count.
+    const std::string what = "cpu|" + scene.path + "|" + runner.viewer + "|" +
+                             runner.libraryFor(Lab::Branching) + "|" +
+                             std::to_string(setup.threads);
     return startUps.seconds(what, [&] {
         std::vector<double> seconds;
         for (int i = 0; i < 3; ++i) {
-            RenderRequest request{&runner,
-                                  scene,
-                                  lab,
-                                  1,
-                                  1,
-                                  1,
-                                  setup.rubric.maxDepth,
-                                  setup.rubric.continueProb,
-                                  1,
-                                  1,
-                                  threads,
-                                  setup.scratch};
+            RenderRequest request = correctnessRequest(setup, scene, Lab::Branching, 1, runner);
+            request.width = request.height = request.spp = request.seeds = 1;
             const RenderResult r = renderLab(request, limitsOf(setup));
-            if (r.ok) seconds.push_back(r.process.seconds);
+            if (r.ok) seconds.push_back(r.process.cpuSeconds);
         }
         return median(seconds);
     });
 }
 
-/// The rubric's timed renders: where, how many threads, and the start-up to subtract (measured
-/// with `startupRunner`'s `lab`).
-struct TimedSeries {
-    std::string scene;
-    int threads = 0;
-    double startup = 0;
-};
-
-TimedSeries timedSeries(const GraderSetup& setup, const LabRunner& startupRunner, Lab lab,
-                        StartUpTimes& startUps) {
-    const Rubric& r = setup.rubric;
-    const auto scene =
-        std::find_if(setup.scenes.begin(), setup.scenes.end(),
-                     [&](const GradingScene& s) { return s.reference.scene == r.speedScene; });
-    TimedSeries series;
-    series.scene = scene != setup.scenes.end()
-                       ? scene->path
-                       : std::string(PATHLAB_MODELS_DIR) + "/" + r.speedScene + ".ecs";
-    series.threads = setup.timing.threads > 0 ? setup.timing.threads : setup.threads;
-    series.startup =
-        startupSeconds(setup, startupRunner, series.scene, lab, series.threads, startUps);
-    return series;
-}
-
-/// One timed render (run number `run` of a series): samples/s from its wall time minus the
-/// start-up, and its image's mean radiance.
+/// One timed run: the correctness render of the speed scene again, its samples per CPU-second
+/// (the kernel's count of the whole sandbox's CPU time, less the start-up), and what it rendered.
 struct TimedRun {
     RenderResult result;
-    double samplesPerSecond = 0, meanRadiance = 0;
-    double samples = 0; ///< width x height x spp
+    double samples = 0;    ///< width x height x spp x seeds
+    double cpuSeconds = 0; ///< of rendering, the start-up taken off
+    double samplesPerCpuSecond() const { return samples / cpuSeconds; }
 };
 
-TimedRun timedRun(const GraderSetup& setup, const TimedSeries& series, const LabRunner& runner,
-                  Lab lab, int run) {
-    const Rubric& r = setup.rubric;
-    RenderRequest request{&runner,
-                          series.scene,
-                          lab,
-                          r.speedWidth,
-                          r.speedHeight,
-                          r.forLab(lab).speedSpp,
-                          r.maxDepth,
-                          r.continueProb,
-                          static_cast<uint64_t>(77 + run),
-                          1,
-                          series.threads,
-                          setup.scratch};
+TimedRun timedRun(const GraderSetup& setup, const GradingScene& scene, const LabRunner& runner,
+                  Lab lab, double startUp) {
+    const RenderRequest request =
+        correctnessRequest(setup, scene, lab, firstSeedBase(setup), runner);
     TimedRun timed{renderLab(request, limitsOf(setup))};
     if (!timed.result.ok) return timed;
-    timed.samples = static_cast<double>(request.width) * request.height * request.spp;
-    timed.samplesPerSecond =
-        timed.samples / std::max(timed.result.process.seconds - series.startup, 1e-3);
-    timed.meanRadiance = imageMean(timed.result.image());
+    timed.samples = double(request.width) * request.height * request.spp * request.seeds;
+    // A run's CPU time below its start-up's is the clock's resolution speaking, not the lab.
+    timed.cpuSeconds =
+        std::max(timed.result.process.cpuSeconds - startUp, 0.05 * timed.result.process.cpuSeconds);
     return timed;
 }
 
 /// The rubric's timed runs of one lab with one runner, in a row (no reference beside them).
 struct TimedRuns {
-    std::vector<double> samplesPerSecond; ///< one per run that finished
+    std::vector<double> samplesPerSecond; ///< per CPU-second, one per run that finished
     RayCounters rays;
     double samples = 0;
     bool complete = false; ///< every run finished
 
-    double medianSamplesPerSecond() const { return complete ? median(samplesPerSecond) : 0; }
+    double rate() const { return complete ? geometricMean(samplesPerSecond) : 0; }
 };
 
 TimedRuns timedRuns(const GraderSetup& setup, const LabRunner& runner, Lab lab,
                     StartUpTimes& startUps) {
-    const LabRunner timed = timedRunner(runner, setup.timing);
-    const TimedSeries series = timedSeries(setup, timed, lab, startUps);
     TimedRuns runs;
+    const GradingScene* scene = speedScene(setup);
+    if (!scene) return runs;
+    const LabRunner timed = timedRunner(runner, setup.timing);
+    const double startUp = startUpCpuSeconds(setup, timed, *scene, startUps);
     for (int run = 0; run < setup.rubric.speedRuns; ++run) {
-        const TimedRun one = timedRun(setup, series, timed, lab, run);
+        const TimedRun one = timedRun(setup, *scene, timed, lab, startUp);
         if (!one.result.ok) return runs;
-        runs.samplesPerSecond.push_back(one.samplesPerSecond);
-        runs.rays += one.result.images.front().rays;
+        runs.samplesPerSecond.push_back(one.samplesPerCpuSecond());
+        for (const RenderedImage& image : one.result.images) runs.rays += image.rays;
         runs.samples += one.samples;
     }
     runs.complete = true;
@@ -154,17 +106,17 @@ SpeedOutcome timeWithoutSolutions(const GraderSetup& setup, Lab lab, bool correc
     check.gradedHere = !correct;
     const TimedRuns runs = timedRuns(setup, setup.student, lab, startUps);
     outcome.studentRays = raysPerSample(runs.rays, runs.samples);
-    outcome.studentSamplesPerSecond = runs.medianSamplesPerSecond();
+    outcome.studentSamplesPerSecond = runs.rate();
     outcome.solutionSamplesPerSecond = setup.storedSolutionSamplesPerSecond[lab];
     check.summary = correct ? "graded by the instructor: this build has no reference solutions to "
                               "time your lab against (at least " +
                                   fixed(r.minSpeedRatio, 2) +
-                                  " of the reference's samples/s on the same machine)"
+                                  " of the reference's samples per CPU-second on the same machine)"
                             : "speed counts only for a correct lab";
     if (outcome.studentSamplesPerSecond > 0)
         check.details.push_back(
             "yours on this machine: " + significant(outcome.studentSamplesPerSecond, 3) +
-            " samples/s in the grader's timed runs (grading every lab prints "
+            " samples per CPU-second in the grader's timed runs (grading every lab prints "
             "the ratios between them); rays per sample: " +
             raysText(outcome.studentRays));
     return outcome;
@@ -172,10 +124,11 @@ SpeedOutcome timeWithoutSolutions(const GraderSetup& setup, Lab lab, bool correc
 
 /// One lab's timed series, interleaved with the reference's.
 struct TimedComparison {
-    std::vector<double> student, solution;           ///< samples/s of each run
-    std::vector<double> studentMeans, solutionMeans; ///< whole-image radiance of each run
+    std::vector<double> student, solution; ///< samples per CPU-second of each run
     RayCounters studentRays, solutionRays;
     double studentSamples = 0, solutionSamples = 0;
+    double cpuSeconds = 0, wallSeconds = 0; ///< over every run: how much of its core it had
+    bool imagesDiffer = false; ///< a timed run of the lab rendered other images than its seeds'
 };
 
 std::string measureName(SpeedMeasure measure) {
@@ -250,37 +203,84 @@ SpeedVerdict judgeSpeed(const GraderSetup& setup, Lab lab, double perSample, dou
     return verdict;
 }
 
-/// The rubric's timed series of the lab and of the reference, interleaved A B A B so that a slow
-/// spell of a shared machine hits both alike; on the timing cores, holding the machine's timing
-/// lock. A run that fails ends it: nullopt, with the check's summary and diagnosis saying so.
+/// What the pairs so far say of the ratio against the threshold.
+enum class Decision { Faster, Slower, Undecided };
+
+/// The pairs' log ratios (yours over the reference's, plus `shift`, the log of the variances'
+/// ratio where efficiency is judged): below log(threshold) with confidence, above with
+/// confidence, or neither, by a one-sided Student's t interval at `alpha`.
+Decision decide(const std::vector<double>& logRatios, double shift, double threshold,
+                double alpha) {
+    if (logRatios.size() < 2) return Decision::Undecided;
+    const MeanEstimate m = batchMean(logRatios);
+    const double margin =
+        studentOneSidedCritical(alpha, static_cast<double>(logRatios.size() - 1)) * m.standardError;
+    const double estimate = m.mean + shift, limit = std::log(threshold);
+    if (estimate + margin < limit) return Decision::Slower;
+    if (estimate - margin >= limit) return Decision::Faster;
+    return Decision::Undecided;
+}
+
+/// The timed series of the lab and of the reference, interleaved A B A B so that a busy spell
+/// of a shared machine hits both alike; on the timing cores, holding the machine's timing lock.
+/// Pairs are added, `speedRuns` at a time, until the ratio is known to lie above or below the
+/// threshold, or SpeedPairsCap times `speedRuns` pairs ran. A run that fails ends it: nullopt,
+/// with the check's summary and diagnosis saying so.
 std::optional<TimedComparison> timeInterleaved(const GraderSetup& setup, Lab lab,
-                                               CheckResult& check, StartUpTimes& startUps) {
+                                               const std::vector<std::vector<float>>& images,
+                                               double shift, CheckResult& check,
+                                               StartUpTimes& startUps) {
+    const Rubric& r = setup.rubric;
+    const GradingScene* scene = speedScene(setup);
+    if (!scene) {
+        check.summary = "not measured: the rubric's speed scene '" + r.speedScene +
+                        "' is not among its correctness scenes";
+        check.diagnosis = "no speed scene";
+        return std::nullopt;
+    }
     const LabRunner studentRunner = timedRunner(setup.student, setup.timing);
     const LabRunner solutionRunner = timedRunner(setup.solution, setup.timing);
     const TimingLock lock(setup.timing.lockFile);
-    const TimedSeries series = timedSeries(setup, solutionRunner, Lab::Uniform, startUps);
+    const double startUp = startUpCpuSeconds(setup, solutionRunner, *scene, startUps);
     TimedComparison t;
-    for (int run = 0; run < setup.rubric.speedRuns; ++run) {
-        for (const LabRunner* runner : {&studentRunner, &solutionRunner}) {
-            const bool isStudent = runner == &studentRunner;
-            const TimedRun timed = timedRun(setup, series, *runner, lab, run);
-            if (!timed.result.ok) {
-                check.summary = std::string(isStudent ? "the lab " : "the reference ") +
-                                timed.result.failure + " in a timed run";
-                check.diagnosis = isStudent ? timed.result.failureKind : "the reference failed";
-                return std::nullopt;
+    std::vector<double> logRatios;
+    const int looks = SpeedPairsCap;
+    for (int look = 0; look < looks; ++look) {
+        for (int run = 0; run < r.speedRuns; ++run) {
+            for (const LabRunner* runner : {&studentRunner, &solutionRunner}) {
+                const bool isStudent = runner == &studentRunner;
+                const TimedRun timed = timedRun(setup, *scene, *runner, lab, startUp);
+                if (!timed.result.ok) {
+                    check.summary = std::string(isStudent ? "the lab " : "the reference ") +
+                                    timed.result.failure + " in a timed run";
+                    check.diagnosis = isStudent ? timed.result.failureKind : "the reference failed";
+                    return std::nullopt;
+                }
+                (isStudent ? t.student : t.solution).push_back(timed.samplesPerCpuSecond());
+                for (const RenderedImage& image : timed.result.images)
+                    (isStudent ? t.studentRays : t.solutionRays) += image.rays;
+                (isStudent ? t.studentSamples : t.solutionSamples) += timed.samples;
+                t.cpuSeconds += timed.result.process.cpuSeconds;
+                t.wallSeconds += timed.result.process.seconds;
+                if (isStudent && !images.empty()) {
+                    std::vector<std::vector<float>> rendered;
+                    for (const RenderedImage& image : timed.result.images)
+                        rendered.push_back(image.rgb);
+                    t.imagesDiffer = t.imagesDiffer || rendered != images;
+                }
             }
-            (isStudent ? t.student : t.solution).push_back(timed.samplesPerSecond);
-            (isStudent ? t.studentMeans : t.solutionMeans).push_back(timed.meanRadiance);
-            (isStudent ? t.studentRays : t.solutionRays) += timed.result.images.front().rays;
-            (isStudent ? t.studentSamples : t.solutionSamples) += timed.samples;
+            logRatios.push_back(std::log(t.student.back() / t.solution.back()));
         }
+        if (t.imagesDiffer) break;
+        // Each look spends its share of alpha (Bonferroni): the chance that a lab at the
+        // threshold is failed stays at most alpha over all of them.
+        if (decide(logRatios, shift, r.minSpeedRatio, r.speedAlpha / looks) != Decision::Undecided)
+            break;
     }
     return t;
 }
 
-/// Each pair's samples/s ratio, yours over the reference's: the two runs of a pair ran back to
-/// back, under the same load, which the ratio of the two medians would not keep together.
+/// The pairs' ratios, yours over the reference's, in run order.
 std::vector<double> pairRatios(const TimedComparison& t) {
     std::vector<double> ratios;
     for (size_t i = 0; i < t.student.size(); ++i) ratios.push_back(t.student[i] / t.solution[i]);
@@ -292,15 +292,16 @@ bool variancesKnown(const SampleVariances& variances) {
     return variances.student > 0 && variances.solution > 0;
 }
 
-/// The figures every verdict is told with: the summary's samples/s, ratio and measure, and the
-/// details' rays and variances per sample. `pairs`: how many interleaved pairs `ratio` is the
-/// median of.
+/// The figures every verdict is told with: the summary's samples per CPU-second (the geometric
+/// means of each side's runs, whose quotient is the ratio: one set of measurements), the
+/// measure, and the details' rays and variances per sample.
 void describeTimedRuns(const Rubric& r, Lab lab, double ratio, size_t pairs,
                        const SampleVariances& variances, SpeedOutcome& outcome) {
     CheckResult& check = outcome.check;
     check.summary = significant(outcome.studentSamplesPerSecond, 3) + " samples/s, " +
                     fixed(ratio, 2) + " times the reference solution's " +
-                    significant(outcome.solutionSamplesPerSecond, 3) + " (the median of " +
+                    significant(outcome.solutionSamplesPerSecond, 3) +
+                    " (per CPU-second of rendering; the geometric mean of " +
                     std::to_string(pairs) + " interleaved pairs)";
     if (variancesKnown(variances))
         check.summary +=
@@ -315,60 +316,80 @@ void describeTimedRuns(const Rubric& r, Lab lab, double ratio, size_t pairs,
                                 "; efficiency = 1/(variance per sample x time per sample)");
 }
 
-/// The timed runs must render the same image as the reference's too: a lab that is correct in
-/// the correctness runs but cuts corners when it runs longer earns no speed points. Says so in
-/// `check` when they do not.
-bool timedImageDiffers(const Rubric& r, const TimedComparison& t, CheckResult& check) {
-    const double floor = floatRoundingFloor * median(t.solutionMeans);
-    const bool differs =
-        r.speedRuns >= 2 && welchTwoSidedP(t.studentMeans, t.solutionMeans, floor) < r.alpha;
-    if (!differs) return false;
-    check.summary += "; the timed runs' mean radiance differs from the reference's, and "
-                     "speed counts only for a correct timed run";
-    check.diagnosis = "wrong image in the timed runs";
-    check.details.push_back("mean radiance of the timed runs: yours " +
-                            significant(median(t.studentMeans), 4) + ", the reference's " +
-                            significant(median(t.solutionMeans), 4));
-    return true;
+/// "the machine was busy: ..." when the timed runs had much less of their cores than their wall
+/// time; "" otherwise.
+std::string busyNote(const TimedComparison& t, const GraderSetup& setup) {
+    const size_t cores = setup.timing.cpus.empty() ? 0 : setup.timing.cpus.size();
+    if (cores == 0 || t.wallSeconds <= 0) return "";
+    const double share = t.cpuSeconds / (t.wallSeconds * static_cast<double>(cores));
+    if (share >= BusyShare) return "";
+    return "the machine was busy: the timed runs had " + std::to_string(std::lround(100 * share)) +
+           "% of their core (other processes shared it); the figures are CPU time, which that "
+           "changes little";
 }
 
 } // namespace
 
-SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, bool correct,
-                        const SampleVariances& variances, StartUpTimes& startUps) {
-    if (!setup.measureSpeed) return timeWithoutSolutions(setup, lab, correct, startUps);
+SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, const SpeedInputs& in,
+                        StartUpTimes& startUps) {
+    if (!setup.measureSpeed) return timeWithoutSolutions(setup, lab, in.correct, startUps);
     const Rubric& r = setup.rubric;
     SpeedOutcome outcome;
     CheckResult& check = outcome.check;
     check.kind = CheckKind::Speed;
     check.maxScore = r.forLab(lab).points.speed;
-    const std::optional<TimedComparison> timed = timeInterleaved(setup, lab, check, startUps);
+    const SampleVariances& variances = in.variances;
+    const bool byEfficiency =
+        r.forLab(lab).speedJudgedBy == SpeedMeasure::Efficiency && variancesKnown(variances);
+    const double shift = byEfficiency ? std::log(variances.solution / variances.student) : 0;
+    const std::optional<TimedComparison> timed =
+        timeInterleaved(setup, lab, in.speedSceneImages, shift, check, startUps);
     if (!timed) return outcome;
     const TimedComparison& t = *timed;
-    outcome.studentSamplesPerSecond = median(t.student);
-    outcome.solutionSamplesPerSecond = median(t.solution);
+    outcome.studentSamplesPerSecond = geometricMean(t.student);
+    outcome.solutionSamplesPerSecond = geometricMean(t.solution);
     outcome.studentRays = raysPerSample(t.studentRays, t.studentSamples);
     outcome.solutionRays = raysPerSample(t.solutionRays, t.solutionSamples);
     const std::vector<double> pairs = pairRatios(t);
-    const double ratio = median(pairs);
+    const double ratio = outcome.studentSamplesPerSecond / outcome.solutionSamplesPerSecond;
     // Efficiency, 1/(variance per sample x time per sample), from the noise check's variances
-    // (the same scene) and these samples/s.
+    // (the same scene) and these samples per CPU-second.
     outcome.efficiencyRatio =
         variancesKnown(variances) ? ratio * variances.solution / variances.student : 0;
     describeTimedRuns(r, lab, ratio, pairs.size(), variances, outcome);
-    if (!correct) {
+    if (const std::string busy = busyNote(t, setup); !busy.empty()) check.details.push_back(busy);
+    if (!in.correct) {
         check.summary += "; speed counts only for a correct lab";
         return outcome;
     }
-    if (timedImageDiffers(r, t, check)) return outcome;
+    if (t.imagesDiffer) {
+        check.summary += "; the timed runs rendered other images than the same seeds did in the "
+                         "correctness renders, and speed counts only for a lab that renders alike "
+                         "when timed";
+        check.diagnosis = "wrong image in the timed runs";
+        return outcome;
+    }
     if (r.forLab(lab).speedJudgedBy == SpeedMeasure::Efficiency && !variancesKnown(variances)) {
         // Cannot happen for a correct lab (the noise check measures both); said if it does.
         check.summary += "; efficiency unknown: the variances were not measured";
         check.diagnosis = "efficiency unknown";
         return outcome;
     }
+    std::vector<double> logRatios;
+    for (double p : pairs) logRatios.push_back(std::log(p));
+    const Decision decision =
+        decide(logRatios, shift, r.minSpeedRatio, r.speedAlpha / SpeedPairsCap);
     SpeedVerdict verdict = judgeSpeed(setup, lab, ratio, outcome.efficiencyRatio,
                                       outcome.studentRays, outcome.solutionRays);
+    if (decision == Decision::Undecided && !verdict.passed) {
+        // After the last pairs, neither above nor below the threshold with confidence: the lab
+        // is given the benefit of the doubt, and told so.
+        verdict = {};
+        verdict.passed = true;
+        verdict.details.push_back(
+            "after " + std::to_string(pairs.size()) + " pairs the ratio could not be told from " +
+            fixed(r.minSpeedRatio, 2) + " with confidence: the benefit of the doubt is yours");
+    }
     check.passed = verdict.passed;
     check.score = check.passed ? check.maxScore : 0;
     check.details.insert(check.details.end(), verdict.details.begin(), verdict.details.end());
@@ -376,14 +397,10 @@ SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, bool correct,
     return outcome;
 }
 
-double speedSceneStartUpSeconds(const GraderSetup& setup, const LabRunner& runner,
-                                StartUpTimes& startUps) {
-    return timedSeries(setup, runner, Lab::Branching, startUps).startup;
-}
-
-double timedSamplesPerSecond(const GraderSetup& setup, const LabRunner& runner, Lab lab,
-                             StartUpTimes& startUps) {
-    return timedRuns(setup, runner, lab, startUps).medianSamplesPerSecond();
+TimedFigures timedFigures(const GraderSetup& setup, const LabRunner& runner, Lab lab,
+                          StartUpTimes& startUps) {
+    const TimedRuns runs = timedRuns(setup, runner, lab, startUps);
+    return {runs.rate(), raysPerSample(runs.rays, runs.samples)};
 }
 
 } // namespace pathlab::grader

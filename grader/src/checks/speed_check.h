@@ -1,7 +1,12 @@
 #pragma once
-/// The speed check: a correct lab's timed renders on the rubric's speed scene, interleaved with
-/// the reference solution's, judged by samples/s or by efficiency as the rubric says, and
-/// explained with both labs' rays per sample.
+/// The speed check: a correct lab's timed renders, interleaved with the reference solution's,
+/// judged by samples per CPU-second or by efficiency as the rubric says, and explained with both
+/// labs' rays per sample. A timed run is the correctness render of the speed scene again,
+/// argument for argument (correctness_renders.h), and must render the same images; its time is
+/// the kernel's count of the sandbox's CPU time, which the machine's load changes little and the
+/// lab cannot report itself. A lab fails only when its ratio lies below the threshold with
+/// confidence (rubric: speed.alpha); pairs are added while that is undecided, up to a cap, where
+/// the lab has the benefit of the doubt.
 
 #include "checks/check_result.h"
 #include "checks/grader_setup.h"
@@ -11,29 +16,41 @@
 
 namespace pathlab::grader {
 
+/// The most pairs a lab is timed with, in multiples of the rubric's speed.runs.
+constexpr int SpeedPairsCap = 4;
+
+/// Below this share of their cores, the timed runs' machine was busy, and the check says so.
+constexpr double BusyShare = 0.8;
+
 /// The verdict and the figures measured on the way (LabGrade's fields of the same names).
 struct SpeedOutcome {
     CheckResult check;
-    double studentSamplesPerSecond = 0, solutionSamplesPerSecond = 0; ///< the timed runs' medians
+    /// Per CPU-second: the geometric means of each side's runs, whose quotient is the ratio.
+    double studentSamplesPerSecond = 0, solutionSamplesPerSecond = 0;
     RaysPerSample studentRays, solutionRays;
     double efficiencyRatio = 0; ///< 0: unknown
 };
 
-/// `correct`: the correctness verdict (speed counts only for a correct lab); `variances`: the
-/// noise check's, for the efficiency; `startUps`: the grading's start-up measurements.
-SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, bool correct,
-                        const SampleVariances& variances, StartUpTimes& startUps);
+/// What the checks before it give the speed check.
+struct SpeedInputs {
+    bool correct = false;      ///< the correctness verdict (speed counts only for a correct lab)
+    SampleVariances variances; ///< the noise check's, for the efficiency
+    /// The correctness renders' images of the speed scene (CorrectnessOutcome), which the timed
+    /// runs must render again.
+    std::vector<std::vector<float>> speedSceneImages;
+};
 
-/// The start-up of one render on the rubric's speed scene with `runner`'s labs (one pixel:
-/// loading the scene and building Embree's BVH), the median of three, measured once per grading
-/// (in `startUps`); 0 if none ran. The speed check subtracts it; time_limit.h scales the limits
-/// with it.
-double speedSceneStartUpSeconds(const GraderSetup& setup, const LabRunner& runner,
-                                StartUpTimes& startUps);
+/// `startUps`: the grading's start-up measurements.
+SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, const SpeedInputs& inputs,
+                        StartUpTimes& startUps);
 
-/// The median samples/s of the rubric's timed runs of one lab with `runner`'s labs alone (for
-/// the stored reference figures); 0 if a run failed.
-double timedSamplesPerSecond(const GraderSetup& setup, const LabRunner& runner, Lab lab,
-                             StartUpTimes& startUps);
+/// The rubric's timed runs of one lab with `runner`'s labs alone (for the stored reference
+/// figures): samples per CPU-second (the geometric mean; 0 if a run failed) and rays per sample.
+struct TimedFigures {
+    double samplesPerSecond = 0;
+    RaysPerSample rays;
+};
+TimedFigures timedFigures(const GraderSetup& setup, const LabRunner& runner, Lab lab,
+                          StartUpTimes& startUps);
 
 } // namespace pathlab::grader

@@ -20,6 +20,8 @@ the instructor's (they need the reference solutions, or a batch's output):
        grader submission PATH --out DIR       grade one submission, in the sandbox
        grader batch SUBMISSIONS --out DIR     grade every submission in a folder, in the sandbox
        grader merge DIR... --out DIR          merge the gradebooks of batch shards
+       grader make-variants DIR               write the rubric's variants of the public scenes
+                                              into DIR, as hidden scenes (--variant-seed N)
 
 A submission is a folder, a .zip, a .tar.gz or a git repository holding the four lab files
 (branching.cpp, uniform.cpp, importance.cpp, roulette.cpp); only those are taken.
@@ -68,6 +70,10 @@ batch
   --shard K/N         grade only every N-th submission, starting at the K-th (0-based)
   --no-race-check     skip the race check (each lab compiled with ThreadSanitizer and rendered
                       with 2 threads: a data race in its own code fails correctness)
+  --variant-seed N    where no hidden scenes are kept (and not --scenes none), the batch grades
+                      on the rubric's hidden_scenes.variants variants of the public scenes, made
+                      from this seed (default: the one kept in OUT/.variants/seed, else a new
+                      one); every shard of one class must be given the same
 )";
 
 namespace {
@@ -109,10 +115,12 @@ int readCommand(int argc, char** argv, Arguments& a) {
     if (argc <= 1) return 1;
     int first = 1;
     const std::string command = argv[1];
-    for (const char* known : {"make-references", "submission", "batch", "merge", "rubric"})
+    for (const char* known :
+         {"make-references", "submission", "batch", "merge", "rubric", "make-variants"})
         if (command == known) a.command = command, first = 2;
     // The instructor's commands compile or run the reference solutions.
-    if (!PATHLAB_HAS_SOLUTIONS && first == 2 && a.command != "merge" && a.command != "rubric")
+    if (!PATHLAB_HAS_SOLUTIONS && first == 2 && a.command != "merge" && a.command != "rubric" &&
+        a.command != "make-variants")
         throw InputError("grader " + a.command +
                          " is the instructor's: it needs the reference "
                          "solutions (solutions/), which the student release does not have; "
@@ -184,6 +192,10 @@ std::map<std::string, Checked> checkedOptions(Arguments& a, bool& scenesGiven) {
          }},
         {"--seed", [&](const std::string& o,
                        const std::string& v) { a.seed = static_cast<uint64_t>(number(o, v, 0)); }},
+        {"--variant-seed",
+         [&](const std::string& o, const std::string& v) {
+             a.variantSeed = static_cast<uint64_t>(number(o, v, 1));
+         }},
         {"--threads", [&](const std::string& o,
                           const std::string& v) { a.threads = static_cast<int>(number(o, v, 0)); }},
         {"--jobs", [&](const std::string& o,
@@ -229,7 +241,8 @@ void readOptions(int argc, char** argv, int first, Arguments& a, bool& scenesGiv
             a.command = "help";
         else if (!arg.empty() && arg[0] == '-')
             throw InputError("unknown option '" + arg + "' (grader --help lists the options)");
-        else if (a.command == "submission" || a.command == "batch" || a.command == "merge")
+        else if (a.command == "submission" || a.command == "batch" || a.command == "merge" ||
+                 a.command == "make-variants")
             a.inputs.push_back(arg);
         else
             throw InputError("unexpected argument '" + arg +
@@ -240,11 +253,12 @@ void readOptions(int argc, char** argv, int first, Arguments& a, bool& scenesGiv
 /// The hidden scenes' folder: the default one unless --scenes names another or none; a folder
 /// named is checked now, before any grading starts.
 void settleHiddenScenes(Arguments& a, bool scenesGiven) {
-    if (!scenesGiven)
+    if (!scenesGiven) {
         a.scenesDir = defaultHiddenScenesFolder();
-    else if (a.scenesDir == "none")
+    } else if (a.scenesDir == "none") {
         a.scenesDir.clear();
-    else if (!PATHLAB_HAS_SOLUTIONS)
+        a.scenesNone = true;
+    } else if (!PATHLAB_HAS_SOLUTIONS)
         throw InputError(
             "option --scenes: a hidden scene's reference is measured from the reference "
             "solutions, which the student release does not have");
@@ -265,6 +279,10 @@ void requireWhatTheCommandNeeds(const Arguments& a) {
     if ((a.command == "submission" || a.command == "batch" || a.command == "merge") &&
         a.out.empty())
         throw InputError("grader " + a.command + " needs --out DIR");
+    if (a.command == "make-variants" && a.inputs.size() != 1)
+        throw InputError("grader make-variants expects one folder to write the variants into");
+    if (a.variantSeed != 0 && a.command != "batch" && a.command != "make-variants")
+        throw InputError("option --variant-seed is for grader batch and grader make-variants");
 }
 
 /// The viewers: the one beside the grader unless named, checked to be programs before any

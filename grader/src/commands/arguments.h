@@ -17,6 +17,10 @@ struct Arguments {
     std::string viewer, solutionViewer;
     /// The hidden scenes: grader/hidden_scenes/ when it holds any, or --scenes DIR; "" for none.
     std::string scenesDir;
+    bool scenesNone = false; ///< --scenes none: the public scenes only, no variants either
+    /// batch, make-variants: the seed of the scene variants (scene_variants.h); 0: the one an
+    /// earlier batch into --out kept, else a new one.
+    uint64_t variantSeed = 0;
     bool revealHidden = false; ///< feedback may name hidden scenes and show their images
     std::string rubric, references;
     std::string json, junit, gradescope, html, report;

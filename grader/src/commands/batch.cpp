@@ -10,11 +10,12 @@
 // a lab's whole interleaved series, one thread per timed render, shared by every batch on the
 // machine); compiling and the correctness renders of every job share the other cores.
 #include "checks/grading_scenes.h"
+#include "checks/scene_variants.h"
 #include "checks/speed_check.h"
 #include "commands/batch_selection.h"
 #include "commands/commands.h"
+#include "commands/output_lock.h"
 #include "commands/submission_grading.h"
-#include "isolation/time_limit.h"
 #include "reports/gradebook.h"
 #include "reports/lab_figures.h"
 #include "reports/submission_time.h"
@@ -47,15 +48,6 @@ namespace fs = std::filesystem;
 
 LabBuild labBuildOfThisGrader() {
     return loadLabBuild((thisProgram().parent_path() / "lab_library_build.json").string());
-}
-
-/// The reference's start-up when the references were made; 0 if they hold none.
-double storedStartUpSeconds(const Arguments& a, const Rubric& rubric) {
-    try {
-        return loadLabFigures(a.references + "/lab_figures.json", rubric).startUpSeconds;
-    } catch (const InputError&) {
-        return 0;
-    }
 }
 
 void requireSandbox() {
@@ -412,11 +404,30 @@ JobCounts gradeInJobs(int jobs, const std::vector<std::string>& childBase,
     return counts;
 }
 
+/// The batch's arguments with its hidden scenes settled: the instructor's where there are any;
+/// else (unless --scenes none, or the rubric's hidden_scenes.variants is 0) the rubric's variants
+/// of the public scenes, written into OUT/.variants from the seed kept there (scene_variants.h).
+Arguments withHiddenScenes(const Arguments& a, const Rubric& rubric, const std::string& out) {
+    if (!a.scenesDir.empty() || a.scenesNone || rubric.sceneVariants <= 0) return a;
+    Arguments graded = a;
+    graded.scenesDir = out + "/.variants";
+    const std::string seedFile = graded.scenesDir + "/seed";
+    const uint64_t seed = variantSeed(a, seedFile);
+    writeSceneVariants(rubric, graded.scenesDir, seed);
+    writeFileAtomically(seedFile, std::to_string(seed) + "\n");
+    std::fprintf(stderr,
+                 "hidden scenes: none kept, so %d variant(s) of the public scenes, made from the "
+                 "seed in %s (the rubric's hidden_scenes.variants; --scenes none grades on the "
+                 "public scenes only)\n",
+                 rubric.sceneVariants, seedFile.c_str());
+    return graded;
+}
+
 } // namespace
 
 int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
     requireSandbox();
-    fs::create_directories(a.out);
+    const OutputLock lock(a.out, "grading of a submission");
     SubmissionGrader g;
     g.build = labBuildOfThisGrader();
     g.rubric = rubric;
@@ -439,19 +450,7 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
         if (!g.raceCheck.available())
             std::fprintf(stderr, "race check skipped: %s\n", g.raceCheck.unavailable.c_str());
     }
-    // The time limits, scaled to this machine's speed now: the solutions' start-up timed as it
-    // was when the references were made (outside the sandbox, on every core).
-    GraderSetup probe;
-    probe.rubric = rubric;
-    probe.scratch = scratch;
-    probe.threads = a.threads;
-    StartUpTimes startUps;
-    g.runSeconds =
-        scaledTimeLimit(rubric.secondsPerRun, speedSceneStartUpSeconds(probe, solution, startUps),
-                        storedStartUpSeconds(a, rubric));
-    if (g.runSeconds > rubric.secondsPerRun)
-        notes.push_back(timeLimitNote(rubric.secondsPerRun, g.runSeconds));
-    SubmissionOutcome outcome = gradeSubmission(g, a.inputs[0], a.out);
+    SubmissionOutcome outcome = gradeSubmission(g, a.inputs[0], a.out, scratch);
     outcome.report.notes.insert(outcome.report.notes.begin(), notes.begin(), notes.end());
     std::printf("%s: %s\n", outcome.id.c_str(), outcome.status.c_str());
     std::fputs(terminalReport(outcome.report, false).c_str(), stdout);
@@ -459,13 +458,15 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
     return 0;
 }
 
-int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
+int runBatch(const Arguments& given, const Rubric& rubric, const std::string& scratch) {
     requireSandbox();
+    const OutputLock lock(given.out, "grader batch");
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<Submission> submissions = listSubmissions(a);
-    requireKnownIds(a.only, submissions);
-    fs::create_directories(a.out + "/submissions");
-    const std::string out = fs::absolute(a.out).string();
+    const std::vector<Submission> submissions = listSubmissions(given);
+    requireKnownIds(given.only, submissions);
+    fs::create_directories(given.out + "/submissions");
+    const std::string out = fs::absolute(given.out).string();
+    const Arguments a = withHiddenScenes(given, rubric, out);
     const DeadlineAndTimes dates = deadlineAndTimes(a, out);
     const GradingNow grading = gradingNow(a, rubric, dates.deadline, dates.times);
     if (a.shards == 1) noteTimesOfOthers(grading, submissions);

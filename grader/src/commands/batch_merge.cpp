@@ -1,6 +1,7 @@
 // grader merge: the gradebooks of batch shards (grader batch --shard, run on several machines)
 // as one.
 #include "commands/commands.h"
+#include "commands/output_lock.h"
 #include "reports/gradebook.h"
 #include "reports/submission_time.h"
 #include "similarity/class_similarity.h"
@@ -71,6 +72,7 @@ int mergeBatches(const Arguments& a) {
             throw InputError("option --deadline: cannot read the time '" + deadline + "'");
     }
     if (!times.empty()) now.times = loadSubmissionTimes(times);
+    const OutputLock lock(a.out, "grader batch or merge");
     fs::create_directories(a.out + "/submissions");
     for (const std::string& shard : a.inputs)
         if (fs::absolute(shard) != fs::absolute(a.out))

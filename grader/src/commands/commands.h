@@ -22,5 +22,10 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
 int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratch);
 /// Merges the outputs of batch shards into one gradebook in --out.
 int mergeBatches(const Arguments& a);
+/// Writes the rubric's scene variants into the folder named (grader make-variants).
+int makeVariants(const Arguments& a, const Rubric& rubric);
+/// The seed of scene variants: --variant-seed, else the one kept in the file `keptIn`, else a
+/// new random one.
+uint64_t variantSeed(const Arguments& a, const std::string& keptIn);
 
 } // namespace pathlab::grader

@@ -5,7 +5,6 @@
 #include "checks/speed_check.h"
 #include "commands/commands.h"
 #include "commands/grade_lab.h"
-#include "isolation/time_limit.h"
 #include "reports/lab_figures.h"
 #include "reports/reports.h"
 #include "reports/sweep_figures.h"
@@ -35,18 +34,25 @@ void makeLabFigures(const Arguments& a, const Rubric& rubric, const std::string&
     setup.rubric = rubric;
     setup.scratch = scratch;
     setup.threads = a.threads;
+    // The timed runs render the speed scene as the correctness check does; no reference needed.
+    GradingScene speed;
+    speed.path = std::string(PATHLAB_MODELS_DIR) + "/" + rubric.speedScene + ".ecs";
+    speed.reference.scene = rubric.speedScene;
+    speed.name = rubric.speedScene;
+    setup.scenes = {speed};
     LabFigures figures;
     figures.machine = thisMachine(a.threads);
     StartUpTimes startUps;
-    figures.startUpSeconds = speedSceneStartUpSeconds(setup, setup.solution, startUps);
     {
         ProgressBar bar("lab figures: timed runs", "labs");
         int timed = 0;
         for (Lab lab : AllLabs) {
-            figures.timedSamplesPerSecond[lab] =
-                timedSamplesPerSecond(setup, setup.solution, lab, startUps);
+            const TimedFigures measured = timedFigures(setup, setup.solution, lab, startUps);
+            figures.timedSamplesPerSecond[lab] = measured.samplesPerSecond;
+            figures.timedRays[lab] = measured.rays;
             bar.update(++timed, static_cast<int>(AllLabs.size()));
         }
+        figures.timedRaysKnown = true;
     }
     std::fprintf(stderr, "lab figures: the notebook's renders ...\n");
     figures.notebook = measureNotebook(setup.solution,
@@ -140,17 +146,7 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
     setup.scenes =
         gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden},
                       setup.solution, scratch, report.notes);
-    // The time limits, scaled to this machine's speed now: the reference's start-up where this
-    // build has the solutions, the student's own viewer's where it has not (the start-up is the
-    // scene and Embree's BVH, the same for any lab).
     StartUpTimes startUps;
-    setup.runSeconds = scaledTimeLimit(
-        rubric.secondsPerRun,
-        speedSceneStartUpSeconds(setup, PATHLAB_HAS_SOLUTIONS ? setup.solution : setup.student,
-                                 startUps),
-        stored ? stored->startUpSeconds : 0);
-    if (setup.runSeconds > rubric.secondsPerRun)
-        report.notes.push_back(timeLimitNote(rubric.secondsPerRun, setup.runSeconds));
     for (Lab lab : a.labs) {
         std::fprintf(stderr, "grading %s ...\n", std::string(labName(lab)).c_str());
         report.labs.push_back(gradeLab(setup, lab, startUps));

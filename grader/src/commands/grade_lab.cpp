@@ -50,7 +50,8 @@ LabGrade gradeLab(const GraderSetup& setup, Lab lab, StartUpTimes& startUps) {
         grade.checks.push_back(speed);
         return grade;
     }
-    const SpeedOutcome speed = checkSpeed(setup, lab, correct, noise.variances, startUps);
+    const SpeedOutcome speed =
+        checkSpeed(setup, lab, {correct, noise.variances, correctness.speedSceneImages}, startUps);
     grade.checks.push_back(speed.check);
     grade.studentSamplesPerSecond = speed.studentSamplesPerSecond;
     grade.solutionSamplesPerSecond = speed.solutionSamplesPerSecond;

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
                 std::fputs(rubricText(rubric, a.rubric, hidden).c_str(), stdout);
                 return 0;
             }
+            if (a.command == "make-variants") return makeVariants(a, rubric);
             char pattern[] = "/tmp/pathlab-grader-XXXXXX";
             if (!::mkdtemp(pattern)) throw std::runtime_error("cannot make a scratch folder");
             scratch = pattern;

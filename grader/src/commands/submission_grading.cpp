@@ -64,7 +64,6 @@ GraderSetup setupFor(const SubmissionGrader& grader, const SubmissionLibrary& li
     setup.seedBase = grader.seedBase;
     setup.threads = grader.threads;
     setup.measureSpeed = grader.measureSpeed;
-    setup.runSeconds = grader.runSeconds;
     return setup;
 }
 
@@ -111,13 +110,13 @@ std::string gradeLabs(const SubmissionGrader& grader, const SubmissionLibrary& l
 } // namespace
 
 SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::string& submission,
-                                  const std::string& folder) {
+                                  const std::string& folder, const std::string& scratchRoot) {
     const auto start = std::chrono::steady_clock::now();
     SubmissionOutcome outcome;
     outcome.id = submissionId(submission);
     const SandboxPolicy policy{grader.workCpus, sandboxUserForThisProcess()};
     const std::string sources = folder + "/submitted", build = folder + "/build",
-                      scratch = folder + "/scratch";
+                      scratch = scratchRoot + "/renders";
     for (const std::string& f : {sources, build, scratch}) {
         fs::remove_all(f);
         makeReadableFolder(f);

@@ -24,7 +24,6 @@ struct SubmissionGrader {
     uint64_t seedBase = 1;
     int threads = 0; ///< threads per correctness render (0: all cores)
     bool measureSpeed = true;
-    double runSeconds = 0;  ///< each render's time limit (GraderSetup::runSeconds)
     std::string scenesHash; ///< grading_scenes.h: recorded in result.json with the rubric's hash
     /// The race check (race_check.h); when unavailable, no lab is checked, none failed for it.
     RaceCheckRuntime raceCheck;
@@ -39,11 +38,12 @@ struct SubmissionOutcome {
     Intake intake;
 };
 
-/// Grades `submission` with its working files in `folder`, and writes there, in this order,
-/// feedback.json (the grader's JSON report), index.html, and result.json (a summary for the
-/// gradebook). result.json is written last and atomically: its presence means done.
+/// Grades `submission` with its working files in `folder` (its renders' in `scratch`, a folder
+/// of this grading's own), and writes there, in this order, feedback.json (the grader's JSON
+/// report), index.html, and result.json (a summary for the gradebook). result.json is written
+/// last and atomically: its presence means done.
 SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::string& submission,
-                                  const std::string& folder);
+                                  const std::string& folder, const std::string& scratch);
 
 /// result.json's text for an outcome.
 std::string resultJson(const SubmissionOutcome& outcome, const std::string& submission);

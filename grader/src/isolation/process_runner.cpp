@@ -10,13 +10,30 @@
 
 namespace pathlab::grader {
 
+bool ProcessOutcome::usedUpCpuTime() const {
+    // The kernel ends a process at its CPU limit with SIGKILL (soft and hard limit alike) or
+    // SIGXCPU; its CPU time then stands at the limit, give or take a tick.
+    return cpuLimit > 0 && (signal == SIGKILL || signal == SIGXCPU) &&
+           cpuSeconds >= 0.97 * cpuLimit;
+}
+
 std::string ProcessOutcome::describe() const {
     if (!started) return "could not be started";
+    char figures[160];
     if (timedOut) {
-        char limit[32];
-        std::snprintf(limit, sizeof limit, "%.0f s", wallLimit);
-        return std::string("did not finish within the time limit of ") + limit +
-               " (an endless loop, or recursion that never ends?)";
+        std::snprintf(figures, sizeof figures,
+                      "did not finish within %.0f s of wall-clock time, the last-resort limit",
+                      wallLimit);
+        return figures;
+    }
+    if (stoppedBy != 0)
+        return "stopped its own process (" + std::string(strsignal(stoppedBy)) + ", signal " +
+               std::to_string(stoppedBy) +
+               "), which would only have waited for the time limit: a lab must not stop or "
+               "signal the process it runs in";
+    if (usedUpCpuTime()) {
+        std::snprintf(figures, sizeof figures, "used up its CPU time limit of %.0f s", cpuLimit);
+        return figures;
     }
     if (signal != 0) {
         std::string name = strsignal(signal);
@@ -27,6 +44,7 @@ std::string ProcessOutcome::describe() const {
         if (signal == SIGABRT) hint = ": aborted, e.g. an uncaught exception or a failed assert";
         if (signal == SIGXCPU) hint = ": it used more CPU time than allowed";
         if (signal == SIGXFSZ) hint = ": it wrote a file larger than allowed";
+        if (signal == SIGSYS) hint = ": a system call the sandbox forbids";
         return "crashed (" + name + ", signal " + std::to_string(signal) + ")" + hint;
     }
     if (exitStatus != 0) {
@@ -36,6 +54,13 @@ std::string ProcessOutcome::describe() const {
         return "exited with status " + std::to_string(exitStatus);
     }
     return "finished";
+}
+
+std::string ProcessOutcome::outputNote() const {
+    if (!outputCutOff) return "";
+    return "it printed more than " + std::to_string(outputReadBytes >> 20) +
+           " MiB: what followed was not read (printing slows a render down; leave it out of "
+           "pathTrace)";
 }
 
 std::string ProcessOutcome::outputTail(int lines) const {
@@ -77,13 +102,18 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const ProcessLim
     setup.cpus = options.cpus;
     setup.user = options.user;
     setup.collectPipe = options.collectBytes > 0;
+    setup.passedFds = options.passedFds;
+    setup.isolated = options.isolated;
     // Each sandbox leaves an orphan to reap: reaped here, whatever this process's ancestors do.
     setup.reapOrphans = true;
-    const ChildRun run =
-        runChild(argv, setup, {limits.wallSeconds, 64u << 10, options.collectBytes});
+    RunLimits runLimits{limits.wallSeconds, 64u << 10, options.collectBytes};
+    if (limits.outputReadBytes > 0) runLimits.outputReadBytes = limits.outputReadBytes;
+    const ChildRun run = runChild(argv, setup, runLimits);
 
     ProcessOutcome outcome;
     outcome.wallLimit = limits.wallSeconds;
+    outcome.cpuLimit = limits.cpuSeconds;
+    outcome.outputReadBytes = limits.outputReadBytes;
     if (!run.started) return outcome;
     outcome.started = true;
     outcome.timedOut = run.timedOut;
@@ -91,6 +121,8 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const ProcessLim
     outcome.output = run.output;
     outcome.collected = run.collected;
     outcome.collectOverflow = run.collectOverflow;
+    outcome.outputCutOff = run.outputCutOff;
+    outcome.cpuSeconds = run.cpuSeconds;
     if (WIFEXITED(run.waitStatus)) outcome.exitStatus = WEXITSTATUS(run.waitStatus);
     if (WIFSIGNALED(run.waitStatus) && !run.timedOut) outcome.signal = WTERMSIG(run.waitStatus);
     return outcome;

@@ -14,6 +14,9 @@ struct ProcessLimits {
     double cpuSeconds = 0;   ///< CPU time per process (RLIMIT_CPU); 0 = none
     long long fileBytes = 0; ///< largest file it may write (RLIMIT_FSIZE); 0 = none
     int processes = 0;       ///< processes of its user (RLIMIT_NPROC); 0 = none
+    /// Its output is read up to this many bytes, then no more: what it prints after fails
+    /// (ProcessOutcome::outputCutOff); 0 = all of it.
+    size_t outputReadBytes = 0;
 };
 
 /// How to start it, beyond its limits.
@@ -23,6 +26,10 @@ struct ProcessOptions {
     /// Give it a pipe as file descriptor 3 and keep what it writes there, up to this many
     /// bytes (0: no descriptor 3). The sandbox hands files back this way.
     size_t collectBytes = 0;
+    /// Open files it gets as descriptors 10, 11, ... (child_process.h, ChildSetup::passedFds).
+    std::vector<int> passedFds;
+    /// Nothing of this process but what is named reaches it (ChildSetup::isolated).
+    bool isolated = false;
 };
 
 struct ProcessOutcome {
@@ -30,15 +37,26 @@ struct ProcessOutcome {
     bool timedOut = false;
     int exitStatus = -1;          ///< when it exited normally
     int signal = 0;               ///< when a signal ended it
+    int stoppedBy = 0;            ///< the signal it stopped itself with (the sandbox then ends it)
     double seconds = 0;           ///< wall time, measured here
     double wallLimit = 0;         ///< the time limit it ran under (ProcessLimits::wallSeconds)
+    double cpuSeconds = 0;        ///< CPU time of it and its descendants, as the kernel counts it
+    double cpuLimit = 0;          ///< the CPU time limit it ran under (0: none)
     std::string output;           ///< stdout and stderr together (the last 64 KiB)
+    bool outputCutOff = false;    ///< it printed more than ProcessLimits::outputReadBytes
+    size_t outputReadBytes = 0;   ///< that limit
     std::string collected;        ///< what it wrote on descriptor 3
     bool collectOverflow = false; ///< it wrote more there than allowed
 
-    bool succeeded() const { return started && !timedOut && signal == 0 && exitStatus == 0; }
+    bool succeeded() const {
+        return started && !timedOut && signal == 0 && stoppedBy == 0 && exitStatus == 0;
+    }
+    /// Whether the CPU time limit ended it.
+    bool usedUpCpuTime() const;
     /// One sentence a student can act on, e.g. "crashed (segmentation fault, signal 11)".
     std::string describe() const;
+    /// "it printed more than 4 MiB: what followed was not read", or "" if it printed less.
+    std::string outputNote() const;
     /// The last lines it printed, for feedback (at most `lines` lines, each cut to 200 chars).
     std::string outputTail(int lines = 6) const;
 };

@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -21,10 +23,18 @@ namespace fs = std::filesystem;
 /// Where the viewer writes the path inspector's JSON, in the scratch folder (or the sandbox's).
 constexpr const char* ReplayFile = "replay.json";
 
-std::vector<std::string> viewerArguments(const RenderRequest& r, const std::string& image,
-                                         const std::string& stats, const std::string& replay) {
+/// A render may print this much; what follows is not read (ProcessOutcome::outputNote).
+constexpr size_t RenderOutputBytes = 4u << 20;
+
+/// The start of the line the viewer's watchdog prints when a lab finishes no sample
+/// (pathlab/render_watchdog.h).
+constexpr const char* WatchdogWords = "render watchdog: ";
+
+std::vector<std::string> viewerArguments(const RenderRequest& r, const std::string& scene,
+                                         const std::string& image, const std::string& stats,
+                                         const std::string& replay, const RenderLimits& limits) {
     std::vector<std::string> argv = {"-c",
-                                     r.scene,
+                                     scene,
                                      "--size",
                                      std::to_string(r.width),
                                      std::to_string(r.height),
@@ -44,10 +54,11 @@ std::vector<std::string> viewerArguments(const RenderRequest& r, const std::stri
                                      image,
                                      "--stats",
                                      stats};
-    // The grader's own time limit stops a lab that never returns, and says so (time_limit.h),
-    // whatever limit an instructor sets: the viewer's watchdog, which would fire first under a
-    // limit longer than its own, is off.
-    argv.insert(argv.end(), {"--watchdog", "0"});
+    // A lab that finishes no sample is stopped by the viewer's watchdog, which says so; one
+    // that keeps finishing samples is stopped only by its CPU time (renderLab).
+    char stall[32];
+    std::snprintf(stall, sizeof stall, "%g", limits.stallSeconds);
+    argv.insert(argv.end(), {"--watchdog", stall});
     if (!r.runner->sandboxed() && r.runner->implementation == Implementation::Solution)
         argv.push_back("--solution");
     if (r.threads > 0) argv.insert(argv.end(), {"--threads", std::to_string(r.threads)});
@@ -67,18 +78,40 @@ std::pair<std::string, std::string> outputNames(const RenderRequest& r, uint64_t
     return {"render-" + std::to_string(seed) + ".pfm", "render-" + std::to_string(seed) + ".json"};
 }
 
+/// The render's threads: its --threads, or the cores it may run on.
+unsigned renderThreads(const RenderRequest& r) {
+    if (r.threads > 0) return static_cast<unsigned>(r.threads);
+    const std::vector<int>& cpus = r.runner->sandboxed() ? r.runner->sandbox.cpus : r.runner->cpus;
+    if (!cpus.empty()) return static_cast<unsigned>(cpus.size());
+    return std::max(1u, std::thread::hardware_concurrency());
+}
+
+/// The process limits of a render: its CPU time over its threads, the last-resort wall clock,
+/// memory, and how much of its output is read.
+ProcessLimits processLimits(const RenderRequest& r, const RenderLimits& limits) {
+    ProcessLimits p;
+    p.wallSeconds = limits.wallSeconds;
+    p.memoryBytes = limits.memoryBytes;
+    p.cpuSeconds = limits.cpuSecondsPerThread * renderThreads(r);
+    p.outputReadBytes = RenderOutputBytes;
+    return p;
+}
+
 /// Runs the submission viewer in the sandbox and puts the images and stats it leaves into the
-/// request's scratch folder on the host. Returns a problem in words, or "".
-std::string renderSandboxed(const RenderRequest& r, const ProcessLimits& limits,
+/// request's scratch folder on the host (those it finished, also when it failed). Returns a
+/// problem in words, or "".
+std::string renderSandboxed(const RenderRequest& r, const RenderLimits& limits,
                             ProcessOutcome& process) {
+    const SandboxedScene scene = sandboxedScene(r.scene);
     SandboxRun run;
     run.command = {"/pathlab/viewer"};
-    const auto arguments = viewerArguments(r, "render.pfm", "render.json", ReplayFile);
+    const auto arguments =
+        viewerArguments(r, scene.ecs, "render.pfm", "render.json", ReplayFile, limits);
     run.command.insert(run.command.end(), arguments.begin(), arguments.end());
     // No image-file plug-in: the viewer writes the .pfm it is asked for without one.
     run.files = {{r.runner->viewer, "/pathlab/viewer"},
                  {r.runner->libraryFor(r.lab), "/pathlab/labs.so"}};
-    for (const std::string& file : sceneFiles(r.scene)) run.files.push_back({file, file});
+    run.files.insert(run.files.end(), scene.files.begin(), scene.files.end());
     run.environment = {{"PATHLAB_LABS_LIBRARY", "/pathlab/labs.so"}};
     for (int k = 0; k < r.seeds; ++k) {
         const auto [image, stats] = outputNames(r, r.seed + static_cast<uint64_t>(k));
@@ -86,24 +119,19 @@ std::string renderSandboxed(const RenderRequest& r, const ProcessLimits& limits,
     }
     if (r.inspectSamples > 0) run.collect.push_back(ReplayFile);
     run.scratchBytes = 64LL << 20;
-    ProcessLimits sandboxLimits = limits;
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    const unsigned threads = r.threads > 0 ? static_cast<unsigned>(r.threads) : cores;
-    sandboxLimits.cpuSeconds = limits.wallSeconds * threads;
+    ProcessLimits sandboxLimits = processLimits(r, limits);
     sandboxLimits.fileBytes = 64LL << 20;
-    // Threads count as processes: 64 for the viewer's own (bubblewrap, the window-less render
-    // thread, TBB's helpers) beside one per render thread, so a node of 64 cores or more can
-    // render on all of them.
-    sandboxLimits.processes = 64 + threads;
+    // Threads count as processes: 64 for the viewer's own (the window-less render thread, TBB's
+    // helpers) beside one per render thread, so a node of 64 cores or more can render on all.
+    sandboxLimits.processes = 64 + static_cast<int>(renderThreads(r));
     SandboxOutcome outcome = runInSandbox(run, sandboxLimits, r.runner->sandbox);
     process = outcome.process;
-    if (!process.succeeded()) return "";
     if (!outcome.problem.empty()) return outcome.problem;
-    for (const std::string& name : run.collect) {
-        const auto file = outcome.files.find(name);
-        if (file == outcome.files.end()) return "it wrote no " + name;
-        std::ofstream(r.scratch + "/" + name, std::ios::binary) << file->second;
-    }
+    for (const auto& [name, bytes] : outcome.files)
+        std::ofstream(r.scratch + "/" + name, std::ios::binary) << bytes;
+    if (!process.succeeded()) return "";
+    for (const std::string& name : run.collect)
+        if (!outcome.files.count(name)) return "it wrote no " + name;
     return "";
 }
 
@@ -135,9 +163,76 @@ std::string readRendered(const RenderRequest& r, uint64_t seed, RenderedImage& r
     return "";
 }
 
+/// The seeds' images of a request that are in the scratch folder.
+int seedsFinished(const RenderRequest& r) {
+    int finished = 0;
+    for (int k = 0; k < r.seeds; ++k)
+        if (fs::exists(r.scratch + "/" + outputNames(r, r.seed + static_cast<uint64_t>(k)).first))
+            ++finished;
+    return finished;
+}
+
+/// Why a render's process failed, in words for the student and in a few (its kind), with the
+/// lines it printed last.
+void describeFailure(const RenderRequest& r, const RenderLimits& limits, RenderResult& result) {
+    const ProcessOutcome& p = result.process;
+    std::string printed = p.outputTail(8);
+    const size_t watchdog = printed.find(WatchdogWords);
+    char words[200];
+    if (p.exitStatus == 1 && watchdog != std::string::npos) {
+        // The watchdog's own line names the viewer's option: the grader's words say it instead.
+        printed.erase(watchdog);
+        std::snprintf(words, sizeof words,
+                      "finished no sample for %g s: an endless loop, or recursion that never "
+                      "ends?",
+                      limits.stallSeconds);
+        result.failure = words;
+        result.failureKind = "endless loop";
+    } else if (p.usedUpCpuTime()) {
+        std::snprintf(words, sizeof words,
+                      "finished %d of %d seeds in %.0f s of CPU time: too slow for the limit "
+                      "(%g s per render thread)",
+                      seedsFinished(r), r.seeds, p.cpuSeconds, limits.cpuSecondsPerThread);
+        result.failure = words;
+        result.failureKind = "too slow";
+    } else {
+        result.failure = p.describe();
+        result.failureKind = p.timedOut         ? "wall-clock limit"
+                             : p.stoppedBy != 0 ? "stopped itself"
+                             : p.signal != 0    ? "crashed"
+                             : result.failure.find("memory") != std::string::npos
+                                 ? "out of memory"
+                                 : "exited with an error";
+    }
+    while (!printed.empty() && (printed.back() == '\n' || printed.back() == ' '))
+        printed.pop_back();
+    if (!printed.empty()) result.failure += "; it printed: " + printed;
+    if (!result.outputNote.empty()) result.failure += " (" + result.outputNote + ")";
+}
+
 } // namespace
 
-RenderResult renderLab(const RenderRequest& r, const ProcessLimits& limits) {
+SandboxedScene sandboxedScene(const std::string& ecsPath) {
+    const fs::path folder = fs::absolute(ecsPath).parent_path();
+    std::vector<std::pair<std::string, fs::path>> relative;
+    size_t depth = 0; // how far above the .ecs's folder its files reach ("../meshes/x.obj")
+    for (const std::string& file : sceneFiles(ecsPath)) {
+        const fs::path rel = fs::absolute(file).lexically_normal().lexically_relative(folder);
+        size_t up = 0;
+        for (const fs::path& part : rel) up += part == ".." ? 1 : 0;
+        depth = std::max(depth, up);
+        relative.push_back({file, rel});
+    }
+    fs::path root = "/scene";
+    for (size_t i = 0; i < depth; ++i) root /= "in";
+    SandboxedScene scene;
+    scene.ecs = (root / fs::absolute(ecsPath).lexically_normal().filename()).string();
+    for (const auto& [host, rel] : relative)
+        scene.files.push_back({host, (root / rel).lexically_normal().string()});
+    return scene;
+}
+
+RenderResult renderLab(const RenderRequest& r, const RenderLimits& limits) {
     RenderResult result;
     for (int k = 0; k < r.seeds; ++k) {
         const auto [image, stats] = outputNames(r, r.seed + static_cast<uint64_t>(k));
@@ -150,23 +245,17 @@ RenderResult renderLab(const RenderRequest& r, const ProcessLimits& limits) {
         problem = renderSandboxed(r, limits, result.process);
     } else {
         std::vector<std::string> argv = {r.runner->viewer};
-        const auto arguments = viewerArguments(
-            r, r.scratch + "/render.pfm", r.scratch + "/render.json", r.scratch + "/" + ReplayFile);
+        const auto arguments =
+            viewerArguments(r, r.scene, r.scratch + "/render.pfm", r.scratch + "/render.json",
+                            r.scratch + "/" + ReplayFile, limits);
         argv.insert(argv.end(), arguments.begin(), arguments.end());
         ProcessOptions options;
         options.cpus = r.runner->cpus;
-        result.process = runProcess(argv, limits, options);
+        result.process = runProcess(argv, processLimits(r, limits), options);
     }
+    result.outputNote = result.process.outputNote();
     if (!result.process.succeeded()) {
-        const ProcessOutcome& p = result.process;
-        result.failure = p.describe();
-        result.failureKind = p.timedOut      ? "time limit"
-                             : p.signal != 0 ? "crashed"
-                             : result.failure.find("memory") != std::string::npos
-                                 ? "out of memory"
-                                 : "exited with an error";
-        const std::string printed = result.process.outputTail(8);
-        if (!printed.empty()) result.failure += "; it printed: " + printed;
+        describeFailure(r, limits, result);
         return result;
     }
     if (!problem.empty()) {

@@ -72,6 +72,9 @@ struct RenderResult {
     bool ok = false;
     std::string failure;     ///< why not ok, in words for the student
     std::string failureKind; ///< the same in a few words ("crashed", "time limit", ...)
+    /// What the lab printed, apart from `failure` (which quotes its last lines): for a scene the
+    /// student may not see, nothing of either is shown (correctness_check.cpp).
+    std::string outputNote; ///< ProcessOutcome::outputNote, when it printed past the limit
     ProcessOutcome process;
     int width = 0, height = 0;
     std::vector<RenderedImage> images; ///< one per seed, in order
@@ -80,8 +83,26 @@ struct RenderResult {
     const std::vector<float>& image() const { return images.front().rgb; }
 };
 
+/// What one render may take. Its work is limited in CPU time and in progress, which the machine's
+/// load does not change, so a correct lab is never stopped because other work shares the cores;
+/// wall-clock time only as the last resort.
+struct RenderLimits {
+    double cpuSecondsPerThread = 30; ///< the render's CPU time over its threads
+    double stallSeconds = 15;        ///< the viewer's watchdog: no sample finished for this long
+    double wallSeconds = 300;        ///< the last resort, whatever the load
+    long long memoryBytes = 4LL << 30;
+};
+
 /// Runs one viewer process for all the request's seeds; the limits hold for that process.
-RenderResult renderLab(const RenderRequest& request, const ProcessLimits& limits);
+RenderResult renderLab(const RenderRequest& request, const RenderLimits& limits);
+
+/// A scene's files as a sandboxed render sees them: under /scene, laid out as on the host
+/// relative to the .ecs, so that no path of the host shows; `ecs` is the .ecs inside.
+struct SandboxedScene {
+    std::string ecs;
+    std::vector<std::pair<std::string, std::string>> files; ///< host path, path inside
+};
+SandboxedScene sandboxedScene(const std::string& ecsPath);
 
 /// Means of the image and of its tiles × tiles regions, per channel: region 0 is the whole
 /// image, then the tiles row by row. Returned flat: [region][channel].

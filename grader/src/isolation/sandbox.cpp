@@ -2,9 +2,14 @@
 
 #include "isolation/user_namespaces.h"
 
+#include "process/child_process.h"
+
 #include <algorithm>
 #include <csignal>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -14,22 +19,64 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string collectScript = std::string(PATHLAB_GRADER_DIR) + "/sandbox/collect.sh";
+/// Where the sandbox's first process, the grader's own (sandbox_init.cpp), is inside.
+constexpr const char* InitInside = "/pathlab/init";
 
-std::vector<std::string> bubblewrapArguments(const SandboxRun& run) {
+/// A host file copied into the sandbox: open here, handed to bubblewrap as a descriptor.
+struct CopiedFile {
+    int fd = -1;
+    std::string inside;
+    bool executable = false;
+};
+
+/// The host files of `run` (and the init) opened, a folder's regular files one by one; on a file
+/// that cannot be opened, `problem` names it and what is open so far is returned to be closed.
+std::vector<CopiedFile> openCopiedFiles(const SandboxRun& run, std::string& problem) {
+    std::vector<std::pair<std::string, std::string>> files = {{PATHLAB_SANDBOX_INIT, InitInside}};
+    for (const auto& [host, inside] : run.files) {
+        std::error_code error;
+        if (!fs::is_directory(host, error)) {
+            files.push_back({host, inside});
+            continue;
+        }
+        for (const auto& entry : fs::recursive_directory_iterator(host, error))
+            if (fs::is_regular_file(entry.symlink_status(error)))
+                files.push_back({entry.path().string(),
+                                 inside + "/" + entry.path().lexically_relative(host).string()});
+    }
+    std::vector<CopiedFile> opened;
+    for (const auto& [host, inside] : files) {
+        const int fd = ::open(host.c_str(), O_RDONLY | O_CLOEXEC);
+        struct stat info {};
+        if (fd < 0 || ::fstat(fd, &info) != 0) {
+            problem =
+                "cannot read " + host + " to copy it into the sandbox: " + std::strerror(errno);
+            if (fd >= 0) ::close(fd);
+            return opened;
+        }
+        opened.push_back({fd, inside, (info.st_mode & S_IXUSR) != 0});
+    }
+    return opened;
+}
+
+std::vector<std::string> bubblewrapArguments(const SandboxRun& run,
+                                             const std::vector<CopiedFile>& copied) {
     std::vector<std::string> a = {
         "/usr/bin/bwrap",
-        // New namespaces for everything (no network: only a loopback that is down), dying
-        // with the grader, in a session of its own (no terminal to inject keys into).
+        // New namespaces for everything (no network: only a loopback that is down), dying with
+        // the grader, in a session of its own (no terminal to inject keys into). Its first
+        // process is ours (--as-pid-1): nothing of bubblewrap's is inside for a submission to
+        // read or take over.
         "--unshare-all", "--unshare-user", "--disable-userns", "--die-with-parent", "--new-session",
-        "--cap-drop", "ALL", "--clearenv", "--setenv", "PATH", "/usr/bin:/bin", "--setenv", "HOME",
-        SandboxScratch, "--setenv", "TMPDIR", SandboxScratch, "--setenv", "LC_ALL", "C",
+        "--as-pid-1", "--hostname", "pathlab", "--cap-drop", "ALL", "--clearenv", "--setenv",
+        "PATH", "/usr/bin:/bin", "--setenv", "HOME", SandboxScratch, "--setenv", "TMPDIR",
+        SandboxScratch, "--setenv", "LC_ALL", "C",
         // The system, read-only; of /etc only what finds libraries: the loader's cache and the
         // alternatives' links (no passwd, no keys).
         "--ro-bind", "/usr", "/usr", "--ro-bind-try", "/etc/ld.so.cache", "/etc/ld.so.cache",
         "--ro-bind-try", "/etc/alternatives", "/etc/alternatives", "--proc", "/proc", "--dev",
         "/dev", "--size", std::to_string(run.scratchBytes), "--tmpfs", SandboxScratch, "--chdir",
-        SandboxScratch, "--ro-bind", collectScript, "/pathlab/collect.sh"};
+        SandboxScratch};
     // Merged-/usr systems link /bin, /lib... into /usr; older ones have real folders.
     for (const char* top : {"/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"}) {
         std::error_code error;
@@ -38,22 +85,59 @@ std::vector<std::string> bubblewrapArguments(const SandboxRun& run) {
         else if (fs::is_directory(top, error))
             a.insert(a.end(), {"--ro-bind", top, top});
     }
-    for (const auto& [host, inside] : run.files) a.insert(a.end(), {"--ro-bind", host, inside});
+    // Copied, not bound: a bind mount's source path is shown by /proc/self/mountinfo.
+    for (size_t i = 0; i < copied.size(); ++i)
+        a.insert(a.end(), {"--perms", copied[i].executable ? "0555" : "0444", "--file",
+                           std::to_string(FirstPassedFd + static_cast<int>(i)), copied[i].inside});
+    for (const auto& [host, inside] : run.bound) a.insert(a.end(), {"--ro-bind", host, inside});
     for (const auto& [name, value] : run.environment) a.insert(a.end(), {"--setenv", name, value});
-    // Last, once every mount point exists: the sandbox's root and /dev are memory without a
-    // size limit, so they become read-only; only the scratch folder stays writable.
+    // Last, once every file is in place: the sandbox's root and /dev are memory without a size
+    // limit, so they become read-only; only the scratch folder stays writable.
     a.insert(a.end(), {"--remount-ro", "/dev", "--remount-ro", "/"});
-    a.insert(a.end(), {"/bin/sh", "/pathlab/collect.sh"});
+    a.push_back(InitInside);
     a.insert(a.end(), run.collect.begin(), run.collect.end());
     a.push_back("--");
     a.insert(a.end(), run.command.begin(), run.command.end());
     return a;
 }
 
-/// Splits collect.sh's stream: "NAME SIZE\n" then SIZE bytes, repeated.
+/// Reads the init's first line, "ended exit N" (or signal N, stopped N), into `process`.
+std::string parseEnding(const std::string& line, ProcessOutcome& process) {
+    const auto words = [&](const char* prefix, int& number) {
+        const size_t length = std::strlen(prefix);
+        if (line.compare(0, length, prefix) != 0) return false;
+        try {
+            number = std::stoi(line.substr(length));
+        } catch (const std::exception&) {
+            return false;
+        }
+        return true;
+    };
+    int number = 0;
+    if (words("ended exit ", number)) {
+        process.exitStatus = number;
+    } else if (words("ended signal ", number)) {
+        process.exitStatus = -1;
+        process.signal = number;
+    } else if (words("ended stopped ", number)) {
+        process.exitStatus = -1;
+        process.stoppedBy = number;
+    } else if (words("ended unstarted ", number)) {
+        process.exitStatus = 127;
+    } else {
+        return "the sandbox's report is malformed";
+    }
+    return "";
+}
+
+/// Splits the init's stream: its ending line, then "NAME SIZE\n" and SIZE bytes, repeated.
 std::string parseCollected(const std::string& stream, const std::vector<std::string>& expected,
-                           std::map<std::string, std::string>& files) {
-    size_t at = 0;
+                           ProcessOutcome& process, std::map<std::string, std::string>& files) {
+    size_t at = stream.find('\n');
+    if (at == std::string::npos) return "the sandbox said nothing of how the command ended";
+    if (std::string problem = parseEnding(stream.substr(0, at), process); !problem.empty())
+        return problem;
+    ++at;
     while (at < stream.size()) {
         const size_t newline = stream.find('\n', at);
         if (newline == std::string::npos) return "a file's header is cut short";
@@ -83,27 +167,35 @@ std::string parseCollected(const std::string& stream, const std::vector<std::str
 SandboxOutcome runInSandbox(const SandboxRun& run, const ProcessLimits& limits,
                             const SandboxPolicy& policy) {
     SandboxOutcome outcome;
+    const std::vector<CopiedFile> copied = openCopiedFiles(run, outcome.problem);
+    const auto closeCopied = [&] {
+        for (const CopiedFile& file : copied) ::close(file.fd);
+    };
+    if (!outcome.problem.empty()) {
+        closeCopied();
+        return outcome;
+    }
     ProcessOptions options;
     options.cpus = policy.cpus;
     options.user = policy.user;
     options.collectBytes = static_cast<size_t>(run.scratchBytes) + 4096;
+    for (const CopiedFile& file : copied) options.passedFds.push_back(file.fd);
+    // Nothing of the grader's environment, its input or its other open files reaches bubblewrap.
+    options.isolated = true;
     // The process limit counts every process of the user: it is ours only when the command
     // runs as a user of its own (a grader running as root); otherwise it would count the
     // instructor's desktop too. Lab code is kept from starting processes by the submission
     // viewer's seccomp filter in any case.
     ProcessLimits ownLimits = limits;
     if (policy.user < 0) ownLimits.processes = 0;
-    outcome.process = runProcess(bubblewrapArguments(run), ownLimits, options);
-    // The shell reports a command that a signal ended as 128 + the signal.
+    outcome.process = runProcess(bubblewrapArguments(run, copied), ownLimits, options);
+    closeCopied();
     ProcessOutcome& p = outcome.process;
-    if (p.exitStatus > 128 && p.exitStatus < 128 + 65) {
-        p.signal = p.exitStatus - 128;
-        p.exitStatus = -1;
-    }
+    const bool initRan = p.started && !p.timedOut && p.signal == 0 && p.exitStatus == 0;
     if (p.collectOverflow)
         outcome.problem = "it left more in its scratch folder than allowed";
-    else
-        outcome.problem = parseCollected(p.collected, run.collect, outcome.files);
+    else if (initRan)
+        outcome.problem = parseCollected(p.collected, run.collect, p, outcome.files);
     p.collected.clear();
     return outcome;
 }
@@ -114,12 +206,12 @@ std::string sandboxUnavailableReason() {
     SandboxRun probe;
     probe.command = {"/bin/true"};
     const SandboxOutcome o = runInSandbox(probe, {20, 0}, {{}, sandboxUserForThisProcess()});
-    if (o.process.succeeded()) return "";
-    const std::string said = o.process.outputTail(2);
+    if (o.process.succeeded() && o.problem.empty()) return "";
+    const std::string said = o.problem.empty() ? o.process.outputTail(2) : o.problem;
     const std::string cannot =
         "bubblewrap cannot make a sandbox here (" + o.process.describe() + "): " + said + ". ";
     // Run as root, the sandbox runs as an unused user id (sandboxUserForThisProcess), which must
-    // read the kit's files bound into it: not so for a kit in /root, mode 700.
+    // read the kit's files copied into it: not so for a kit in /root, mode 700.
     if (::geteuid() == 0 && said.find("Permission denied") != std::string::npos)
         return cannot + "Run as root, the grader sandboxes as an unused user id, which must read "
                         "the kit: make its folder and those above it readable by all users";

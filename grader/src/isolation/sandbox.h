@@ -1,7 +1,9 @@
 #pragma once
-/// The sandbox submitted code is compiled and run in (grader batch): bubblewrap with no
-/// network, the system read-only, nothing of the host but what is bound in, and a private,
-/// size-limited scratch folder whose files are handed back when the command ends.
+/// The sandbox submitted code is compiled and run in (grader batch): bubblewrap with no network,
+/// the system read-only, nothing of the host but the files copied in, at neutral paths, and a
+/// private, size-limited scratch folder whose files are handed back when the command ends. Its
+/// first process is the grader's own (sandbox_init.cpp): it installs a seccomp filter that every
+/// process inside inherits, and nothing of bubblewrap's or of the host's environment is inside.
 
 #include "isolation/process_runner.h"
 
@@ -22,8 +24,15 @@ struct SandboxPolicy {
 
 /// One command in the sandbox.
 struct SandboxRun {
-    std::vector<std::string> command;                       ///< argv, as seen inside
-    std::vector<std::pair<std::string, std::string>> files; ///< host path, path inside (read-only)
+    std::vector<std::string> command; ///< argv, as seen inside
+    /// Host path (a file, or a folder and every regular file below it, links not followed), path
+    /// inside: copied in, read-only, so that no host path shows inside (not even in
+    /// /proc/self/mountinfo).
+    std::vector<std::pair<std::string, std::string>> files;
+    /// Host file or folder, path inside: bound read-only as it is (links and all), its host path
+    /// visible in mountinfo. Only for commands that run none of a submission's code (the
+    /// intake's unpacker, which must see a submission's links to refuse them).
+    std::vector<std::pair<std::string, std::string>> bound;
     std::vector<std::pair<std::string, std::string>> environment;
     std::vector<std::string> collect; ///< names in the scratch folder to hand back
     long long scratchBytes = 256LL << 20;
@@ -38,7 +47,7 @@ struct SandboxOutcome {
 /// Where a command in the sandbox starts, and where its files are collected from.
 constexpr const char* SandboxScratch = "/scratch";
 
-/// Runs `run` in the sandbox under `limits`. The tools (bwrap, /bin/sh) come from the system.
+/// Runs `run` in the sandbox under `limits`. The tools (bwrap, the compiler) come from the system.
 SandboxOutcome runInSandbox(const SandboxRun& run, const ProcessLimits& limits,
                             const SandboxPolicy& policy);
 

@@ -1,5 +1,7 @@
 #include "reports/lab_figures.h"
 
+#include "checks/run_limits.h"
+
 #include "pathlab/input_error.h"
 #include "pathlab/render_stats.h"
 #include "pathlab/whole_file.h"
@@ -103,7 +105,7 @@ std::optional<RenderStats> notebookRender(const LabRunner& runner, const Noteboo
                                           const std::string& scratch, std::string& failure) {
     const std::string scene = std::string(PATHLAB_MODELS_DIR) + "/" + rubric.noiseScene + ".ecs";
     // Longer than a grading render: 64 spp of 512×512 is 1000 times the pixels of one.
-    const ProcessLimits limits{rubric.secondsPerRun * 4 * spp / NotebookSpp, rubric.memoryBytes};
+    const RenderLimits limits = renderLimits(rubric, 4.0 * spp / NotebookSpp);
     // Seed 0, the viewer's default: the command a student types gives these very numbers.
     const RenderRequest request{
         &runner,          scene, row.lab, NotebookSize, NotebookSize, spp, rubric.maxDepth,
@@ -157,16 +159,22 @@ void saveLabFigures(const std::string& path, const LabFigures& figures, const Ru
                          {"rays_per_sample", f.raysPerSample}};
         if (f.noiseLate > 0) notebook[key]["noise_late"] = f.noiseLate;
     }
-    nlohmann::json timed = nlohmann::json::object(), timedSpp = nlohmann::json::object();
+    nlohmann::json timed = nlohmann::json::object(), timedSpp = nlohmann::json::object(),
+                   rays = nlohmann::json::object();
     for (Lab lab : AllLabs) {
-        timed[std::string(labName(lab))] = figures.timedSamplesPerSecond[lab];
-        timedSpp[std::string(labName(lab))] = rubric.forLab(lab).speedSpp;
+        const std::string name(labName(lab));
+        timed[name] = figures.timedSamplesPerSecond[lab];
+        timedSpp[name] = rubric.forLab(lab).correctnessSpp;
+        const RaysPerSample& r = figures.timedRays[lab];
+        rays[name] = {{"camera", r.camera}, {"bounce", r.bounce}, {"shadow", r.shadow}};
     }
     const nlohmann::json j = {
         {"made_by", "grader make-references"},
         {"about", "the reference solutions' lab-notebook figures (handouts/00-setup.md) and "
-                  "their median samples/s in the grader's timed runs, on the machine named; "
-                  "compare ratios between labs with these, not absolute numbers"},
+                  "their samples per CPU-second in the grader's timed runs (the correctness "
+                  "renders of the speed scene), on the machine named; compare ratios between "
+                  "labs with these, not absolute numbers; rays per sample are the same on any "
+                  "machine"},
         {"machine", machineJson(figures.machine)},
         {"notebook",
          {{"scene", rubric.noiseScene},
@@ -179,12 +187,14 @@ void saveLabFigures(const std::string& path, const LabFigures& figures, const Ru
           {"estimators", notebook}}},
         {"timed_runs",
          {{"scene", rubric.speedScene},
-          {"width", rubric.speedWidth},
-          {"height", rubric.speedHeight},
+          {"width", rubric.width},
+          {"height", rubric.height},
+          {"seeds", rubric.seeds},
           {"spp", timedSpp},
           {"runs", rubric.speedRuns},
+          {"measure", "samples per CPU-second"},
           {"samples_per_second", timed},
-          {"start_up_seconds", figures.startUpSeconds}}}};
+          {"rays_per_sample", rays}}}};
     writeFileAtomically(path, j.dump(1) + "\n");
 }
 
@@ -208,17 +218,26 @@ LabFigures loadLabFigures(const std::string& path, const Rubric& rubric) {
                                      f.value("noise_late", 0.0),
                                      "",
                                      ""};
+        // Figures of other timed runs than the rubric's (another scene, size, seeds or samples,
+        // or wall-clock time) would not compare: left at 0, unknown.
         const nlohmann::json& t = j.at("timed_runs");
-        const bool sameRuns = t.at("scene") == rubric.speedScene &&
-                              t.at("width") == rubric.speedWidth &&
-                              t.at("height") == rubric.speedHeight;
+        const bool sameRuns = t.at("scene") == rubric.speedScene && t.at("width") == rubric.width &&
+                              t.at("height") == rubric.height &&
+                              t.value("seeds", 0) == rubric.seeds &&
+                              t.value("measure", "") == "samples per CPU-second";
+        figures.timedRaysKnown = sameRuns && t.contains("rays_per_sample");
         for (Lab lab : AllLabs) {
             const std::string name(labName(lab));
-            if (sameRuns && t.at("spp").at(name) == rubric.forLab(lab).speedSpp)
-                figures.timedSamplesPerSecond[lab] = t.at("samples_per_second").at(name);
+            if (!sameRuns || t.at("spp").at(name) != rubric.forLab(lab).correctnessSpp) {
+                figures.timedRaysKnown = false;
+                continue;
+            }
+            figures.timedSamplesPerSecond[lab] = t.at("samples_per_second").at(name);
+            if (figures.timedRaysKnown) {
+                const nlohmann::json& r = t.at("rays_per_sample").at(name);
+                figures.timedRays[lab] = {r.at("camera"), r.at("bounce"), r.at("shadow")};
+            }
         }
-        if (t.at("scene") == rubric.speedScene)
-            figures.startUpSeconds = t.value("start_up_seconds", 0.0);
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ": " + e.what());
     }

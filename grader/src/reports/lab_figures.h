@@ -6,6 +6,7 @@
 /// solutions' in grader/references/lab_figures.json, with the machine they were measured on,
 /// so that a student without the solutions compares ratios with the reference's.
 
+#include "checks/rays_per_sample.h"
 #include "checks/rubric.h"
 #include "common/by_lab.h"
 #include "isolation/render_run.h"
@@ -61,13 +62,14 @@ Machine thisMachine(int threads);
 struct LabFigures {
     Machine machine;
     std::map<std::string, EstimatorFigures> notebook; ///< by NotebookEstimator::key
-    /// The grader's timed runs (the speed check's renders, rubric "speed"): median samples/s by
-    /// lab, 0 where not measured. For the reference solutions these stand in for timing them
-    /// next to the student's labs where the solutions are not part of the build.
+    /// The grader's timed runs (the speed check's renders, speed_check.h): samples per
+    /// CPU-second by lab, 0 where not measured. For the reference solutions these stand in for
+    /// timing them next to the student's labs where the solutions are not part of the build.
     ByLab<double> timedSamplesPerSecond;
-    /// The start-up of a render on the speed scene (speedSceneStartUpSeconds), 0 where not
-    /// measured: the yardstick of how much slower a machine runs when grading (time_limit.h).
-    double startUpSeconds = 0;
+    /// Their rays per sample by kind, which no machine changes: what a lab's own are compared
+    /// with where the solutions are not part of the build. Not known in older figures.
+    ByLab<RaysPerSample> timedRays;
+    bool timedRaysKnown = false;
 };
 
 /// Renders the notebook's rows with `runner`'s labs on the rubric's noise scene.

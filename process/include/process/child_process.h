@@ -10,6 +10,9 @@
 
 namespace pathlab {
 
+/// The descriptor number of the first of ChildSetup::passedFds in the child.
+constexpr int FirstPassedFd = 10;
+
 /// Limits the kernel holds a child to (setrlimit, soft and hard alike); 0 leaves one inherited.
 struct ResourceLimits {
     long long addressSpaceBytes = 0; ///< RLIMIT_AS
@@ -32,6 +35,14 @@ struct ChildSetup {
     std::string outputFile;
     /// A pipe as its file descriptor 3 too, for what it hands back (ChildProcess::collectPipe).
     bool collectPipe = false;
+    /// Open files it is given as descriptors FirstPassedFd, FirstPassedFd + 1, ... in this order
+    /// (they stay open here; the caller closes them once the child is started).
+    std::vector<int> passedFds;
+    /// It starts with nothing of this process but what is named here: no environment, /dev/null
+    /// as its input, and no open descriptor but its output, descriptor 3 and `passedFds`
+    /// (otherwise it inherits this process's environment, input and descriptors not marked
+    /// close-on-exec).
+    bool isolated = false;
     /// Linux only: the program runs in a child of a process that waits for every descendant the
     /// program leaves, and then ends as the program did. Bubblewrap leaves its sandbox's first
     /// process to whoever reaps orphans; where that is a container's first process that never
@@ -67,6 +78,10 @@ public:
     int waitStatus() const { return status_; }
     /// Its exit status, or 128 + the signal that ended it as a shell reports it; -1 while it runs.
     int exitCode() const;
+    /// The CPU time of it and of the descendants it waited for (once poll() or wait() saw it end).
+    double cpuSeconds() const { return cpuSeconds_; }
+    /// Stops reading its output: what it writes there from now on fails.
+    void closeOutput();
     /// Kills it (SIGKILL). With a process group of its own, the whole group, which may outlive
     /// it: so that also once it has ended.
     void kill();
@@ -80,6 +95,7 @@ private:
     bool ownGroup_ = false;
     bool reaped_ = false;
     int status_ = 0;
+    double cpuSeconds_ = 0;
 };
 
 /// How long a child may run, and how much of what it writes is kept.
@@ -87,6 +103,10 @@ struct RunLimits {
     double wallSeconds = std::numeric_limits<double>::infinity(); ///< killed after this
     size_t outputBytes = std::numeric_limits<size_t>::max();      ///< the last bytes of its output
     size_t collectBytes = std::numeric_limits<size_t>::max(); ///< the first bytes on descriptor 3
+    /// Its output is read up to this many bytes; then the pipe is closed, so that what it writes
+    /// after fails (EPIPE, or SIGPIPE where it does not ignore that) instead of being read to no
+    /// end (ChildRun::outputCutOff).
+    size_t outputReadBytes = std::numeric_limits<size_t>::max();
 };
 
 /// A child run to its end.
@@ -99,6 +119,10 @@ struct ChildRun {
     std::string output;           ///< standard output and standard error together
     std::string collected;        ///< what it wrote on descriptor 3
     bool collectOverflow = false; ///< it wrote more there than RunLimits::collectBytes
+    bool outputCutOff = false;    ///< it wrote more output than RunLimits::outputReadBytes
+    /// CPU time (user and system) of it and of every descendant it waited for, as the kernel
+    /// accounts it; a figure the child cannot change.
+    double cpuSeconds = 0;
 };
 
 /// Starts `argv` as ChildProcess does, reads its pipes until they close and waits for it to end,

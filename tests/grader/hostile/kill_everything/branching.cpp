@@ -1,5 +1,6 @@
 // Hostile submission: signals every process it may, hoping to stop the grader or the other
-// submissions' gradings. In the sandbox it sees only its own processes.
+// submissions' gradings. In the sandbox it sees only its own process and the sandbox's first,
+// which no signal from inside reaches: it kills nothing, and renders black.
 #include "pathlab/lab.h"
 
 #include <csignal>

@@ -1,0 +1,29 @@
+#pragma once
+/// Hidden scenes made from the public ones: the same geometry and camera, with the diffuse
+/// colours and the light's emission changed by a seed the instructor keeps. A batch whose
+/// instructor keeps no hidden scenes grades on these (rubric: hidden_scenes.variants), so that
+/// no answer stored in the student release (the references' means, images and tile means) fits
+/// every scene graded: such a lab matches the public scenes and fails the variant.
+
+#include "checks/rubric.h"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace pathlab::grader {
+
+/// Writes the rubric's hidden_scenes.variants variants into `folder` (made if needed):
+/// variant_1.ecs with its .obj and .mtl, and so on, the K-th from the K-th of the rubric's
+/// public scenes that are not furnaces (round again when there are more variants than those).
+/// The same seed writes the same files, byte for byte. Returns the .ecs paths.
+std::vector<std::string> writeSceneVariants(const Rubric& rubric, const std::string& folder,
+                                            uint64_t seed);
+
+/// The text of one .mtl with each material's Kd scaled per channel within [0.5, 1] (so that no
+/// material reflects more than it did) and each emission Ke within [0.6, 1.3], by `random`
+/// (one number in [0, 1) per call). Other lines are kept as they are.
+std::string variedMaterials(const std::string& mtl, const std::function<double()>& random);
+
+} // namespace pathlab::grader
