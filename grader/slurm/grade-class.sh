@@ -16,6 +16,9 @@
 #   PATHLAB_RUBRIC    the rubric (default: grader/rubric.json of the build's kit)
 #   PATHLAB_SCENES    the hidden scenes (default: the kit's grader/hidden_scenes/ when it holds
 #                     any; "none" for none)
+#   PATHLAB_VARIANT_SEED  where there are no hidden scenes, the seed of the variants of the
+#                     public scenes every shard grades on (default: a new one, written to
+#                     OUT/variant-seed; keep it from the students)
 #   PATHLAB_DEADLINE  flags later submissions as late (e.g. 2026-12-01T23:59)
 #   PATHLAB_TIMES     a CSV of id,submitted_at from your LMS
 #   PATHLAB_OPTIONS   any other options of grader batch (e.g. "--no-speed")
@@ -45,6 +48,16 @@ if [ -n "${PATHLAB_SCENES:-}" ] && [ "$PATHLAB_SCENES" != none ]; then
     export PATHLAB_SCENES=$(realpath "$PATHLAB_SCENES")
 fi
 mkdir -p "$out"
+# Every shard must grade on the same variants of the public scenes: one seed for all, kept.
+if [ -z "${PATHLAB_VARIANT_SEED:-}" ]; then
+    if [ -s "$out/variant-seed" ]; then
+        PATHLAB_VARIANT_SEED=$(cat "$out/variant-seed")
+    else
+        PATHLAB_VARIANT_SEED=$(( ($(od -An -N6 -tu8 /dev/urandom) % 281474976710655) + 1 ))
+        echo "$PATHLAB_VARIANT_SEED" > "$out/variant-seed"
+    fi
+fi
+export PATHLAB_VARIANT_SEED
 
 array=$(sbatch --parsable --array="0-$((shards - 1))" --cpus-per-task="$cpus" \
     --job-name=pathlab-grade --output="$out/slurm-%A_%a.log" "$@" \

@@ -62,6 +62,9 @@ struct ChildPlan {
     std::vector<int> passedFds; ///< become its descriptors FirstPassedFd, ...
     bool isolated = false;
     int nullInput = -1; ///< /dev/null, its input when isolated
+    /// Our read ends of its pipes: closed in the child at once, so that no process of its (the
+    /// reaper, which never execs) keeps one open, and its writes fail when we close ours.
+    int ourEnds[2] = {-1, -1};
 };
 
 ChildPlan planFor(const std::vector<std::string>& argv, const ChildSetup& setup) {
@@ -134,6 +137,8 @@ void closeDescriptorsFrom(int from, int to) {
 
 /// In the child, between fork and exec: only async-signal-safe calls.
 [[noreturn]] void becomeChild(const ChildPlan& plan) {
+    for (int end : plan.ourEnds)
+        if (end >= 0) ::close(end);
 #if defined(__linux__)
     if (plan.dieWithParent) ::prctl(PR_SET_PDEATHSIG, SIGKILL);
 #endif
@@ -216,6 +221,8 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const ChildSetu
     plan.nullInput = nullInput;
     plan.outputFd = outputPipe[1];
     plan.collectFd = collectPipe[1];
+    plan.ourEnds[0] = outputPipe[0];
+    plan.ourEnds[1] = collectPipe[0];
     const pid_t pid = ready ? ::fork() : -1;
     if (pid == 0) becomeChild(plan);
     closeIfOpen(outputPipe[1]);

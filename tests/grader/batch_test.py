@@ -69,6 +69,53 @@ class Listener:
                 pass
 
 
+# An environment variable of the grader's, as a CI or Gradescope host may hold a token: no
+# submission may read it (hostile/proc_snoop), and nothing under OUT may hold it.
+SECRET = "pathlab-test-secret-" + os.urandom(8).hex()
+
+
+def tile_means_table():
+    """C++ initialisers of hostile/table_of_tile_means' SceneTable, one per public scene: its
+    camera (from its .ecs) and the shipped reference's depth-limited means, whole image then tiles."""
+    entries = []
+    for scene in ("cornell_box_VI2_Specular", "furnace", "mirror_furnace", "refraction_check", "mixed_surfaces"):
+        camera = {}
+        for line in open(os.path.join(args.source, "models", scene + ".ecs")):
+            words = line.split()
+            if words and words[0] in ("-vp", "-vi", "-vu", "-fov"):
+                camera[words[0]] = [float(w) for w in words[1:]]
+        reference = json.load(open(os.path.join(args.source, "grader", "references", scene + ".json")))
+        means = reference["depth_limited"]["mean"]
+        rows = ", ".join("{%r, %r, %r}" % tuple(means[3 * r:3 * r + 3]) for r in range(len(means) // 3))
+        vector = lambda v: "Vec3(%rf, %rf, %rf)" % tuple(v)
+        entries.append("{%s, %s, %s, %rf, %s, %s, %d, {%s}}" % (
+            vector(camera["-vp"]), vector(camera["-vi"]), vector(camera["-vu"]), camera["-fov"][0],
+            "true" if scene == "mirror_furnace" else "false", "true" if "furnace" in scene else "false",
+            reference["max_depth"], rows))
+    return ",\n    ".join(entries)
+
+
+def smudging_repository(repository, outside):
+    """A git submission whose own configuration and attributes would run code wherever git
+    checks its files out: a smudge filter (whose output would become the lab file), a
+    file-system monitor and hooks. The intake reads its blobs without any of them."""
+    copy_labs(SOLUTIONS, repository, ["uniform"])
+    write(os.path.join(repository, ".gitattributes"), "*.cpp filter=evil\n")
+    git = ["git", "-C", repository, "-c", "user.name=student", "-c", "user.email=s@example.com"]
+    subprocess.run(["git", "init", "-q", repository], check=True)
+    subprocess.run(git + ["add", "uniform.cpp", ".gitattributes"], check=True)
+    subprocess.run(git + ["commit", "-q", "-m", "lab 2"], check=True)
+    ran = os.path.join(outside, "git-ran")
+    hooks = repository + "-hooks"
+    for key, value in (("filter.evil.smudge", f"sh -c 'touch {ran}; id; cat /proc/1/environ'; echo SMUDGED"),
+                       ("filter.evil.required", "true"),
+                       ("core.fsmonitor", f"touch {ran}; echo"),
+                       ("core.hooksPath", hooks)):
+        subprocess.run(["git", "-C", repository, "config", key, value], check=True)
+    write(os.path.join(hooks, "post-checkout"), f"#!/bin/sh\ntouch {ran}\n")
+    os.chmod(os.path.join(hooks, "post-checkout"), 0o755)
+
+
 def make_class(root, outside, port):
     """The submissions, and what each must get: {id: (scores by lab, status words, feedback words)}."""
     subs = os.path.join(root, "submissions")
@@ -91,6 +138,9 @@ def make_class(root, outside, port):
     subprocess.run(git + ["commit", "-q", "-m", "lab 2"], check=True)
     write(os.path.join(repository, "uniform.cpp"), "uncommitted, and not C++\n")  # HEAD is graded
     expected["correct_git"] = ({"uniform": 10}, "graded", "mean radiance matches")
+    smudging_repository(os.path.join(root, "git_smudge"), outside)
+    shutil.move(os.path.join(root, "git_smudge"), os.path.join(subs, "git_smudge"))
+    expected["git_smudge"] = ({"uniform": 10}, "graded", "mean radiance matches")
 
     # Buggy and unfinished.
     copy_labs(STUBS, os.path.join(subs, "stub"), ["branching"])
@@ -108,11 +158,15 @@ def make_class(root, outside, port):
     expected["racy"] = ({"uniform": 0, "importance": 0}, "graded", "data race between render threads")
     expected["nothing"] = ({}, "no lab files found", "not submitted")
 
-    # Hostile.
+    # Hostile: each case one lab file, its placeholders filled in.
+    fills = {"@OUTSIDE@": outside, "@SOURCE@": args.source, "@PORT@": str(port), "@SECRET@": SECRET,
+             "TILE_MEANS": tile_means_table()}
     for case in sorted(os.listdir(HOSTILE)):
-        text = open(os.path.join(HOSTILE, case, "branching.cpp")).read()
-        text = text.replace("@OUTSIDE@", outside).replace("@SOURCE@", args.source).replace("@PORT@", str(port))
-        write(os.path.join(subs, "hostile_" + case, "branching.cpp"), text)
+        for name in os.listdir(os.path.join(HOSTILE, case)):
+            text = open(os.path.join(HOSTILE, case, name)).read()
+            for placeholder, value in fills.items():
+                text = text.replace(placeholder, value)
+            write(os.path.join(subs, "hostile_" + case, name), text)
     reasons = {
         "endless_loop": "finished no sample for 4 s: an endless loop, or recursion that never ends?",
         "fork_bomb": "fork failed: Operation not permitted",
@@ -126,10 +180,23 @@ def make_class(root, outside, port):
         "compiler_bomb": "does not compile",
         # It can signal nothing: its sandbox's first process is immune, and it is the only other.
         "kill_everything": "mean radiance differs",
+        "proc_snoop": "SNOOPED: nothing",
+        "hidden_scene_leak": "on hidden scene 1 the lab crashed (on a hidden scene, what the lab printed is not shown)",
+        "table_of_tile_means": "its pixels do not vary from seed to seed",
+        "table_with_noise": "of the detail the reference image has",
+        "ptrace_parent": "ptrace 1: Operation not permitted",
+        "stop_itself": "stopped its own process (Stopped (signal), signal 19)",
+        "widen_affinity": "sched_setaffinity: Operation not permitted",
     }
     reasons["hanging_initializer"] = reasons["endless_loop"]
     for case, reason in reasons.items():
         expected["hostile_" + case] = ({"branching": 0}, "graded", reason)
+    # Correct where it is not timed, and on the timing core (the first) it cuts corners: the
+    # correctness renders run on the other core, so only the speed points go.
+    expected["hostile_timed_run_detector"] = ({"uniform": 10 - SPEED_POINTS}, "graded",
+                                              "the timed runs rendered other images than the same seeds did")
+    expected["hostile_floods_output"] = ({"branching": 10}, "graded",
+                                         "it printed more than 4 MiB: what followed was not read")
     # Only the hanging lab's points are lost: each lab is loaded from a library of its own.
     copy_labs(SOLUTIONS, os.path.join(subs, "hostile_hanging_initializer"), ["uniform", "importance", "roulette"])
     expected["hostile_hanging_initializer"] = (
@@ -264,7 +331,54 @@ def verdicts(out, expected):
     return rows
 
 
+def files_under(folder):
+    """Every regular file below `folder`, with its bytes."""
+    for top, _, names in os.walk(folder):
+        for name in names:
+            path = os.path.join(top, name)
+            if os.path.isfile(path) and not os.path.islink(path):
+                yield path, open(path, "rb").read()
+
+
+def attacks_held(out, expected):
+    """What the hostile submissions tried, beyond their verdicts, came to nothing; each check
+    names the attack it stands for."""
+    leaked = [path for path, data in files_under(out) if SECRET.encode() in data]
+    check(not leaked, f"the grader's environment reached no file of the batch's output ({leaked[:3]})")
+    # What goes back to a student: feedback.json, index.html, grader.log (not the lab's own
+    # source, which holds the words it looks for).
+    text = lambda id_: "".join(open(os.path.join(out, "submissions", id_, name), errors="replace").read()
+                               for name in ("feedback.json", "index.html", "grader.log"))
+    ptrace = text("hostile_ptrace_parent")
+    check(not any(word in ptrace for word in ("ATTACHED", "WROTE", "OPENED", "ESCAPED")),
+          "no process of the sandbox was attached to, written or left for a shell")
+    check("process_vm_writev 1: Operation not permitted" in ptrace and "/proc/1/mem: Permission denied" in ptrace,
+          "process_vm_writev and /proc/1/mem were refused")
+    variant_lines = [line.strip() for path in sorted(os.listdir(os.path.join(out, ".variants")))
+                     if path.endswith(".mtl") for line in open(os.path.join(out, ".variants", path))
+                     if line.strip() and not line.startswith("#")]
+    leak = text("hostile_hidden_scene_leak")
+    shown = [line for line in variant_lines if line in leak or line[::-1] in leak]
+    check(variant_lines and not shown and "LEAK" not in leak,
+          f"nothing of the hidden scene's files reached the feedback of the lab that printed them ({shown[:3]})")
+    smudged = text("git_smudge")
+    check("SMUDGED" not in smudged and "uid=" not in smudged,
+          "a git submission's smudge filter did not run: its lab was read as the blob committed")
+    print(f"grading time per submission, from batch.log: {grading_seconds(out)}")
+
+
+def grading_seconds(out):
+    """{id: seconds} from batch.log's 'done' lines."""
+    seconds = {}
+    for line in open(os.path.join(out, "batch.log")):
+        words = line.split()
+        if len(words) > 3 and words[1] == "done":
+            seconds[words[2].rstrip(":")] = int(words[-2])
+    return seconds
+
+
 def main():
+    os.environ["PATHLAB_TEST_SECRET"] = SECRET
     with tempfile.TemporaryDirectory() as root:
         os.chmod(root, 0o755)
         outside = os.path.join(root, "outside")
@@ -280,6 +394,7 @@ def main():
         print(f"batch of {len(expected)} submissions with --jobs 2: {seconds:.0f} s", flush=True)
         rows = verdicts(out, expected)
         races_found(out)
+        attacks_held(out, expected)
 
         # The hostile submissions had no effect outside their sandboxes.
         check(os.listdir(outside) == [], "nothing was written outside the sandboxes' scratch folders")
@@ -330,6 +445,15 @@ def bookkeeping(root, subs, out, rubric, expected, rows):
     batch = subprocess.Popen([GRADER, "batch", part_subs, "--out", part_out, "--jobs", "1", "--rubric", rubric,
                               *no_race],
                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    # A second batch into the same folder while the first runs refuses, naming the first.
+    while batch.poll() is None and not os.path.exists(os.path.join(part_out, "batch.log")):
+        time.sleep(0.1)
+    second, _ = run_batch(part_subs, part_out, rubric, extra=no_race)
+    said = second.stderr.strip().splitlines()
+    check(second.returncode == 2 and len(said) == 1
+          and f"is being written by another grader batch (process {batch.pid}, started at" in said[0],
+          "a second batch into the folder a batch is writing refuses in one line naming the first's "
+          f"process (said: {said})")
     deadline = time.time() + 300
     while time.time() < deadline and batch.poll() is None:
         done = [i for i in part if os.path.exists(os.path.join(part_out, "submissions", i, "result.json"))]
@@ -356,8 +480,10 @@ def bookkeeping(root, subs, out, rubric, expected, rows):
     # then the merge job's; the merged gradebook equals the unsharded one.
     slurm = os.path.join(args.source, "grader", "slurm")
     shard_out = os.path.join(root, "sharded")
+    # grade-class.sh gives every task one seed of the scene variants; so does this test.
     environment = dict(os.environ, PATHLAB_BUILD=os.path.abspath(args.build), SLURM_ARRAY_TASK_COUNT="2",
-                       SLURM_CPUS_PER_TASK="2", PATHLAB_RUBRIC=rubric, PATHLAB_OPTIONS=" ".join(no_race))
+                       SLURM_CPUS_PER_TASK="2", PATHLAB_RUBRIC=rubric, PATHLAB_OPTIONS=" ".join(no_race),
+                       PATHLAB_VARIANT_SEED="12345")
     # Both tasks at once, as the array's tasks run on a cluster (each takes one job on 2 CPUs).
     tasks = [subprocess.Popen([os.path.join(slurm, "grade-shard.sbatch"), part_subs, shard_out],
                               env=dict(environment, SLURM_ARRAY_TASK_ID=task),

@@ -8,6 +8,8 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdio>
+#include <fcntl.h>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -16,6 +18,7 @@
 #include <sys/prctl.h>
 #endif
 #include <thread>
+#include <unistd.h>
 #include <vector>
 
 using namespace pathlab;
@@ -137,6 +140,82 @@ TEST_CASE("reapOrphans: what the program leaves is reaped before it counts as en
     CHECK(runChild({"/nonexistent/program"}, setup, {}).exitCode == 127);
 }
 #endif
+
+TEST_CASE("passed descriptors arrive in order at 10, 11, ... whatever numbers they had here; an "
+          "isolated child gets nothing else: no environment, /dev/null for input, no other "
+          "descriptor",
+          "[process]") {
+    // Files opened here at low numbers, some the very numbers the child's copies are to take.
+    std::vector<int> opened;
+    std::vector<std::string> paths;
+    for (int i = 0; i < 4; ++i) {
+        paths.push_back("/tmp/pathlab-passed-" + std::to_string(::getpid()) + "-" +
+                        std::to_string(i));
+        std::ofstream(paths.back()) << "file " << i << "\n";
+    }
+    // File i at descriptor 10 + i here: passed in the reverse order, each must move onto the
+    // number another one holds.
+    for (int i = 3; i >= 0; --i) {
+        const int fd = ::open(paths[static_cast<size_t>(i)].c_str(), O_RDONLY);
+        ::dup2(fd, 10 + i);
+        ::close(fd);
+        opened.push_back(10 + i);
+    }
+    // A descriptor left open without close-on-exec, which an isolated child must not inherit.
+    const int stray = ::open("/dev/zero", O_RDONLY);
+    ::setenv("PATHLAB_PASSED_TEST", "inherited", 1);
+    ChildSetup setup;
+    setup.passedFds = opened;
+    setup.isolated = true;
+    const ChildRun run = runChild({"/bin/sh", "-c",
+                                   "cat /proc/self/fd/10 /proc/self/fd/11 /proc/self/fd/12 "
+                                   "/proc/self/fd/13; echo \"env:${PATHLAB_PASSED_TEST:-none}\"; "
+                                   "cat; ls /proc/self/fd | tr '\\n' ' '"},
+                                  setup);
+    ::unsetenv("PATHLAB_PASSED_TEST");
+    for (int fd : opened) ::close(fd);
+    ::close(stray);
+    for (const std::string& path : paths) std::remove(path.c_str());
+    INFO(run.output);
+    CHECK(run.exitCode == 0);
+    CHECK(run.output.find("file 3\nfile 2\nfile 1\nfile 0\nenv:none\n") == 0);
+    // Its own 0, 1, 2, the four passed, and the one ls holds to read the folder.
+    const std::string descriptors = run.output.substr(run.output.rfind('\n') + 1);
+    CHECK(descriptors == "0 1 10 11 12 13 2 3 ");
+}
+
+TEST_CASE("output past outputReadBytes is not read: the pipe closes and the child's writes fail",
+          "[process]") {
+    RunLimits limits;
+    limits.outputReadBytes = 1 << 20;
+    // 100 MB of output, which read to the end would take a while; yes dies of SIGPIPE at the cut.
+    const auto start = std::chrono::steady_clock::now();
+    // With a reaper between (it never execs): it must hold no copy of our end of the pipe, or the
+    // child would block on a full pipe instead of failing.
+    ChildSetup setup;
+#if defined(__linux__)
+    setup.reapOrphans = true;
+#endif
+    const ChildRun run =
+        runChild({"/bin/sh", "-c", "head -c 100000000 /dev/zero | tr '\\0' x"}, setup, limits);
+    CHECK(run.outputCutOff);
+    CHECK(run.output.size() <= limits.outputReadBytes + (64u << 10));
+    CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(30));
+    const ChildRun small = runChild({"/bin/sh", "-c", "echo short"}, {}, limits);
+    CHECK_FALSE(small.outputCutOff);
+    CHECK(small.output == "short\n");
+}
+
+TEST_CASE("a child's CPU time is the kernel's count, its descendants' included", "[process]") {
+    // Two processes busy for about 0.3 s of CPU each: about 0.6 s, whatever the wall time.
+    const ChildRun run = runChild({"/bin/sh", "-c",
+                                   "for i in 1 2; do (end=$(( $(date +%s%N) + 300000000 )); "
+                                   "while [ $(date +%s%N) -lt $end ]; do :; done) & done; wait"});
+    CHECK(run.exitCode == 0);
+    CHECK(run.cpuSeconds > 0.3);
+    CHECK(run.cpuSeconds < 5);
+    CHECK(shell("true").cpuSeconds < 0.5);
+}
 
 TEST_CASE("a program found in PATH", "[process]") {
     CHECK(findProgram("sh").find("/sh") != std::string::npos);

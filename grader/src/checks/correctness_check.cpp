@@ -378,6 +378,15 @@ void explainRejection(const GraderSetup& setup, Lab lab, const SceneComparisons&
                                   " (what differs lies on paths these samples did not take)");
 }
 
+/// Whether the regions of any public scene were rejected.
+bool publicSceneRejected(const GraderSetup& setup, const SceneComparisons& found,
+                         const std::vector<bool>& rejected) {
+    const std::vector<std::vector<bool>> byScene = rejectionsByScene(found.scenes, rejected);
+    for (size_t s = 0; s < setup.scenes.size(); ++s)
+        if (!setup.scenes[s].hidden && anyRejected(byScene[s])) return true;
+    return false;
+}
+
 /// Means that match from images that do not come from paths (path_evidence.h): says which
 /// scenes in `attempt` and returns true; false where every scene's images are traced.
 bool explainUntraced(const GraderSetup& setup, const SceneComparisons& found, Attempt& attempt) {
@@ -411,7 +420,11 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
         attempt.diagnosis = causeName(ignored);
         return attempt;
     }
-    if (!anyRejected(rejected) && explainUntraced(setup, found, attempt)) return attempt;
+    // Means that match from images that do not come from paths are told before anything a
+    // hidden scene says: a table of the public scenes' answers fits no hidden scene either. A lab
+    // whose public scenes differ is told why they differ instead (the stub traces no bounce).
+    if (!publicSceneRejected(setup, found, rejected) && explainUntraced(setup, found, attempt))
+        return attempt;
     if (!anyRejected(rejected)) {
         if (const std::string note = pathLengthNote(found.pathLengths); !note.empty())
             attempt.details.push_back(note);
@@ -490,8 +503,8 @@ CorrectnessOutcome checkCorrectness(const GraderSetup& setup, Lab lab) {
         if (failure.kind == NonfiniteRadianceFailure)
             details.push_back("likely cause: " + likelyNonfiniteCause(lab));
     } else if (attempt.diagnosis == NotTracedDiagnosis) {
-        check.summary = "mean radiance matches " + expected + ", but " + NotTracedDiagnosis +
-                        " (twice, on fresh seeds)";
+        check.summary = "mean radiance matches " + expected + " on the scenes you can see, but " +
+                        NotTracedDiagnosis + " (twice, on fresh seeds)";
         check.diagnosis = attempt.diagnosis;
     } else {
         check.summary = "mean radiance differs from " + expected + " (twice, on fresh seeds)";

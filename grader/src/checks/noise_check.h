@@ -4,6 +4,7 @@
 
 #include "checks/check_result.h"
 #include "checks/grader_setup.h"
+#include "checks/lab_measurement.h"
 
 namespace pathlab::grader {
 
@@ -18,7 +19,11 @@ struct NoiseOutcome {
     SampleVariances variances; ///< for the speed check's efficiency
 };
 
-/// `noise`: the variance checkCorrectness measured (-1: none); `correct`: its verdict.
-NoiseOutcome checkNoise(const GraderSetup& setup, Lab lab, bool correct, double noise);
+/// The figures: `noise`, the variance checkCorrectness measured (-1: none), beside the
+/// reference solution's on the rubric's noise scene.
+NoiseMeasurement measureNoise(const GraderSetup& setup, Lab lab, double noise);
+
+/// The verdict under `rubric`; `correct`: the correctness verdict (noise counts only then).
+NoiseOutcome judgeNoise(const Rubric& rubric, Lab lab, bool correct, const NoiseMeasurement& m);
 
 } // namespace pathlab::grader

@@ -1,6 +1,10 @@
 #include "checks/path_evidence.h"
 
+#include "checks/hypothesis_tests.h"
 #include "checks/number_text.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace pathlab::grader {
 
@@ -47,13 +51,17 @@ double detailInsideTiles(const PathEvidence& e) {
     if (e.meanImage.size() != values || e.referenceImage.size() != values) return -1;
     const std::vector<double> lab = insideTiles(e.meanImage, e.width, e.height, e.tiles);
     const std::vector<double> reference = insideTiles(e.referenceImage, e.width, e.height, e.tiles);
-    double product = 0, square = 0;
+    double product = 0, square = 0, level = 0;
     for (size_t i = 0; i < values; ++i) {
         product += lab[i] * reference[i];
         square += reference[i] * reference[i];
+        level += std::fabs(e.referenceImage[i]) / static_cast<double>(values);
     }
-    // What the reference's own noise alone would put there: about its variance per value.
-    if (!(square > DetailOverNoise * e.referenceNoise * static_cast<double>(values))) return -1;
+    // What the reference's own noise alone would put there, about its variance per value, or
+    // float rounding where it has none (the mirror furnace, the same for every path).
+    const double rounding = floatRoundingFloor * level;
+    const double noise = std::max(e.referenceNoise, rounding * rounding);
+    if (!(square > DetailOverNoise * noise * static_cast<double>(values))) return -1;
     return product / square;
 }
 

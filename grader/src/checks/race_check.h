@@ -38,18 +38,16 @@ struct RaceCheckRun {
     RaceCheckRuntime runtime;
     std::string sources;  ///< the submission's lab files, as taken in
     std::string folder;   ///< for the instrumented objects and libraries
-    SandboxPolicy policy; ///< for compiling; the render runs on `cpus` too
-    /// The render's extra cores and their lock (the timing core and TimingPolicy::lockFile):
-    /// TBB gives a process pinned to one core one thread, whatever --threads asks.
-    std::vector<int> timingCpus;
-    std::string timingLock;
+    SandboxPolicy policy; ///< for compiling and the render: the grading's own cores
     uint64_t seed = 1;
 };
 
 /// Compiles `lab` with TSan, renders the VI2 box at 64x64 with 2 threads, and reads the races
 /// reported in the lab's file. TSan sees every access of the lab's code from two threads as a
-/// race (TBB's hand-offs are uninstrumented), but only once TBB's second thread has joined the
-/// render, which on a busy machine takes up to a second: hence 256 samples per pixel.
+/// race (TBB's hand-offs are uninstrumented), but only once the second thread has joined the
+/// render, which on a busy machine takes up to a second: hence 256 samples per pixel. The two
+/// threads share the grading's cores (one core is enough: TSan orders accesses, it does not
+/// need them at the same instant).
 RaceFinding checkRaces(const RaceCheckRun& run, Lab lab);
 
 } // namespace pathlab::grader

@@ -70,6 +70,11 @@ struct Rubric {
     /// A fingerprint of every setting (the file's JSON, reformatted, without "about"): each
     /// result records it, so that results graded under another rubric are never mixed.
     std::string hash;
+    /// A fingerprint of the settings that decide what is measured: all but the points and the
+    /// thresholds the measurements are judged by (noise.max_ratio, speed.min_ratio, speed.alpha,
+    /// speed.judged_by) and Gradescope's visibility. Results measured under the same are judged
+    /// again under a new rubric without rendering (a batch's re-score).
+    std::string measurementHash;
 
     const LabRubric& forLab(Lab lab) const { return labs[lab]; }
 };

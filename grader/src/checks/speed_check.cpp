@@ -93,8 +93,8 @@ TimedRuns timedRuns(const GraderSetup& setup, const LabRunner& runner, Lab lab,
     return runs;
 }
 
-/// Speed in a build without the reference solutions: the student's timed runs alone, for the
-/// ratios between labs; the check itself is the instructor's grader's.
+} // namespace
+
 SpeedOutcome timeWithoutSolutions(const GraderSetup& setup, Lab lab, bool correct,
                                   StartUpTimes& startUps) {
     const Rubric& r = setup.rubric;
@@ -122,14 +122,7 @@ SpeedOutcome timeWithoutSolutions(const GraderSetup& setup, Lab lab, bool correc
     return outcome;
 }
 
-/// One lab's timed series, interleaved with the reference's.
-struct TimedComparison {
-    std::vector<double> student, solution; ///< samples per CPU-second of each run
-    RayCounters studentRays, solutionRays;
-    double studentSamples = 0, solutionSamples = 0;
-    double cpuSeconds = 0, wallSeconds = 0; ///< over every run: how much of its core it had
-    bool imagesDiffer = false; ///< a timed run of the lab rendered other images than its seeds'
-};
+namespace {
 
 std::string measureName(SpeedMeasure measure) {
     return measure == SpeedMeasure::Efficiency ? "efficiency (time to equal noise)" : "samples/s";
@@ -144,9 +137,8 @@ struct SpeedVerdict {
 
 /// The speed check's verdict and its words, from the measured figures: `perSample`, the
 /// samples/s ratio, and `efficiencyRatio` (0: unknown), yours over the reference's.
-SpeedVerdict judgeSpeed(const GraderSetup& setup, Lab lab, double perSample, double efficiencyRatio,
+SpeedVerdict judgeSpeed(const Rubric& r, Lab lab, double perSample, double efficiencyRatio,
                         const RaysPerSample& studentRays, const RaysPerSample& solutionRays) {
-    const Rubric& r = setup.rubric;
     const SpeedMeasure measure = r.forLab(lab).speedJudgedBy;
     const double ratio = measure == SpeedMeasure::Efficiency ? efficiencyRatio : perSample;
     SpeedVerdict verdict;
@@ -203,6 +195,25 @@ SpeedVerdict judgeSpeed(const GraderSetup& setup, Lab lab, double perSample, dou
     return verdict;
 }
 
+/// Efficiency needs both variances, which the noise check measures for a correct lab only.
+bool variancesKnown(const SampleVariances& variances) {
+    return variances.student > 0 && variances.solution > 0;
+}
+
+/// The log of the variances' ratio, by which a lab judged by efficiency is judged (0 otherwise).
+double efficiencyShift(const Rubric& r, Lab lab, const SampleVariances& variances) {
+    return r.forLab(lab).speedJudgedBy == SpeedMeasure::Efficiency && variancesKnown(variances)
+               ? std::log(variances.solution / variances.student)
+               : 0;
+}
+
+/// The pairs' ratios, yours over the reference's, in run order.
+std::vector<double> pairRatios(const TimedMeasurement& t) {
+    std::vector<double> ratios;
+    for (size_t i = 0; i < t.student.size(); ++i) ratios.push_back(t.student[i] / t.solution[i]);
+    return ratios;
+}
+
 /// What the pairs so far say of the ratio against the threshold.
 enum class Decision { Faster, Slower, Undecided };
 
@@ -219,77 +230,6 @@ Decision decide(const std::vector<double>& logRatios, double shift, double thres
     if (estimate + margin < limit) return Decision::Slower;
     if (estimate - margin >= limit) return Decision::Faster;
     return Decision::Undecided;
-}
-
-/// The timed series of the lab and of the reference, interleaved A B A B so that a busy spell
-/// of a shared machine hits both alike; on the timing cores, holding the machine's timing lock.
-/// Pairs are added, `speedRuns` at a time, until the ratio is known to lie above or below the
-/// threshold, or SpeedPairsCap times `speedRuns` pairs ran. A run that fails ends it: nullopt,
-/// with the check's summary and diagnosis saying so.
-std::optional<TimedComparison> timeInterleaved(const GraderSetup& setup, Lab lab,
-                                               const std::vector<std::vector<float>>& images,
-                                               double shift, CheckResult& check,
-                                               StartUpTimes& startUps) {
-    const Rubric& r = setup.rubric;
-    const GradingScene* scene = speedScene(setup);
-    if (!scene) {
-        check.summary = "not measured: the rubric's speed scene '" + r.speedScene +
-                        "' is not among its correctness scenes";
-        check.diagnosis = "no speed scene";
-        return std::nullopt;
-    }
-    const LabRunner studentRunner = timedRunner(setup.student, setup.timing);
-    const LabRunner solutionRunner = timedRunner(setup.solution, setup.timing);
-    const TimingLock lock(setup.timing.lockFile);
-    const double startUp = startUpCpuSeconds(setup, solutionRunner, *scene, startUps);
-    TimedComparison t;
-    std::vector<double> logRatios;
-    const int looks = SpeedPairsCap;
-    for (int look = 0; look < looks; ++look) {
-        for (int run = 0; run < r.speedRuns; ++run) {
-            for (const LabRunner* runner : {&studentRunner, &solutionRunner}) {
-                const bool isStudent = runner == &studentRunner;
-                const TimedRun timed = timedRun(setup, *scene, *runner, lab, startUp);
-                if (!timed.result.ok) {
-                    check.summary = std::string(isStudent ? "the lab " : "the reference ") +
-                                    timed.result.failure + " in a timed run";
-                    check.diagnosis = isStudent ? timed.result.failureKind : "the reference failed";
-                    return std::nullopt;
-                }
-                (isStudent ? t.student : t.solution).push_back(timed.samplesPerCpuSecond());
-                for (const RenderedImage& image : timed.result.images)
-                    (isStudent ? t.studentRays : t.solutionRays) += image.rays;
-                (isStudent ? t.studentSamples : t.solutionSamples) += timed.samples;
-                t.cpuSeconds += timed.result.process.cpuSeconds;
-                t.wallSeconds += timed.result.process.seconds;
-                if (isStudent && !images.empty()) {
-                    std::vector<std::vector<float>> rendered;
-                    for (const RenderedImage& image : timed.result.images)
-                        rendered.push_back(image.rgb);
-                    t.imagesDiffer = t.imagesDiffer || rendered != images;
-                }
-            }
-            logRatios.push_back(std::log(t.student.back() / t.solution.back()));
-        }
-        if (t.imagesDiffer) break;
-        // Each look spends its share of alpha (Bonferroni): the chance that a lab at the
-        // threshold is failed stays at most alpha over all of them.
-        if (decide(logRatios, shift, r.minSpeedRatio, r.speedAlpha / looks) != Decision::Undecided)
-            break;
-    }
-    return t;
-}
-
-/// The pairs' ratios, yours over the reference's, in run order.
-std::vector<double> pairRatios(const TimedComparison& t) {
-    std::vector<double> ratios;
-    for (size_t i = 0; i < t.student.size(); ++i) ratios.push_back(t.student[i] / t.solution[i]);
-    return ratios;
-}
-
-/// Efficiency needs both variances, which the noise check measures for a correct lab only.
-bool variancesKnown(const SampleVariances& variances) {
-    return variances.student > 0 && variances.solution > 0;
 }
 
 /// The figures every verdict is told with: the summary's samples per CPU-second (the geometric
@@ -318,10 +258,9 @@ void describeTimedRuns(const Rubric& r, Lab lab, double ratio, size_t pairs,
 
 /// "the machine was busy: ..." when the timed runs had much less of their cores than their wall
 /// time; "" otherwise.
-std::string busyNote(const TimedComparison& t, const GraderSetup& setup) {
-    const size_t cores = setup.timing.cpus.empty() ? 0 : setup.timing.cpus.size();
-    if (cores == 0 || t.wallSeconds <= 0) return "";
-    const double share = t.cpuSeconds / (t.wallSeconds * static_cast<double>(cores));
+std::string busyNote(const TimedMeasurement& t) {
+    if (t.timingCores == 0 || t.wallSeconds <= 0) return "";
+    const double share = t.cpuSeconds / (t.wallSeconds * t.timingCores);
     if (share >= BusyShare) return "";
     return "the machine was busy: the timed runs had " + std::to_string(std::lround(100 * share)) +
            "% of their core (other processes shared it); the figures are CPU time, which that "
@@ -330,22 +269,76 @@ std::string busyNote(const TimedComparison& t, const GraderSetup& setup) {
 
 } // namespace
 
-SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, const SpeedInputs& in,
-                        StartUpTimes& startUps) {
-    if (!setup.measureSpeed) return timeWithoutSolutions(setup, lab, in.correct, startUps);
+TimedMeasurement timeLab(const GraderSetup& setup, Lab lab, const SpeedInputs& in,
+                         StartUpTimes& startUps) {
     const Rubric& r = setup.rubric;
+    TimedMeasurement t;
+    const GradingScene* scene = speedScene(setup);
+    if (!scene) {
+        t.notTimed = "not measured: the rubric's speed scene '" + r.speedScene +
+                     "' is not among its correctness scenes";
+        t.notTimedDiagnosis = "no speed scene";
+        return t;
+    }
+    const double shift = efficiencyShift(r, lab, in.variances);
+    const LabRunner studentRunner = timedRunner(setup.student, setup.timing);
+    const LabRunner solutionRunner = timedRunner(setup.solution, setup.timing);
+    const TimingLock lock(setup.timing.lockFile);
+    const double startUp = startUpCpuSeconds(setup, solutionRunner, *scene, startUps);
+    t.timingCores = static_cast<int>(setup.timing.cpus.size());
+    std::vector<double> logRatios;
+    // The series of the lab and of the reference, interleaved A B A B so that a busy spell of
+    // a shared machine hits both alike. Pairs are added, speed.runs at a time, until the ratio is
+    // known to lie above or below the threshold, or SpeedPairsCap times as many ran.
+    for (int look = 0; look < SpeedPairsCap; ++look) {
+        for (int run = 0; run < r.speedRuns; ++run) {
+            for (const LabRunner* runner : {&studentRunner, &solutionRunner}) {
+                const bool isStudent = runner == &studentRunner;
+                const TimedRun timed = timedRun(setup, *scene, *runner, lab, startUp);
+                if (!timed.result.ok) {
+                    t.notTimed = std::string(isStudent ? "the lab " : "the reference ") +
+                                 timed.result.failure + " in a timed run";
+                    t.notTimedDiagnosis =
+                        isStudent ? timed.result.failureKind : "the reference failed";
+                    return t;
+                }
+                (isStudent ? t.student : t.solution).push_back(timed.samplesPerCpuSecond());
+                for (const RenderedImage& image : timed.result.images)
+                    (isStudent ? t.studentRays : t.solutionRays) += image.rays;
+                (isStudent ? t.studentSamples : t.solutionSamples) += timed.samples;
+                t.cpuSeconds += timed.result.process.cpuSeconds;
+                t.wallSeconds += timed.result.process.seconds;
+                if (isStudent && !in.speedSceneImages.empty()) {
+                    std::vector<std::vector<float>> rendered;
+                    for (const RenderedImage& image : timed.result.images)
+                        rendered.push_back(image.rgb);
+                    t.imagesDiffer = t.imagesDiffer || rendered != in.speedSceneImages;
+                }
+            }
+            logRatios.push_back(std::log(t.student.back() / t.solution.back()));
+        }
+        if (t.imagesDiffer) break;
+        // Each look spends its share of alpha (Bonferroni): the chance that a lab at the
+        // threshold is failed stays at most alpha over all of them.
+        if (decide(logRatios, shift, r.minSpeedRatio, r.speedAlpha / SpeedPairsCap) !=
+            Decision::Undecided)
+            break;
+    }
+    return t;
+}
+
+SpeedOutcome judgeTimedRuns(const Rubric& r, Lab lab, bool correct,
+                            const SampleVariances& variances, const TimedMeasurement& t) {
     SpeedOutcome outcome;
     CheckResult& check = outcome.check;
     check.kind = CheckKind::Speed;
     check.maxScore = r.forLab(lab).points.speed;
-    const SampleVariances& variances = in.variances;
-    const bool byEfficiency =
-        r.forLab(lab).speedJudgedBy == SpeedMeasure::Efficiency && variancesKnown(variances);
-    const double shift = byEfficiency ? std::log(variances.solution / variances.student) : 0;
-    const std::optional<TimedComparison> timed =
-        timeInterleaved(setup, lab, in.speedSceneImages, shift, check, startUps);
-    if (!timed) return outcome;
-    const TimedComparison& t = *timed;
+    if (!t.timed()) {
+        check.summary = t.notTimed;
+        check.diagnosis = t.notTimedDiagnosis;
+        return outcome;
+    }
+    const double shift = efficiencyShift(r, lab, variances);
     outcome.studentSamplesPerSecond = geometricMean(t.student);
     outcome.solutionSamplesPerSecond = geometricMean(t.solution);
     outcome.studentRays = raysPerSample(t.studentRays, t.studentSamples);
@@ -357,8 +350,8 @@ SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, const SpeedInputs& in
     outcome.efficiencyRatio =
         variancesKnown(variances) ? ratio * variances.solution / variances.student : 0;
     describeTimedRuns(r, lab, ratio, pairs.size(), variances, outcome);
-    if (const std::string busy = busyNote(t, setup); !busy.empty()) check.details.push_back(busy);
-    if (!in.correct) {
+    if (const std::string busy = busyNote(t); !busy.empty()) check.details.push_back(busy);
+    if (!correct) {
         check.summary += "; speed counts only for a correct lab";
         return outcome;
     }
@@ -379,8 +372,8 @@ SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, const SpeedInputs& in
     for (double p : pairs) logRatios.push_back(std::log(p));
     const Decision decision =
         decide(logRatios, shift, r.minSpeedRatio, r.speedAlpha / SpeedPairsCap);
-    SpeedVerdict verdict = judgeSpeed(setup, lab, ratio, outcome.efficiencyRatio,
-                                      outcome.studentRays, outcome.solutionRays);
+    SpeedVerdict verdict = judgeSpeed(r, lab, ratio, outcome.efficiencyRatio, outcome.studentRays,
+                                      outcome.solutionRays);
     if (decision == Decision::Undecided && !verdict.passed) {
         // After the last pairs, neither above nor below the threshold with confidence: the lab
         // is given the benefit of the doubt, and told so.

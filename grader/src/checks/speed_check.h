@@ -10,6 +10,7 @@
 
 #include "checks/check_result.h"
 #include "checks/grader_setup.h"
+#include "checks/lab_measurement.h"
 #include "checks/noise_check.h"
 #include "isolation/render_run.h"
 #include "isolation/start_up_times.h"
@@ -33,16 +34,25 @@ struct SpeedOutcome {
 
 /// What the checks before it give the speed check.
 struct SpeedInputs {
-    bool correct = false;      ///< the correctness verdict (speed counts only for a correct lab)
-    SampleVariances variances; ///< the noise check's, for the efficiency
+    SampleVariances variances; ///< the noise check's, for a lab judged by efficiency
     /// The correctness renders' images of the speed scene (CorrectnessOutcome), which the timed
     /// runs must render again.
     std::vector<std::vector<float>> speedSceneImages;
 };
 
-/// `startUps`: the grading's start-up measurements.
-SpeedOutcome checkSpeed(const GraderSetup& setup, Lab lab, const SpeedInputs& inputs,
-                        StartUpTimes& startUps);
+/// Times `lab` against the reference solution, as many pairs as the rubric's threshold needs.
+TimedMeasurement timeLab(const GraderSetup& setup, Lab lab, const SpeedInputs& inputs,
+                         StartUpTimes& startUps);
+
+/// The verdict under `rubric`; `correct`: the correctness verdict (speed counts only then);
+/// `variances`: the noise check's, for the efficiency.
+SpeedOutcome judgeTimedRuns(const Rubric& rubric, Lab lab, bool correct,
+                            const SampleVariances& variances, const TimedMeasurement& timed);
+
+/// Speed in a build without the reference solutions: the student's timed runs alone, for the
+/// ratios between labs; the check itself is the instructor's grader's.
+SpeedOutcome timeWithoutSolutions(const GraderSetup& setup, Lab lab, bool correct,
+                                  StartUpTimes& startUps);
 
 /// The rubric's timed runs of one lab with `runner`'s labs alone (for the stored reference
 /// figures): samples per CPU-second (the geometric mean; 0 if a run failed) and rays per sample.

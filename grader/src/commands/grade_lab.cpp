@@ -5,59 +5,70 @@
 #include "checks/race_verdict.h"
 #include "checks/speed_check.h"
 
+#include <chrono>
+
 namespace pathlab::grader {
 
-LabGrade ungradedLab(const Rubric& rubric, Lab lab, bool measureSpeed, const std::string& reason,
-                     const std::vector<std::string>& details) {
-    LabGrade grade;
-    grade.lab = lab;
-    for (CheckKind kind : AllChecks) {
-        if (kind == CheckKind::Speed && !measureSpeed) continue;
-        CheckResult check;
-        check.kind = kind;
-        check.maxScore = rubric.forLab(lab).points.of(kind);
-        check.summary = reason;
-        check.diagnosis = reason;
-        if (kind == CheckKind::Correctness) check.details = details;
-        grade.checks.push_back(check);
+LabMeasurement measureLab(const GraderSetup& setup, Lab lab, StartUpTimes& startUps) {
+    LabMeasurement m;
+    m.lab = lab;
+    auto started = std::chrono::steady_clock::now();
+    const auto lap = [&] {
+        const auto now = std::chrono::steady_clock::now();
+        const double seconds = std::chrono::duration<double>(now - started).count();
+        started = now;
+        return seconds;
+    };
+    CorrectnessOutcome correctness = checkCorrectness(setup, lab);
+    m.seconds.correctness = lap();
+    // A lab that crashed or hung has failed already; the race check would only do it again.
+    if (setup.raceCheck && correctness.rendersFinished) {
+        addRaceVerdict(setup.raceCheck(lab), correctness.check);
+        m.seconds.race = lap();
     }
-    return grade;
+    m.correctness = correctness.check;
+    m.rendersFinished = correctness.rendersFinished;
+    m.pictures = std::move(correctness.pictures);
+    m.noise = measureNoise(setup, lab, correctness.noise);
+    m.speedMeasured = setup.measureSpeed;
+    if (!setup.measureSpeed) return m;
+    if (!m.rendersFinished) {
+        // A lab that crashed or hung in 64x64 renders would do the same timed.
+        m.speed.notTimed = "not measured: the lab's correctness renders failed, and speed counts "
+                           "only for a correct lab";
+        return m;
+    }
+    const bool correct = m.correctness.passed;
+    const SampleVariances variances = correct && m.noise.student > 0
+                                          ? SampleVariances{m.noise.student, m.noise.solution}
+                                          : SampleVariances{};
+    lap();
+    m.speed = timeLab(setup, lab, {variances, correctness.speedSceneImages}, startUps);
+    m.seconds.speed = lap();
+    return m;
 }
 
-LabGrade gradeLab(const GraderSetup& setup, Lab lab, StartUpTimes& startUps) {
-    LabGrade grade;
-    grade.lab = lab;
-    CorrectnessOutcome correctness = checkCorrectness(setup, lab);
-    // A lab that crashed or hung has failed already; the race check would only do it again.
-    if (setup.raceCheck && correctness.rendersFinished)
-        addRaceVerdict(setup.raceCheck(lab), correctness.check);
-    const bool correct = correctness.check.passed;
-    grade.checks.push_back(correctness.check);
-    grade.pictures = std::move(correctness.pictures);
-    grade.rendersFinished = correctness.rendersFinished;
-    const NoiseOutcome noise = checkNoise(setup, lab, correct, correctness.noise);
-    grade.checks.push_back(noise.check);
-    grade.studentVariance = noise.variances.student;
-    grade.solutionVariance = noise.variances.solution;
-    if (!setup.measureSpeed && !setup.timeWithoutSolutions) return grade;
-    if (!grade.rendersFinished) {
-        // A lab that crashed or hung in 64x64 renders would do the same in longer ones.
-        CheckResult speed;
-        speed.kind = CheckKind::Speed;
-        speed.maxScore = setup.rubric.forLab(lab).points.speed;
+LabGrade gradeLab(const GraderSetup& setup, Lab lab, StartUpTimes& startUps,
+                  LabMeasurement* measured) {
+    const LabMeasurement m = measureLab(setup, lab, startUps);
+    LabGrade grade = judgeLab(setup.rubric, m);
+    if (measured) *measured = m;
+    if (!setup.timeWithoutSolutions) return grade;
+    CheckResult speed;
+    speed.kind = CheckKind::Speed;
+    speed.maxScore = setup.rubric.forLab(lab).points.speed;
+    if (!m.rendersFinished) {
         speed.summary = "not measured: the lab's correctness renders failed, and speed counts "
                         "only for a correct lab";
         grade.checks.push_back(speed);
         return grade;
     }
-    const SpeedOutcome speed =
-        checkSpeed(setup, lab, {correct, noise.variances, correctness.speedSceneImages}, startUps);
-    grade.checks.push_back(speed.check);
-    grade.studentSamplesPerSecond = speed.studentSamplesPerSecond;
-    grade.solutionSamplesPerSecond = speed.solutionSamplesPerSecond;
-    grade.studentRays = speed.studentRays;
-    grade.solutionRays = speed.solutionRays;
-    grade.efficiencyRatio = speed.efficiencyRatio;
+    const SpeedOutcome timed =
+        timeWithoutSolutions(setup, lab, grade.checks.front().passed, startUps);
+    grade.checks.push_back(timed.check);
+    grade.studentSamplesPerSecond = timed.studentSamplesPerSecond;
+    grade.solutionSamplesPerSecond = timed.solutionSamplesPerSecond;
+    grade.studentRays = timed.studentRays;
     return grade;
 }
 

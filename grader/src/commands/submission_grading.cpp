@@ -2,15 +2,19 @@
 
 #include "commands/grade_lab.h"
 #include "common/content_hash.h"
+#include "reports/reports.h"
 
 #include "pathlab/render_stats.h"
 #include "pathlab/whole_file.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
+#include <fstream>
 
 namespace pathlab::grader {
 
@@ -36,8 +40,6 @@ std::function<RaceFinding(Lab)> raceCheckOf(const SubmissionGrader& grader,
     races.sources = sources;
     races.folder = build;
     races.policy = policy;
-    races.timingCpus = grader.timing.cpus;
-    races.timingLock = grader.timing.lockFile;
     races.seed = grader.seedBase;
     return [races, id](Lab lab) {
         const RaceFinding finding = checkRaces(races, lab);
@@ -72,29 +74,35 @@ void addLabName(std::string& names, Lab lab) {
     names += (names.empty() ? "" : " ") + std::string(labName(lab));
 }
 
-/// Grades each lab that compiled and linked, and reports the others ungraded with the reason;
-/// returns the submission's status: graded, and which labs were not submitted, do not compile
-/// or do not link.
-std::string gradeLabs(const SubmissionGrader& grader, const SubmissionLibrary& library,
-                      const GraderSetup& setup, GradeReport& report) {
+/// Measures each lab that compiled and linked, and the others as ungraded with the reason, into
+/// `outcome`'s measurements; returns the submission's status: graded, and which labs were not
+/// submitted, do not compile or do not link.
+std::string measureLabs(const SubmissionGrader& grader, const SubmissionLibrary& library,
+                        const GraderSetup& setup, SubmissionOutcome& outcome) {
     StartUpTimes startUps;        // this submission's: its labs' libraries are its own
     std::string broken, unlinked; // names of the labs that do not compile, do not link
     for (Lab lab : AllLabs) {
         const LabCompilation& compiled = library.labs[lab];
+        LabMeasurement ungraded;
+        ungraded.lab = lab;
+        ungraded.speedMeasured = grader.measureSpeed;
         if (compiled.status == LabCompilation::Status::NotSubmitted) {
-            report.labs.push_back(
-                ungradedLab(grader.rubric, lab, grader.measureSpeed, "not submitted", {}));
+            ungraded.ungraded = "not submitted";
         } else if (compiled.status == LabCompilation::Status::Failed) {
             addLabName(broken, lab);
-            report.labs.push_back(ungradedLab(grader.rubric, lab, grader.measureSpeed,
-                                              "does not compile", {compiled.messages}));
+            ungraded.ungraded = "does not compile";
+            ungraded.ungradedDetails = {compiled.messages};
         } else if (!library.linked(lab)) {
             addLabName(unlinked, lab);
-            report.labs.push_back(ungradedLab(grader.rubric, lab, grader.measureSpeed,
-                                              "does not link", {library.problem[lab]}));
-        } else {
-            report.labs.push_back(gradeLab(setup, lab, startUps));
+            ungraded.ungraded = "does not link";
+            ungraded.ungradedDetails = {library.problem[lab]};
         }
+        outcome.measurements.push_back(ungraded.ungraded.empty() ? measureLab(setup, lab, startUps)
+                                                                 : ungraded);
+        const PhaseSeconds& spent = outcome.measurements.back().seconds;
+        outcome.seconds.labs.correctness += spent.correctness;
+        outcome.seconds.labs.race += spent.race;
+        outcome.seconds.labs.speed += spent.speed;
     }
     std::string status = "graded";
     std::string missing;
@@ -107,13 +115,92 @@ std::string gradeLabs(const SubmissionGrader& grader, const SubmissionLibrary& l
     return status;
 }
 
+/// Wall-clock seconds since `start`.
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The files of one grading, in the order an attempt is archived.
+const char* const GradingFiles[] = {"result.json", "feedback.json", "measurements.json",
+                                    "index.html",  "grader.log",    "pictures"};
+
+/// The earlier attempts kept in FOLDER/attempts/, by number.
+std::vector<GradeReport::Attempt> earlierAttempts(const std::string& folder) {
+    std::vector<GradeReport::Attempt> attempts;
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(folder + "/attempts", error)) {
+        std::ifstream in(entry.path() / "result.json");
+        const nlohmann::json r = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+        if (!r.is_object()) continue;
+        attempts.push_back({r.value("attempt", 0), r.value("score", 0.0), r.value("max_score", 0.0),
+                            r.value("graded_at", ""), r.value("how", "graded")});
+    }
+    std::sort(attempts.begin(), attempts.end(),
+              [](const auto& x, const auto& y) { return x.number < y.number; });
+    return attempts;
+}
+
+std::string nowIso() {
+    char text[32];
+    const std::time_t now = std::time(nullptr);
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+    return text;
+}
+
 } // namespace
+
+std::string labFilesHash(const Intake& intake, const std::string& folder) {
+    ContentHash files;
+    for (const auto& [name, where] : intake.taken) files.add(name).addFile(folder + "/" + name);
+    return files.hex();
+}
+
+int archiveAttempt(const std::string& folder) {
+    int highest = 0;
+    for (const GradeReport::Attempt& a : earlierAttempts(folder))
+        highest = std::max(highest, a.number);
+    std::ifstream in(folder + "/result.json");
+    const nlohmann::json current =
+        in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+    in.close();
+    if (!current.is_object()) return highest + 1;
+    const int number = std::max(current.value("attempt", 1), highest + 1);
+    const std::string kept = folder + "/attempts/" + std::to_string(number);
+    fs::create_directories(kept);
+    for (const char* name : GradingFiles) {
+        std::error_code error;
+        if (fs::exists(folder + "/" + name, error))
+            fs::rename(folder + "/" + name, kept + "/" + name);
+    }
+    return number + 1;
+}
+
+void writeGrading(const SubmissionOutcome& outcome, const std::string& submission,
+                  const std::string& folder) {
+    GradeReport report = outcome.report;
+    report.earlierAttempts = earlierAttempts(folder);
+    nlohmann::json labs = nlohmann::json::array();
+    for (const LabMeasurement& m : outcome.measurements) labs.push_back(measurementJson(m, folder));
+    writeFileAtomically(folder + "/measurements.json",
+                        nlohmann::json{{"about", "what grading this submission measured, apart "
+                                                 "from the rubric's points and thresholds: judged "
+                                                 "again when only those change"},
+                                       {"notes", outcome.report.notes},
+                                       {"labs", labs}}
+                                .dump(1) +
+                            "\n");
+    writeFileAtomically(folder + "/feedback.json", jsonReport(report));
+    writeHtmlReport(report, folder);
+    writeFileAtomically(folder + "/result.json", resultJson(outcome, submission));
+}
 
 SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::string& submission,
                                   const std::string& folder, const std::string& scratchRoot) {
-    const auto start = std::chrono::steady_clock::now();
+    auto start = std::chrono::steady_clock::now();
+    const auto began = start;
     SubmissionOutcome outcome;
     outcome.id = submissionId(submission);
+    outcome.attempt = archiveAttempt(folder);
     const SandboxPolicy policy{grader.workCpus, sandboxUserForThisProcess()};
     const std::string sources = folder + "/submitted", build = folder + "/build",
                       scratch = scratchRoot + "/renders";
@@ -123,36 +210,40 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
     }
 
     outcome.rubricHash = grader.rubric.hash;
+    outcome.measurementHash = grader.rubric.measurementHash;
+    outcome.speedMeasured = grader.measureSpeed;
     outcome.scenesHash = grader.scenesHash;
     outcome.intake = takeSubmission(submission, sources, policy);
-    ContentHash files;
-    for (const auto& [name, where] : outcome.intake.taken)
-        files.add(name).addFile(sources + "/" + name);
-    outcome.filesHash = files.hex();
+    outcome.filesHash = labFilesHash(outcome.intake, sources);
+    outcome.seconds.intake = secondsSince(start);
     GradeReport& report = outcome.report;
     for (const std::string& problem : outcome.intake.problems)
         report.notes.push_back("submission: " + problem);
     if (outcome.intake.taken.empty()) {
         outcome.status = "no lab files found";
-        for (Lab lab : AllLabs)
-            report.labs.push_back(
-                ungradedLab(grader.rubric, lab, grader.measureSpeed, "not submitted", {}));
+        for (Lab lab : AllLabs) {
+            LabMeasurement none;
+            none.lab = lab;
+            none.ungraded = "not submitted";
+            none.speedMeasured = grader.measureSpeed;
+            outcome.measurements.push_back(none);
+        }
     } else {
+        start = std::chrono::steady_clock::now();
         const SubmissionLibrary library =
             buildSubmissionLibrary(grader.build, grader.kit, sources, build, policy);
+        outcome.seconds.compile = secondsSince(start);
         GraderSetup setup = setupFor(grader, library, policy, scratch);
         if (grader.raceCheck.available())
             setup.raceCheck = raceCheckOf(grader, sources, build, policy, outcome.id);
-        outcome.status = gradeLabs(grader, library, setup, report);
+        outcome.status = measureLabs(grader, library, setup, outcome);
     }
+    for (const LabMeasurement& m : outcome.measurements)
+        report.labs.push_back(judgeLab(grader.rubric, m));
     killProcessesOf(policy.user);
     fs::remove_all(scratch);
-    report.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-    writeFileAtomically(folder + "/feedback.json", jsonReport(report));
-    writeHtmlReport(report, folder);
-    writeFileAtomically(folder + "/result.json", resultJson(outcome, submission));
+    report.seconds = secondsSince(began);
+    writeGrading(outcome, submission, folder);
     return outcome;
 }
 
@@ -187,8 +278,19 @@ std::string resultJson(const SubmissionOutcome& outcome, const std::string& subm
                               {"missing_labs", missing},
                               {"diagnoses", diagnoses},
                               {"seconds", outcome.report.seconds},
+                              {"seconds_by_phase",
+                               {{"intake", outcome.seconds.intake},
+                                {"compile", outcome.seconds.compile},
+                                {"correctness", outcome.seconds.labs.correctness},
+                                {"race_check", outcome.seconds.labs.race},
+                                {"speed", outcome.seconds.labs.speed}}},
+                              {"attempt", outcome.attempt},
+                              {"how", outcome.how},
+                              {"graded_at", nowIso()},
                               {"graded_under",
                                {{"rubric_hash", outcome.rubricHash},
+                                {"measurement_hash", outcome.measurementHash},
+                                {"speed_measured", outcome.speedMeasured},
                                 {"scenes_hash", outcome.scenesHash},
                                 {"kit_version", PATHLAB_VERSION}}},
                               {"intake",

@@ -206,11 +206,19 @@ std::string jsonReport(const GradeReport& report) {
     nlohmann::json ratios = nlohmann::json::object();
     for (const LabRatio& r : labRatios(report))
         ratios[r.name] = {{"student", r.student}, {"reference", r.reference}};
+    nlohmann::json attempts = nlohmann::json::array();
+    for (const GradeReport::Attempt& a : report.earlierAttempts)
+        attempts.push_back({{"attempt", a.number},
+                            {"score", a.score},
+                            {"max_score", a.maxScore},
+                            {"graded_at", a.gradedAt},
+                            {"how", a.how}});
     const nlohmann::json j = {
         {"kit_version", PATHLAB_VERSION}, {"score", report.score()},
         {"max_score", report.maxScore()}, {"points_not_graded_here", report.pointsNotGradedHere()},
         {"seconds", report.seconds},      {"labs", labs},
-        {"speed_ratios", ratios},         {"notes", report.notes}};
+        {"speed_ratios", ratios},         {"notes", report.notes},
+        {"earlier_attempts", attempts}};
     return j.dump(2) + "\n";
 }
 
@@ -329,6 +337,15 @@ void writeHtmlReport(const GradeReport& report, const std::string& folder) {
             html << "</p>\n";
             if (tiles) html << tileZLegendHtml();
         }
+    }
+    if (!report.earlierAttempts.empty()) {
+        html << "<h2>Earlier attempts</h2>\n<table><tr><th>attempt</th><th>score</th><th>graded "
+                "(UTC)</th><th>how</th></tr>\n";
+        for (const GradeReport::Attempt& a : report.earlierAttempts)
+            html << "<tr><td><a href=\"attempts/" << a.number << "/index.html\">" << a.number
+                 << "</a></td><td>" << a.score << " / " << a.maxScore << "</td><td>"
+                 << escapeXml(a.gradedAt) << "</td><td>" << escapeXml(a.how) << "</td></tr>\n";
+        html << "</table>\n";
     }
     html << "</body></html>\n";
     writeFileAtomically(folder + "/index.html", html.str());

@@ -18,6 +18,14 @@ struct GradeReport {
     /// Where the reference's side of the speed ratios comes from, when not from timing the
     /// solutions beside the student's labs now: "the reference solutions on <machine>".
     std::string ratiosReference;
+    /// A submission's earlier gradings (a batch keeps each in attempts/N/), oldest first.
+    struct Attempt {
+        int number = 0;
+        double score = 0, maxScore = 0;
+        std::string gradedAt; ///< UTC, ISO 8601
+        std::string how;      ///< "graded", or "re-scored" from an earlier attempt's measurements
+    };
+    std::vector<Attempt> earlierAttempts;
 
     double score() const;
     double maxScore() const; ///< of the checks graded here
