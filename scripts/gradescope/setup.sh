@@ -19,6 +19,12 @@ if [ -e ../run_autograder ]; then chmod 755 ../run_autograder; fi
 bash scripts/install-deps.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPATHLAB_BUILD_TESTS=OFF
 cmake --build build --target grader
+# No hidden scene of the instructor's: variants of the public scenes, drawn here from a seed no
+# student sees, unless the rubric asks for none (hidden_scenes.variants 0), as a batch makes them.
+if ! ls grader/hidden_scenes/*.ecs >/dev/null 2>&1 &&
+   [ "$(python3 -c 'import json; print(json.load(open("grader/rubric.json")).get("hidden_scenes", {}).get("variants", 1))')" != 0 ]; then
+    build/grader make-variants grader/hidden_scenes
+fi
 # The hidden scenes' references, measured once here rather than for every submission.
 if ls grader/hidden_scenes/*.ecs >/dev/null 2>&1; then
     build/grader make-references --only-hidden

@@ -18,6 +18,7 @@ root, where the sandbox is what differs).
 import csv
 import json
 import os
+import re
 import shutil
 import signal
 import socket
@@ -371,9 +372,9 @@ def grading_seconds(out):
     """{id: seconds} from batch.log's 'done' lines."""
     seconds = {}
     for line in open(os.path.join(out, "batch.log")):
-        words = line.split()
-        if len(words) > 3 and words[1] == "done":
-            seconds[words[2].rstrip(":")] = int(words[-2])
+        done = re.search(r" done (\S+): .*, (\d+) s(?: \(|$)", line)
+        if done:
+            seconds[done.group(1)] = int(done.group(2))
     return seconds
 
 

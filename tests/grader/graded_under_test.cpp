@@ -215,7 +215,11 @@ TEST_CASE("submission times: ISO 8601 with a zone, a deadline in local time, an 
 
 TEST_CASE("a gradebook never mixes maxima, says pending, stale and late", "[grader]") {
     Scratch scratch;
-    GradingNow now{"rubric-now", "scenes-now", 40, parseTime("2026-12-01T23:59Z"), {}};
+    GradingNow now;
+    now.rubricHash = "rubric-now";
+    now.scenesHash = "scenes-now";
+    now.maxScore = 40;
+    now.deadline = parseTime("2026-12-01T23:59Z");
     auto result = [](double score, double max, const std::string& rubric,
                      const std::string& submitted) {
         return nlohmann::json{
@@ -286,10 +290,47 @@ TEST_CASE("a gradebook never mixes maxima, says pending, stale and late", "[grad
     CHECK(lms.find("Student,SIS Login ID,PathLab (40 points)\n") == 0);
     CHECK(lms.find("alice,alice,40\n") != std::string::npos);
     CHECK(lms.find("bob") == std::string::npos);
+    // Stale or pending, a total is not what the grading now gives: withheld, never exported.
+    CHECK(lms.find("carol") == std::string::npos);
     CHECK(lms.find("dave") == std::string::npos);
 
     const std::string summary = readText(scratch.path / "summary.html");
     CHECK(summary.find("1 pending, 2 stale") != std::string::npos);
     CHECK(summary.find("97%</td><td>uniform</td><td>alice</td><td>reference solutions") !=
           std::string::npos);
+}
+
+TEST_CASE("a result whose rubric changed only in points or thresholds is re-scored; one whose "
+          "scenes, kit, measurement settings or speed changed is graded again",
+          "[grader]") {
+    GradingNow now;
+    now.rubricHash = "rubric-now";
+    now.measurementHash = "measured-alike";
+    now.scenesHash = "scenes-now";
+    now.maxScore = 40;
+    const auto result = [](const std::string& rubric, const std::string& measured,
+                           const std::string& scenes, bool speed) {
+        return nlohmann::json{{"max_score", 40},
+                              {"graded_under",
+                               {{"rubric_hash", rubric},
+                                {"measurement_hash", measured},
+                                {"scenes_hash", scenes},
+                                {"speed_measured", speed},
+                                {"kit_version", PATHLAB_VERSION}}}};
+    };
+    CHECK(regradeNeeded(result("rubric-now", "measured-alike", "scenes-now", true), now) ==
+          Regrade::None);
+    CHECK(regradeNeeded(result("rubric-before", "measured-alike", "scenes-now", true), now) ==
+          Regrade::Rescore);
+    CHECK(regradeNeeded(result("rubric-before", "measured-otherwise", "scenes-now", true), now) ==
+          Regrade::Measure);
+    CHECK(regradeNeeded(result("rubric-now", "measured-alike", "scenes-before", true), now) ==
+          Regrade::Measure);
+    // Graded without speed, now with: its timed runs must be made.
+    CHECK(regradeNeeded(result("rubric-before", "measured-alike", "scenes-now", false), now) ==
+          Regrade::Measure);
+    // A result of before measurements were kept has no measurement hash: graded again.
+    nlohmann::json old = result("rubric-before", "measured-alike", "scenes-now", true);
+    old["graded_under"].erase("measurement_hash");
+    CHECK(regradeNeeded(old, now) == Regrade::Measure);
 }

@@ -7,8 +7,11 @@ promises:
 
 - the canary (the solutions graded first) passes with the edited scene, so its reference was
   measured again; and stops the batch, grading no one, when a reference is wrong;
-- results graded under another rubric are graded again, or kept and marked stale with --keep-stale,
-  and no gradebook mixes totals out of different maxima; --only grades just those named;
+- results graded under another rubric are kept and marked stale with --keep-stale, and no gradebook
+  mixes totals out of different maxima; --only grades just those named; a rubric that changed only
+  points or thresholds re-scores everyone from their measurements, rendering nothing (the canary
+  too), each grading kept as an attempt that the student's page lists; a submission changed since
+  it was graded is graded again without --only, saying so;
 - no file of a student's feedback names the hidden scene or shows its images;
 - the similarity report pairs a copy of the solutions with renamed variables with the solutions.
 
@@ -73,10 +76,11 @@ def make_class(root):
     return subs
 
 
-def light_rubric(root, roulette_correctness=6):
+def light_rubric(root, roulette_correctness=6, max_noise_ratio=1.5):
     rubric = json.load(open(os.path.join(args.source, "grader", "rubric.json")))
     rubric["correctness"].update({"seeds": 6, "width": 32, "height": 32, "tiles": 2, "scenes": ["furnace"]})
-    rubric["noise"]["scene"] = "furnace"
+    rubric["noise"].update({"scene": "furnace", "max_ratio": max_noise_ratio})
+    rubric["speed"]["scene"] = "furnace"
     rubric["points"]["roulette"]["correctness"] = roulette_correctness
     path = os.path.join(root, "rubric.json")
     json.dump(rubric, open(path, "w"), indent=1)
@@ -215,14 +219,47 @@ def main():
               and rows["bob"]["total"] == "" and rows["bob"]["status"].startswith("stale"),
               "--only alice regrades alice alone; the others stay stale, without totals")
 
-        # 6. Resumed without flags: the stale ones are graded again.
+        # 6. Resumed without flags: the stale ones, whose rubric changed only in points, are judged
+        # again from their measurements, nothing rendered.
         run = batch("resumed")
         rows = gradebook()
-        check(graded_in_last_batch() == ["bob", "carol"] and [rows[i]["total"] for i in ("alice", "bob", "carol")]
-              == ["42", "34", "24"] and all(not r["status"].startswith("stale") for r in rows.values()),
-              "a resumed batch regrades what is stale: every total out of 42")
+        log = read(os.path.join(OUT, "batch.log")).split(" batch of ")[-1]
+        check(graded_in_last_batch() == [] and re.findall(r" (\w+): re-scored from attempt", log) == ["bob", "carol"]
+              and [rows[i]["total"] for i in ("alice", "bob", "carol")] == ["42", "34", "24"]
+              and all(not r["status"].startswith("stale") for r in rows.values()),
+              "a resumed batch re-scores what only the rubric's points made stale: every total out of 42")
 
-        # 7. The Gradescope zip holds a hidden scene that git does not track, and says so.
+        # 7. A threshold changes (noise at most 1.2 times the reference's): everyone re-scored in
+        # seconds, the canary too, nothing rendered; each grading kept as an attempt.
+        measured = {i: read(os.path.join(OUT, "submissions", i, "measurements.json")) for i in ("alice", "bob")}
+        light_rubric(root, roulette_correctness=16, max_noise_ratio=1.2)
+        run = batch("a threshold changed")
+        log = read(os.path.join(OUT, "batch.log")).split(" batch of ")[-1]
+        check(run.returncode == 0 and graded_in_last_batch() == [] and "canary: reference solutions 42 / 42, re-scored" in log
+              and sorted(re.findall(r" (\w+): re-scored from attempt", log)) == ["alice", "bob", "carol"],
+              "a threshold changed: the canary and every student re-scored from their measurements, no render")
+        check(timings["a threshold changed"] < 20, f"... in seconds ({timings['a threshold changed']:.0f} s)")
+        # Measurements carry over; the grading before is kept as an attempt and listed.
+        kept = json.load(open(os.path.join(OUT, "submissions", "alice", "result.json")))
+        attempts = sorted(os.listdir(os.path.join(OUT, "submissions", "alice", "attempts")), key=int)
+        page = read(os.path.join(OUT, "submissions", "alice", "index.html"))
+        check(kept["how"].startswith("re-scored from attempt") and attempts == [str(n) for n in range(1, kept["attempt"])]
+              and all(f'href="attempts/{n}/index.html"' in page for n in attempts) and "Earlier attempts" in page,
+              f"alice's gradings are attempts 1 to {kept['attempt']}, her page lists the earlier ones ({attempts})")
+        check(json.loads(read(os.path.join(OUT, "submissions", "bob", "measurements.json")))["labs"]
+              == json.loads(measured["bob"])["labs"], "a re-score measures nothing anew")
+        check(gradebook()["alice"]["attempt"] == str(kept["attempt"]), "the gradebook's attempt column")
+
+        # 8. Carol hands in lab 4, into the folder the batch reads: graded again without --only,
+        # saying so; the others kept as they are.
+        write(os.path.join(SUBS, "carol", "roulette.cpp"), read(os.path.join(SOLUTIONS, "roulette.cpp")))
+        run = batch("carol resubmits")
+        rows = gradebook()
+        check(graded_in_last_batch() == ["carol"] and "carol: changed since it was graded: graded again" in run.stderr
+              and rows["carol"]["total"] == "42",
+              "a changed submission is graded again on a plain batch run, and the run says so")
+
+        # 9. The Gradescope zip holds a hidden scene that git does not track, and says so.
         kit = os.path.join(root, "kit")
         subprocess.run(["git", "clone", "--quiet", "--no-hardlinks", args.source, kit], check=True)
         add_hidden_scene(os.path.join(kit, "grader", "hidden_scenes"))

@@ -15,6 +15,7 @@
 #include "commands/batch_selection.h"
 #include "commands/commands.h"
 #include "commands/output_lock.h"
+#include "commands/rescore.h"
 #include "commands/submission_grading.h"
 #include "reports/gradebook.h"
 #include "reports/lab_figures.h"
@@ -113,6 +114,8 @@ GradingNow gradingNow(const Arguments& a, const Rubric& rubric, const std::strin
                       const std::string& times) {
     GradingNow now;
     now.rubricHash = rubric.hash;
+    now.measurementHash = rubric.measurementHash;
+    now.measuresSpeed = a.speed;
     now.scenesHash = scenesHash(rubric, a.scenesDir);
     now.maxScore = maxScoreNow(rubric, a.speed);
     if (!deadline.empty()) {
@@ -148,12 +151,25 @@ Job startJob(const std::vector<std::string>& argv, const Submission& s, const st
     return {ChildProcess(argv, setup), s, std::chrono::steady_clock::now()};
 }
 
+/// What the canary is judged by: the grading now, without speed.
+GradingNow canaryGrading(GradingNow now, const Rubric& rubric) {
+    now.measuresSpeed = false;
+    now.maxScore = maxScoreNow(rubric, false);
+    return now;
+}
+
 /// Before anyone is graded: the reference solutions, graded as a submission on every scene (speed
 /// left out: against themselves it measures only the machine), must get full marks, or the
 /// references, the scenes or the rubric are wrong and every grade would be too. Skipped while
-/// the grading it passed is unchanged (OUT/.canary/passed holds its fingerprint).
+/// the grading it passed is unchanged (OUT/.canary/passed holds its fingerprint); judged again
+/// from its measurements where only the rubric's points or thresholds changed since (a
+/// threshold can fail the solutions too); otherwise graded, once `prepare` has made ready what
+/// a grading needs.
 void runCanary(const std::vector<std::string>& childBase, const std::string& solutions,
-               const std::string& out, const GradingNow& now, std::ofstream& log) {
+               const std::string& out, const GradingNow& now, const Rubric& rubric,
+               const std::string& references, const std::function<void()>& prepare,
+               std::ofstream& log) {
+    // `childBase` is the gradings' command line once `prepare` has run.
     const std::string folder = out + "/.canary";
     const std::string fingerprint = now.rubricHash + " " + now.scenesHash + " " + PATHLAB_VERSION;
     {
@@ -161,14 +177,27 @@ void runCanary(const std::vector<std::string>& childBase, const std::string& sol
         std::string previous;
         if (passed && std::getline(passed, previous) && previous == fingerprint) return;
     }
-    std::fprintf(stderr, "canary: grading the reference solutions on every scene ...\n");
-    fs::remove_all(folder);
-    fs::create_directories(folder);
-    std::vector<std::string> argv = childBase;
-    argv.insert(argv.end(), {solutions, "--out", folder, "--no-speed"});
     const auto start = std::chrono::steady_clock::now();
-    Job job = startJob(argv, {solutions, "canary"}, folder + "/grader.log");
-    job.child.wait();
+    std::string how = "graded";
+    std::ifstream stored(folder + "/result.json");
+    const nlohmann::json earlier =
+        stored ? nlohmann::json::parse(stored, nullptr, false) : nlohmann::json();
+    stored.close();
+    // Only a canary that passed is judged again: one that failed measured against what was wrong.
+    if (fs::exists(folder + "/passed") && earlier.is_object() &&
+        regradeNeeded(earlier, canaryGrading(now, rubric)) == Regrade::Rescore &&
+        rescoreSubmission(rubric, false, references, {solutions, "canary"}, folder).done) {
+        how = "re-scored";
+    } else {
+        prepare();
+        std::fprintf(stderr, "canary: grading the reference solutions on every scene ...\n");
+        fs::remove_all(folder);
+        fs::create_directories(folder);
+        std::vector<std::string> argv = childBase;
+        argv.insert(argv.end(), {solutions, "--out", folder, "--no-speed"});
+        Job job = startJob(argv, {solutions, "canary"}, folder + "/grader.log");
+        job.child.wait();
+    }
     std::ifstream in(folder + "/result.json");
     const nlohmann::json result = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
     const double seconds =
@@ -177,8 +206,8 @@ void runCanary(const std::vector<std::string>& childBase, const std::string& sol
         throw InputError("canary: the reference solutions could not be graded (see " + folder +
                          "/grader.log); nothing was graded");
     const double score = result.value("score", 0.0), max = result.value("max_score", 0.0);
-    log << timestamp() << " canary: reference solutions " << score << " / " << max << ", "
-        << std::lround(seconds) << " s\n"
+    log << timestamp() << " canary: reference solutions " << score << " / " << max << ", " << how
+        << ", " << std::lround(seconds) << " s\n"
         << std::flush;
     if (score != max || max == 0) {
         std::string why;
@@ -327,13 +356,13 @@ std::vector<GradebookEntry> gradebookEntries(const std::string& out,
     return list;
 }
 
-/// Starts grading `s` into OUT/submissions/ID; its earlier result goes first, since a job's
-/// result.json is the sign that it is done.
+/// Starts grading `s` into OUT/submissions/ID; its earlier grading goes first, kept as an
+/// attempt, since a job's result.json is the sign that it is done.
 Job startGrading(const std::vector<std::string>& childBase, const Submission& s,
                  const std::string& out, std::ofstream& log) {
     const std::string folder = out + "/submissions/" + s.id;
-    fs::remove(folder + "/result.json");
     fs::create_directories(folder);
+    archiveAttempt(folder);
     std::vector<std::string> argv = childBase;
     argv.insert(argv.end(), {s.path, "--out", folder});
     Job job = startJob(argv, s, folder + "/grader.log");
@@ -349,7 +378,8 @@ void killOverdue(std::vector<Job>& running, std::chrono::steady_clock::time_poin
             j.child.kill(); // reaped on a later turn (nothing if it already has been)
 }
 
-/// A job's end in the batch's log: its status and score, or why it was not graded.
+/// A job's end in the batch's log: its status and score, or why it was not graded, its time and
+/// where that went.
 void logJobEnd(std::ofstream& log, const Job& job, const GradebookEntry& entry, double seconds) {
     log << timestamp() << " done " << job.submission.id << ": ";
     if (entry.result.is_null())
@@ -357,7 +387,70 @@ void logJobEnd(std::ofstream& log, const Job& job, const GradebookEntry& entry, 
     else
         log << entry.result.value("status", "") << ", " << entry.result.value("score", 0.0) << " / "
             << entry.result.value("max_score", 0.0);
-    log << ", " << std::lround(seconds) << " s\n" << std::flush;
+    log << ", " << std::lround(seconds) << " s";
+    const nlohmann::json phases = entry.result.is_null()
+                                      ? nlohmann::json()
+                                      : entry.result.value("seconds_by_phase", nlohmann::json());
+    if (phases.is_object()) {
+        log << " (";
+        for (const char* phase : {"intake", "compile", "correctness", "race_check", "speed"}) {
+            char text[64];
+            std::snprintf(text, sizeof text, "%s%s %.1f s", phase[0] == 'i' ? "" : ", ", phase,
+                          phases.value(phase, 0.0));
+            log << text;
+        }
+        log << ")";
+    }
+    log << "\n" << std::flush;
+}
+
+/// Each graded submission's lab files as they are now, taken in as a grading takes them, so
+/// that one changed since it was graded is graded again.
+std::map<std::string, SubmittedFiles> submittedFiles(const std::vector<Submission>& submissions,
+                                                     const std::string& out,
+                                                     const SandboxPolicy& policy,
+                                                     const std::string& scratch) {
+    const auto start = std::chrono::steady_clock::now();
+    std::map<std::string, SubmittedFiles> files;
+    for (const Submission& s : submissions) {
+        if (!fs::exists(out + "/submissions/" + s.id + "/result.json")) continue;
+        const std::string folder = scratch + "/intake-" + s.id;
+        fs::remove_all(folder);
+        fs::create_directories(folder);
+        fs::permissions(folder, fs::perms::owner_all | fs::perms::others_read |
+                                    fs::perms::others_exec | fs::perms::group_read |
+                                    fs::perms::group_exec);
+        const Intake intake = takeSubmission(s.path, folder, policy);
+        files[s.id] = {labFilesHash(intake, folder), intake.commit};
+        fs::remove_all(folder);
+    }
+    if (!files.empty())
+        std::fprintf(stderr, "checked %zu graded submission(s) for changes in %.0f s\n",
+                     files.size(), secondsSince(start));
+    return files;
+}
+
+/// Judges again, from their measurements, the submissions whose rubric changed only in points
+/// or thresholds; returns those that kept none to judge (graded again instead).
+std::vector<Submission> rescoreAll(const Arguments& a, const Rubric& rubric,
+                                   const std::vector<Submission>& rescore, const std::string& out,
+                                   std::ofstream& log) {
+    std::vector<Submission> measureInstead;
+    for (const Submission& s : rescore) {
+        const Rescore r =
+            rescoreSubmission(rubric, a.speed, a.references, s, out + "/submissions/" + s.id);
+        if (!r.done) {
+            measureInstead.push_back(s);
+            continue;
+        }
+        char line[256];
+        std::snprintf(line, sizeof line,
+                      "%s: re-scored from attempt %d's measurements: %g / %g -> %g / %g",
+                      s.id.c_str(), r.fromAttempt, r.before, r.maxBefore, r.after, r.maxAfter);
+        std::fprintf(stderr, "%s\n", line);
+        log << timestamp() << " " << line << "\n" << std::flush;
+    }
+    return measureInstead;
 }
 
 /// How a batch's jobs ended.
@@ -472,19 +565,34 @@ int runBatch(const Arguments& given, const Rubric& rubric, const std::string& sc
     if (a.shards == 1) noteTimesOfOthers(grading, submissions);
     std::ofstream log(out + "/batch.log", std::ios::app);
     logBatchStart(log, a, submissions.size(), grading);
-    const Selection selection = selectSubmissions(a, submissions, out, grading);
+    const bool askAboutChanges = a.only.empty() && !a.force;
+    const std::map<std::string, SubmittedFiles> files =
+        askAboutChanges
+            ? submittedFiles(submissions, out, {{}, sandboxUserForThisProcess()}, scratch)
+            : std::map<std::string, SubmittedFiles>{};
+    Selection selection = selectSubmissions(a, submissions, out, grading, files);
     const Cores cores = splitCores(allowedCpus());
     const LabBuild build = labBuildOfThisGrader();
     const SharedFiles shared{out + "/.kit", out + "/.references"};
-    const bool raceCheck = batchRaceCheck(a, !selection.todo.empty(), build, cores.work, log);
-    const std::vector<std::string> childBase = childCommand(a, raceCheck, shared, cores);
-    if (!selection.todo.empty()) {
+    // What a grading needs, made once, when a grading is to run at all (a batch that only
+    // re-scores needs none of it): whether the race check runs, the gradings' command line,
+    // the compiled kit and the hidden scenes' references.
+    std::vector<std::string> childBase;
+    const auto prepare = [&] {
+        if (!childBase.empty()) return;
+        const bool raceCheck = batchRaceCheck(a, true, build, cores.work, log);
+        childBase = childCommand(a, raceCheck, shared, cores);
         std::fprintf(stderr, "compiling the lab kit (stubs, table, reference solutions) ...\n");
         buildLabKit(build, shared.kit, {cores.work, sandboxUserForThisProcess()});
         measureHiddenReferences(a, rubric, shared.referenceCache, scratch);
-        runCanary(childBase, build.solutions, out, grading, log);
-    }
+    };
+    if (!selection.todo.empty() || !selection.rescore.empty())
+        runCanary(childBase, build.solutions, out, grading, rubric, a.references, prepare, log);
     sayWhatIsKept(selection); // once the scenes' references and the canary let the batch go on
+    const std::vector<Submission> unmeasured = rescoreAll(a, rubric, selection.rescore, out, log);
+    const size_t rescored = selection.rescore.size() - unmeasured.size();
+    selection.todo.insert(selection.todo.end(), unmeasured.begin(), unmeasured.end());
+    if (!selection.todo.empty()) prepare();
     // What this batch's gradebook is written against, for `grader merge`: only once the canary
     // passed, so that a batch it stopped changes nothing.
     writeBatchJson(out, grading, dates);
@@ -494,11 +602,11 @@ int runBatch(const Arguments& given, const Rubric& rubric, const std::string& sc
     writeGradebook(out, gradebookEntries(out, submissions, {}), grading, similar);
     const double seconds = secondsSince(start);
     log << timestamp() << " batch finished in " << seconds << " s\n";
-    std::printf(
-        "graded %zu submission(s) in %.0f s (%zu skipped, %zu not graded, %zu similar pair(s)): "
-        "%s/gradebook.csv, %s/lms.csv, %s/summary.html\n",
-        counts.done - counts.failed, seconds, submissions.size() - selection.todo.size(),
-        counts.failed, similar.size(), out.c_str(), out.c_str(), out.c_str());
+    std::printf("graded %zu submission(s) and re-scored %zu in %.0f s (%zu kept as they were, %zu "
+                "not graded, %zu similar pair(s)): %s/gradebook.csv, %s/lms.csv, %s/summary.html\n",
+                counts.done - counts.failed, rescored, seconds,
+                submissions.size() - selection.todo.size() - rescored, counts.failed,
+                similar.size(), out.c_str(), out.c_str(), out.c_str());
     return 0;
 }
 

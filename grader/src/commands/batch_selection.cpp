@@ -55,24 +55,44 @@ void requireKnownIds(const std::vector<std::string>& only,
 }
 
 Selection selectSubmissions(const Arguments& a, const std::vector<Submission>& submissions,
-                            const std::string& out, const GradingNow& grading) {
+                            const std::string& out, const GradingNow& grading,
+                            const std::map<std::string, SubmittedFiles>& now) {
     Selection selection;
     for (const Submission& s : submissions) {
         const GradebookEntry stored = readGradebookEntry(out, s.id, s.path);
-        const bool isStale = !stored.result.is_null() && !staleness(stored.result, grading).empty();
         const bool named = std::find(a.only.begin(), a.only.end(), s.id) != a.only.end();
-        const bool wanted = a.only.empty()
-                                ? a.force || stored.result.is_null() || (isStale && !a.keepStale)
-                                : named;
-        if (wanted) selection.todo.push_back(s);
-        if (wanted && isStale)
-            ++selection.staleRegraded;
-        else if (!wanted && !a.only.empty())
-            ++selection.notNamed;
-        else if (!wanted && isStale)
-            ++selection.staleKept;
-        else if (!wanted)
+        if (!a.only.empty()) {
+            if (named)
+                selection.todo.push_back(s);
+            else
+                ++selection.notNamed;
+            continue;
+        }
+        if (a.force || stored.result.is_null()) {
+            selection.todo.push_back(s);
+            continue;
+        }
+        // A submission changed since it was graded is graded again, whatever else holds: its
+        // old grade is not the grade of what it holds now.
+        const nlohmann::json intake = stored.result.value("intake", nlohmann::json::object());
+        const auto files = now.find(s.id);
+        if (files != now.end() && (files->second.filesHash != intake.value("files_hash", "") ||
+                                   files->second.commit != intake.value("commit", ""))) {
+            selection.todo.push_back(s);
+            selection.changed.push_back(s.id);
+            continue;
+        }
+        const Regrade regrade = regradeNeeded(stored.result, grading);
+        if (regrade == Regrade::None) {
             ++selection.current;
+        } else if (a.keepStale) {
+            ++selection.staleKept;
+        } else if (regrade == Regrade::Rescore) {
+            selection.rescore.push_back(s);
+        } else {
+            selection.todo.push_back(s);
+            ++selection.staleRegraded;
+        }
     }
     return selection;
 }
@@ -91,9 +111,16 @@ void sayWhatIsKept(const Selection& selection) {
                      selection.staleKept);
     if (selection.staleRegraded > 0)
         std::fprintf(stderr,
-                     "%zu submission(s) graded under another rubric, other scenes or another "
-                     "maximum (--no-speed): graded again\n",
+                     "%zu submission(s) graded on other scenes, by another kit or under a rubric "
+                     "that measures otherwise (or without speed): graded again\n",
                      selection.staleRegraded);
+    if (!selection.rescore.empty())
+        std::fprintf(stderr,
+                     "%zu submission(s) graded under other points or thresholds of the rubric: "
+                     "judged again from their measurements, nothing rendered\n",
+                     selection.rescore.size());
+    for (const std::string& id : selection.changed)
+        std::fprintf(stderr, "%s: changed since it was graded: graded again\n", id.c_str());
 }
 
 } // namespace pathlab::grader

@@ -77,7 +77,7 @@ std::string csv(const std::vector<GradebookEntry>& entries, const GradingNow& no
     for (Lab lab : AllLabs)
         for (CheckKind check : AllChecks)
             text += "," + std::string(labName(lab)) + "_" + std::string(checkName(check));
-    text += ",missing_labs,submitted_at,time_source,late,commit,files_hash,rubric_hash\n";
+    text += ",missing_labs,submitted_at,time_source,late,commit,files_hash,rubric_hash,attempt\n";
     for (const GradebookEntry& e : entries) {
         const std::optional<double> total = shownTotal(e, now);
         const nlohmann::json labs =
@@ -114,17 +114,21 @@ std::string csv(const std::vector<GradebookEntry>& entries, const GradingNow& no
         text += "," + csvField(missing) + "," + (at ? isoTime(at) : "") + "," + csvField(source) +
                 "," + lateness(e, now) + "," + csvField(intake.value("commit", "")) + "," +
                 csvField(intake.value("files_hash", "")) + "," +
-                csvField(under.value("rubric_hash", "")) + "\n";
+                csvField(under.value("rubric_hash", "")) + "," +
+                (e.result.is_null() ? "" : number(e.result.value("attempt", 1))) + "\n";
     }
     return text;
 }
 
-/// For an LMS's grade import (Canvas, Moodle): a row per submission with a total today's
-/// maximum; the id stands for the student's login (name submissions after it).
+/// For an LMS's grade import (Canvas, Moodle): a row per submission graded under the grading now;
+/// the id stands for the student's login (name submissions after it).
 std::string lmsCsv(const std::vector<GradebookEntry>& entries, const GradingNow& now) {
     std::string text = "Student,SIS Login ID,PathLab (" + number(now.maxScore) + " points)\n";
+    // A total the grading now does not give (pending: being graded again; stale: graded under
+    // another rubric or scenes) is withheld: the import keeps what it had for that student.
     for (const GradebookEntry& e : entries)
-        if (const std::optional<double> total = shownTotal(e, now))
+        if (const std::optional<double> total = shownTotal(e, now);
+            total && !e.pending && staleness(e.result, now).empty())
             text += csvField(e.id) + "," + csvField(e.id) + "," + number(*total) + "\n";
     return text;
 }
@@ -158,6 +162,43 @@ std::string similarityTable(const std::optional<std::vector<SimilarLabs>>& pairs
              << escapeXml(pair.lab) << "</td><td>" << escapeXml(pair.first) << "</td><td>"
              << escapeXml(pair.second) << "</td></tr>\n";
     html << "</table>\n";
+    return html.str();
+}
+
+/// Where each graded submission's time went (result.json's seconds_by_phase), a row each, and
+/// the median: what tells an instructor how long a class takes, and why.
+std::string timeTable(const std::vector<GradebookEntry>& entries) {
+    const std::vector<std::pair<const char*, const char*>> phases = {{"intake", "intake"},
+                                                                     {"compile", "compile"},
+                                                                     {"correctness", "correctness"},
+                                                                     {"race_check", "race check"},
+                                                                     {"speed", "speed"}};
+    std::vector<std::vector<double>> columns(phases.size() + 1);
+    std::ostringstream rows;
+    for (const GradebookEntry& e : entries) {
+        if (e.result.is_null() || !e.result.contains("seconds_by_phase")) continue;
+        const nlohmann::json& spent = e.result.at("seconds_by_phase");
+        rows << "<tr><td>" << escapeXml(e.id) << "</td>";
+        for (size_t i = 0; i < phases.size(); ++i) {
+            const double s = spent.value(phases[i].first, 0.0);
+            columns[i].push_back(s);
+            rows << "<td>" << number(std::round(10 * s) / 10) << "</td>";
+        }
+        const double total = e.result.value("seconds", 0.0);
+        columns.back().push_back(total);
+        rows << "<td>" << number(std::round(total)) << "</td><td>"
+             << escapeXml(e.result.value("how", "graded")) << "</td></tr>\n";
+    }
+    if (columns.back().empty()) return "<p>No grading times yet.</p>\n";
+    std::ostringstream html;
+    html << "<table><tr><th>id</th>";
+    for (const auto& phase : phases) html << "<th>" << phase.second << " (s)</th>";
+    html << "<th>total (s)</th><th>how</th></tr>\n<tr><td><b>median</b></td>";
+    for (std::vector<double>& column : columns) {
+        std::sort(column.begin(), column.end());
+        html << "<td><b>" << number(std::round(10 * column[column.size() / 2]) / 10) << "</b></td>";
+    }
+    html << "<td></td></tr>\n" << rows.str() << "</table>\n";
     return html.str();
 }
 
@@ -221,7 +262,9 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
              << "</td><td>" << lateness(e, now) << "</td><td>" << escapeXml(statusOf(e, now))
              << "</td></tr>\n";
     }
-    html << "</table></body></html>\n";
+    html << "</table>\n<h2>Grading time</h2>\n<p>Wall-clock seconds of each submission's "
+            "last grading, by phase (a re-score measures nothing and takes none).</p>\n"
+         << timeTable(allEntries) << "</body></html>\n";
     return html.str();
 }
 
@@ -251,6 +294,16 @@ std::string staleness(const nlohmann::json& result, const GradingNow& now) {
         return "graded out of " + number(result.value("max_score", 0.0)) + ", not " +
                number(now.maxScore);
     return "";
+}
+
+Regrade regradeNeeded(const nlohmann::json& result, const GradingNow& now) {
+    if (staleness(result, now).empty()) return Regrade::None;
+    const nlohmann::json under = result.value("graded_under", nlohmann::json::object());
+    const bool sameMeasurements = under.value("scenes_hash", "") == now.scenesHash &&
+                                  under.value("kit_version", "") == PATHLAB_VERSION &&
+                                  under.value("measurement_hash", "") == now.measurementHash &&
+                                  (under.value("speed_measured", false) || !now.measuresSpeed);
+    return sameMeasurements ? Regrade::Rescore : Regrade::Measure;
 }
 
 void writeGradebook(const std::string& out, const std::vector<GradebookEntry>& entries,

@@ -25,6 +25,8 @@ struct GradebookEntry {
 /// where its maximum differs, so that the gradebook never mixes maxima.
 struct GradingNow {
     std::string rubricHash, scenesHash;
+    std::string measurementHash; ///< Rubric::measurementHash
+    bool measuresSpeed = true;   ///< not --no-speed
     double maxScore = 0;
     std::optional<long long> deadline;      ///< --deadline, seconds since 1970
     std::map<std::string, long long> times; ///< --times: id -> submitted at, over what results say
@@ -43,6 +45,12 @@ GradebookEntry readGradebookEntry(const std::string& out, const std::string& id,
 /// Why a result does not fit the grading now ("" if it does): another rubric, other scenes,
 /// another maximum.
 std::string staleness(const nlohmann::json& result, const GradingNow& now);
+
+/// What a result that does not fit the grading now needs: judged again from its measurements
+/// (only the rubric's points or thresholds changed), or graded again (its scenes, the kit, what
+/// the rubric measures, or whether speed is, changed; or it kept no measurements).
+enum class Regrade { None, Rescore, Measure };
+Regrade regradeNeeded(const nlohmann::json& result, const GradingNow& now);
 
 /// Writes OUT/gradebook.csv, OUT/lms.csv and OUT/summary.html (atomically), rows in the order of
 /// `entries`; the summary lists the `similar` pairs, or says they come once the batch is done.
