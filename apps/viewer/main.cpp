@@ -119,12 +119,15 @@ int renderToFile(const RenderOptions& options, const HeadlessExtras& extras,
         writeImage(one.outputImage, one.width, one.height, result.image.meanImage());
         if (!one.statsFile.empty()) writeRenderStats(one.statsFile, result.stats);
         const RenderStats& s = result.stats;
-        std::printf("wrote %s: %s, lab %s (%s), %dx%d, %d spp in %.3f s\n"
+        std::printf("wrote %s: %s, lab %s (%s), %dx%d, %d spp in %.3f s (%.3f s of CPU time)\n"
                     "  %.3g samples/s = %.3g frames/s at %dx%d (1 spp per frame), %.3g rays/s; "
-                    "%s\n",
+                    "%.3g samples per CPU-second; %s\n",
                     one.outputImage.c_str(), s.scene.c_str(), s.lab.c_str(), s.impl.c_str(),
-                    s.width, s.height, s.spp, s.seconds, s.samplesPerSecond(), s.framesPerSecond,
-                    s.width, s.height, s.raysPerSecond(), noiseFigures(s).c_str());
+                    s.width, s.height, s.spp, s.seconds, s.cpuSeconds, s.samplesPerSecond(),
+                    s.framesPerSecond, s.width, s.height, s.raysPerSecond(),
+                    s.samplesPerCpuSecond(), noiseFigures(s).c_str());
+        for (const std::string& note : {s.busyNote(), s.cpuNote()})
+            if (!note.empty()) std::printf("  note: %s\n", note.c_str());
         if (s.reference) std::printf("%s\n", viewer::referenceLine(*s.reference).c_str());
         for (const std::string& line : writeMaps(extras, one, result))
             std::printf("%s\n", line.c_str());

@@ -1,5 +1,6 @@
 #include "pathlab/render_stats.h"
 
+#include "pathlab/cpu_clock.h"
 #include "pathlab/image_noise.h"
 #include "pathlab/input_error.h"
 #include "pathlab/whole_file.h"
@@ -19,6 +20,50 @@ double RenderStats::samplesPerSecond() const {
 
 double RenderStats::raysPerSecond() const {
     return seconds > 0 ? static_cast<double>(rays.total()) / seconds : 0.0;
+}
+
+double RenderStats::samplesPerCpuSecond() const {
+    return cpuSeconds > 0 ? static_cast<double>(spp) * width * height / cpuSeconds : 0.0;
+}
+
+double RenderStats::cpuShare() const {
+    return cpuSeconds > 0 && seconds > 0 && threads > 0 ? cpuSeconds / (seconds * threads) : 0.0;
+}
+
+std::string RenderStats::busyNote() const {
+    // Below this share the cores were shared with other work; above, the threads' own
+    // hand-offs and the last tiles of a pass account for the rest.
+    constexpr double BusyShare = 0.8;
+    if (!(cpuShare() > 0) || cpuShare() >= BusyShare) return "";
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "the machine was busy: the render threads had %.0f%% of their %d core(s) (%.3g "
+                  "s of CPU time in %.3g s); samples per CPU-second change little with that, "
+                  "samples/s and frame rates do",
+                  100 * cpuShare(), threads, cpuSeconds, seconds);
+    return text;
+}
+
+std::string RenderStats::cpuNote() const {
+    if (!(cpuSeconds > 0)) return "";
+    char text[240];
+    if (cpuSeconds < 100 * cpuClockResolution()) {
+        std::snprintf(text, sizeof text,
+                      "the render took %.3g s of CPU time, too little for the CPU clock (a step "
+                      "of %.3g s) to time precisely: render more samples to compare",
+                      cpuSeconds, cpuClockResolution());
+        return text;
+    }
+    if (cpuClock == "per-thread" && processCpuSeconds > 1.2 * cpuSeconds + 0.05) {
+        std::snprintf(text, sizeof text,
+                      "the process used %.3g s of CPU time besides the render threads' %.3g s "
+                      "(threads of the lab's own?): samples per CPU-second count only the render "
+                      "threads'",
+                      processCpuSeconds - cpuSeconds, cpuSeconds);
+        return text;
+    }
+    if (cpuClock != "per-thread") return "CPU time from the " + cpuClock;
+    return "";
 }
 
 double RenderStats::efficiency() const { return renderEfficiency(noise, seconds); }
@@ -54,7 +99,7 @@ std::string RenderStats::nonfiniteWarning() const {
 
 RenderStats renderStats(const RenderedWhat& what, const AccumulationBuffer& image, int threads,
                         double seconds, const RayCounters& rays,
-                        const std::optional<NonfiniteSample>& firstNonfinite) {
+                        const std::optional<NonfiniteSample>& firstNonfinite, const CpuTimes& cpu) {
     RenderStats s;
     s.scene = what.scene;
     s.lab = labName(what.lab);
@@ -67,6 +112,9 @@ RenderStats renderStats(const RenderedWhat& what, const AccumulationBuffer& imag
     s.continueProb = what.parameters.continueProb;
     s.threads = threads;
     s.seconds = seconds;
+    s.cpuSeconds = cpu.renderThreads;
+    s.processCpuSeconds = cpu.process;
+    if (cpu.renderThreads > 0) s.cpuClock = cpuClockName();
     s.rays = rays;
     const AccumulationBuffer::Summary summary = image.summary();
     s.meanRadiance = summary.meanRadiance;
@@ -99,6 +147,13 @@ void writeRenderStats(const std::string& path, const RenderStats& s) {
         {"threads", s.threads},
         {"seconds", s.seconds},
         {"samples_per_second", s.samplesPerSecond()},
+        {"cpu_seconds", s.cpuSeconds},
+        {"process_cpu_seconds", s.processCpuSeconds},
+        {"samples_per_cpu_second", s.samplesPerCpuSecond()},
+        {"cpu_share", s.cpuShare()},
+        {"cpu_clock", s.cpuClock},
+        {"cpu_note", s.cpuNote()},
+        {"busy_note", s.busyNote()},
         {"rays", {{"intersect", s.rays.intersect}, {"occluded", s.rays.occluded}}},
         {"rays_per_second", s.raysPerSecond()},
         {"mean_radiance", rgb(s.meanRadiance)},
@@ -154,6 +209,10 @@ RenderStats readRenderStats(const std::string& path) {
         s.continueProb = j.at("continue_prob").get<float>();
         s.threads = j.at("threads").get<int>();
         s.seconds = j.at("seconds").get<double>();
+        // Stats written before CPU time was measured have none: 0, not measured.
+        s.cpuSeconds = j.value("cpu_seconds", 0.0);
+        s.processCpuSeconds = j.value("process_cpu_seconds", 0.0);
+        s.cpuClock = j.value("cpu_clock", "");
         s.rays.intersect = j.at("rays").at("intersect").get<uint64_t>();
         s.rays.occluded = j.at("rays").at("occluded").get<uint64_t>();
         s.meanRadiance = rgb("mean_radiance");

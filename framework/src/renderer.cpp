@@ -1,5 +1,7 @@
 #include "pathlab/renderer.h"
 
+#include "pathlab/cpu_clock.h"
+
 #include "parallel_hand_off.h"
 
 #include "pathlab/camera_packet.h"
@@ -166,28 +168,43 @@ bool Renderer::renderPass(AccumulationBuffer& buffer, const Camera& camera,
     progress_.passStarts(static_cast<uint64_t>(width) * static_cast<uint64_t>(height) *
                          static_cast<uint64_t>(spp));
 
+    // CPU time per stretch of tiles a thread renders: two readings of its clock per stretch, a
+    // microsecond against the tiles' milliseconds.
+    const bool perThread = cpuClock() == CpuClock::PerThread;
+    std::atomic<uint64_t> cpuNanoseconds{0};
+    // The free function, not this class's accessor of the same name.
+    const double processBefore = pathlab::processCpuSeconds();
     releaseTo(&passStarts);
     arena_->arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY, 1),
-                          [&](const tbb::blocked_range<int>& tiles) {
-                              acquireFrom(&passStarts);
-                              for (int tile = tiles.begin(); tile != tiles.end(); ++tile) {
-                                  if (cancel && cancel->load(std::memory_order_relaxed)) break;
-                                  if (failure.happened()) break;
-                                  // A lab's exception (a broken check) is kept and thrown again
-                                  // after the loop, in this thread's own C++ runtime: carried
-                                  // through TBB's, which may be another (the clang + libc++
-                                  // build), it would arrive as an unknown object.
-                                  try {
-                                      renderTile(reverseTiles_ ? tilesX * tilesY - 1 - tile : tile);
-                                  } catch (...) {
-                                      failure.keep(std::current_exception());
-                                  }
-                              }
-                              releaseTo(&tilesFinished);
-                          });
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, tilesX * tilesY, 1),
+            [&](const tbb::blocked_range<int>& tiles) {
+                acquireFrom(&passStarts);
+                const double cpuBefore = perThread ? threadCpuSeconds() : 0;
+                for (int tile = tiles.begin(); tile != tiles.end(); ++tile) {
+                    if (cancel && cancel->load(std::memory_order_relaxed)) break;
+                    if (failure.happened()) break;
+                    // A lab's exception (a broken check) is kept and thrown again
+                    // after the loop, in this thread's own C++ runtime: carried
+                    // through TBB's, which may be another (the clang + libc++
+                    // build), it would arrive as an unknown object.
+                    try {
+                        renderTile(reverseTiles_ ? tilesX * tilesY - 1 - tile : tile);
+                    } catch (...) {
+                        failure.keep(std::current_exception());
+                    }
+                }
+                if (perThread)
+                    cpuNanoseconds.fetch_add(
+                        static_cast<uint64_t>(std::llround(1e9 * (threadCpuSeconds() - cpuBefore))),
+                        std::memory_order_relaxed);
+                releaseTo(&tilesFinished);
+            });
     });
     acquireFrom(&tilesFinished);
+    const double processSpent = pathlab::processCpuSeconds() - processBefore;
+    processCpuSeconds_ += processSpent;
+    cpuSeconds_ += perThread ? 1e-9 * static_cast<double>(cpuNanoseconds.load()) : processSpent;
     failure.rethrow();
     counters_ += RayCounters{intersect.load(), occluded.load()};
     if (nonfinite.first() && (!firstNonfinite_ || nonfinite.first()->before(*firstNonfinite_)))

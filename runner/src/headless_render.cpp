@@ -45,7 +45,7 @@ HeadlessResult renderHeadless(const RenderOptions& options, const RenderScene& s
     result.stats = renderStats(
         {options.sceneName, options.lab, options.implementation, options.parameters, options.seed},
         result.image, renderer.threads(), elapsed.count(), renderer.rayCounters(),
-        renderer.firstNonfinite());
+        renderer.firstNonfinite(), {renderer.cpuSeconds(), renderer.processCpuSeconds()});
     setHeadlessFrameRate(result.stats);
     return result;
 }

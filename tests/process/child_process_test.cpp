@@ -207,13 +207,16 @@ TEST_CASE("output past outputReadBytes is not read: the pipe closes and the chil
 }
 
 TEST_CASE("a child's CPU time is the kernel's count, its descendants' included", "[process]") {
-    // Two processes busy for about 0.3 s of CPU each: about 0.6 s, whatever the wall time.
-    const ChildRun run = runChild({"/bin/sh", "-c",
-                                   "for i in 1 2; do (end=$(( $(date +%s%N) + 300000000 )); "
-                                   "while [ $(date +%s%N) -lt $end ]; do :; done) & done; wait"});
-    CHECK(run.exitCode == 0);
-    CHECK(run.cpuSeconds > 0.3);
-    CHECK(run.cpuSeconds < 5);
+    // A fixed amount of work (a shell counting), in one background process, then in two: the
+    // CPU time doubles, whatever the machine's load makes of the wall time.
+    const std::string count = "(i=0; while [ $i -lt 200000 ]; do i=$((i+1)); done) & ";
+    const ChildRun one = runChild({"/bin/sh", "-c", count + "wait"});
+    const ChildRun two = runChild({"/bin/sh", "-c", count + count + "wait"});
+    CHECK(one.exitCode == 0);
+    CHECK(one.cpuSeconds > 0.02);
+    INFO("one: " << one.cpuSeconds << " s, two: " << two.cpuSeconds << " s");
+    CHECK(two.cpuSeconds / one.cpuSeconds > 1.5);
+    CHECK(two.cpuSeconds / one.cpuSeconds < 2.7);
     CHECK(shell("true").cpuSeconds < 0.5);
 }
 

@@ -30,6 +30,11 @@ struct RenderStats {
     float continueProb = 0;
     int threads = 0;
     double seconds = 0; ///< wall time of rendering alone (no loading, no writing)
+    /// CPU time of the render threads rendering (Renderer::cpuSeconds): the measure of the
+    /// render's work that the machine's load changes little; 0 where not measured.
+    double cpuSeconds = 0;
+    double processCpuSeconds = 0; ///< the whole process's over the render (Renderer's)
+    std::string cpuClock;         ///< cpuClockName(): which clock measured cpuSeconds
     RayCounters rays;
     Color meanRadiance;
     Color meanVariance; ///< per-sample variance averaged over pixels, per channel
@@ -45,6 +50,18 @@ struct RenderStats {
 
     double samplesPerSecond() const;
     double raysPerSecond() const;
+    /// Samples per CPU-second of the render threads: the figure to compare between labs and
+    /// machines' runs, which other programs on the machine change little. 0 where not measured.
+    double samplesPerCpuSecond() const;
+    /// The share of their cores the render threads had: cpuSeconds ÷ (seconds × threads). Well
+    /// below 1, other processes shared the cores.
+    double cpuShare() const;
+    /// "the machine was busy: the render threads had 45% of their cores ...", or "".
+    std::string busyNote() const;
+    /// Why the CPU figure is not to be taken as precise ("" when it is): a render shorter than
+    /// the clock's resolution allows, CPU time outside the render threads (threads of the lab's
+    /// own), or a platform without per-thread clocks.
+    std::string cpuNote() const;
     double efficiency() const; ///< renderEfficiency(noise, seconds)
     /// The efficiency for people: "2.44", or "undefined (no noise)" for a noiseless image.
     std::string efficiencyText() const;
@@ -63,9 +80,14 @@ struct RenderedWhat {
     LabParameters parameters;
     uint64_t seed;
 };
+/// What a render cost in CPU time (Renderer::cpuSeconds, processCpuSeconds); 0s: not measured.
+struct CpuTimes {
+    double renderThreads = 0, process = 0;
+};
 RenderStats renderStats(const RenderedWhat& what, const AccumulationBuffer& image, int threads,
                         double seconds, const RayCounters& rays,
-                        const std::optional<NonfiniteSample>& firstNonfinite);
+                        const std::optional<NonfiniteSample>& firstNonfinite,
+                        const CpuTimes& cpu = {});
 
 /// The frame rate of a headless render: samples/s ÷ (width × height), what the window would show
 /// at that size with one sample per pixel per frame.

@@ -49,7 +49,15 @@ public:
     void resetCounts() {
         counters_ = {};
         firstNonfinite_.reset();
+        cpuSeconds_ = processCpuSeconds_ = 0;
     }
+    /// The CPU time the render threads spent rendering tiles in those passes (cpu_clock.h): the
+    /// work of the passes, which other programs on the machine change little. Where the clock is
+    /// the process's (CpuClock::Process), the process's CPU time over the passes.
+    double cpuSeconds() const { return cpuSeconds_; }
+    /// The whole process's CPU time over the passes: above cpuSeconds() by the work of threads
+    /// that are not the renderer's (a lab that starts its own, the window's drawing).
+    double processCpuSeconds() const { return processCpuSeconds_; }
     int threads() const { return threads_; }
     /// Renders the tiles from the last to the first (or back in order). Each sample's random
     /// numbers come from its own stream, so the image does not change; a lab that draws random
@@ -71,6 +79,7 @@ private:
     std::unique_ptr<Arena> arena_;
     RayCounters counters_;
     std::optional<NonfiniteSample> firstNonfinite_;
+    double cpuSeconds_ = 0, processCpuSeconds_ = 0;
     bool reverseTiles_ = false;
     int tileSize_ = TileSize;
     RenderProgress progress_;

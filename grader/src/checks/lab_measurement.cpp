@@ -123,6 +123,8 @@ nlohmann::json measurementJson(const LabMeasurement& m, const std::string& folde
           {"not_timed_diagnosis", t.notTimedDiagnosis},
           {"student", t.student},
           {"solution", t.solution},
+          {"student_wall_seconds", t.studentWall},
+          {"solution_wall_seconds", t.solutionWall},
           {"student_rays", raysJson(t.studentRays)},
           {"solution_rays", raysJson(t.solutionRays)},
           {"student_samples", t.studentSamples},
@@ -157,6 +159,8 @@ LabMeasurement readMeasurement(const nlohmann::json& j, const std::string& folde
         t.notTimedDiagnosis = s.at("not_timed_diagnosis");
         t.student = s.at("student").get<std::vector<double>>();
         t.solution = s.at("solution").get<std::vector<double>>();
+        t.studentWall = s.value("student_wall_seconds", std::vector<double>{});
+        t.solutionWall = s.value("solution_wall_seconds", std::vector<double>{});
         t.studentRays = readRays(s.at("student_rays"));
         t.solutionRays = readRays(s.at("solution_rays"));
         t.studentSamples = s.at("student_samples");

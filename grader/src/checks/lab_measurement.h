@@ -28,6 +28,9 @@ struct TimedMeasurement {
     /// Why not timed, as the check's summary and diagnosis say it; both "" when timed.
     std::string notTimed, notTimedDiagnosis;
     std::vector<double> student, solution; ///< samples per CPU-second of each run, pair by pair
+    /// The same runs' wall-clock seconds, which the verdict does not use: kept to show how much
+    /// more wall time than CPU time varies on a busy machine.
+    std::vector<double> studentWall, solutionWall;
     RayCounters studentRays, solutionRays;
     double studentSamples = 0, solutionSamples = 0;
     double cpuSeconds = 0, wallSeconds = 0; ///< over every run: how much of its cores it had

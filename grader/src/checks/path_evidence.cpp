@@ -68,14 +68,13 @@ double detailInsideTiles(const PathEvidence& e) {
 std::string missingPathEvidence(const PathEvidence& e) {
     if (e.referenceVariance > 0 && e.variance < VarianceShare * e.referenceVariance)
         return "its pixels do not vary from seed to seed (per-sample variance " +
-               significant(e.variance, 3) + ", where the reference solution's is " +
+               significant(e.variance, 3) + ", where the quietest reference solution's is " +
                significant(e.referenceVariance, 3) +
                "): an image computed without random paths, not an estimate";
     if (e.referenceBounceRays >= LeastBounceRays &&
         e.bounceRays < BounceShare * e.referenceBounceRays)
         return "it traces " + fixed(e.bounceRays, 2) +
-               " bounce rays per sample, where the lab's "
-               "estimator traces " +
+               " bounce rays per sample, where every lab's estimator traces at least " +
                fixed(e.referenceBounceRays, 2) + ": its light is not gathered along paths";
     const double detail = detailInsideTiles(e);
     if (detail >= 0 && detail < DetailShare)

@@ -2,9 +2,9 @@
 /// Whether a lab's images come from tracing paths. The correctness check compares means of the
 /// image and of its tiles; a lab could return those means from a table (the shipped references
 /// hold them) and trace nothing. Three properties every path-traced estimate has and a table
-/// lacks, each against what the reference solution shows on the same scene:
-///  - its pixels vary from seed to seed, where the reference's do;
-///  - it traces bounce rays, where the reference does;
+/// lacks, each against what the reference solutions show on the same scene:
+///  - its pixels vary from seed to seed, where every lab's reference's do;
+///  - it traces bounce rays, where every lab's reference does;
 ///  - its image has the detail the reference image has inside each tile.
 /// Each is judged only where the reference makes it meaningful (a mirror furnace has no
 /// variance; a furnace has no detail), with a margin far beyond sampling noise.
@@ -16,10 +16,12 @@ namespace pathlab::grader {
 
 /// What one scene's renders of a lab show, beside the reference's.
 struct PathEvidence {
-    double variance = 0;             ///< the lab's per-sample variance (trimmedSampleVariance)
-    double referenceVariance = 0;    ///< the reference solution's, at the same seeds and spp
+    double variance = 0; ///< the lab's per-sample variance (trimmedSampleVariance)
+    /// The least of the reference solutions', one per lab (a valid lab may be as quiet as the
+    /// quietest estimator), at the same seeds and spp.
+    double referenceVariance = 0;
     double bounceRays = 0;           ///< the lab's bounce rays per sample
-    double referenceBounceRays = -1; ///< the reference solution's; < 0: not known
+    double referenceBounceRays = -1; ///< the least of the reference solutions'; < 0: not known
     /// The lab's mean image over its seeds, and the reference image, linear RGB of
     /// width x height; `referenceNoise`: the variance of one pixel of the reference image.
     std::vector<float> meanImage, referenceImage;

@@ -303,6 +303,8 @@ TimedMeasurement timeLab(const GraderSetup& setup, Lab lab, const SpeedInputs& i
                     return t;
                 }
                 (isStudent ? t.student : t.solution).push_back(timed.samplesPerCpuSecond());
+                (isStudent ? t.studentWall : t.solutionWall)
+                    .push_back(timed.result.process.seconds);
                 for (const RenderedImage& image : timed.result.images)
                     (isStudent ? t.studentRays : t.solutionRays) += image.rays;
                 (isStudent ? t.studentSamples : t.solutionSamples) += timed.samples;
