@@ -126,8 +126,9 @@ int renderToFile(const RenderOptions& options, const HeadlessExtras& extras,
                     s.width, s.height, s.spp, s.seconds, s.cpuSeconds, s.samplesPerSecond(),
                     s.framesPerSecond, s.width, s.height, s.raysPerSecond(),
                     s.samplesPerCpuSecond(), noiseFigures(s).c_str());
-        for (const std::string& note : {s.busyNote(), s.cpuNote()})
-            if (!note.empty()) std::printf("  note: %s\n", note.c_str());
+        // In parentheses, not "note:": those are the scene's notes, which tests count.
+        for (const std::string& said : {s.busyNote(), s.cpuNote()})
+            if (!said.empty()) std::printf("  (%s)\n", said.c_str());
         if (s.reference) std::printf("%s\n", viewer::referenceLine(*s.reference).c_str());
         for (const std::string& line : writeMaps(extras, one, result))
             std::printf("%s\n", line.c_str());

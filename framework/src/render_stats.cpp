@@ -34,7 +34,9 @@ std::string RenderStats::busyNote() const {
     // Below this share the cores were shared with other work; above, the threads' own
     // hand-offs and the last tiles of a pass account for the rest.
     constexpr double BusyShare = 0.8;
-    if (!(cpuShare() > 0) || cpuShare() >= BusyShare) return "";
+    // A render of under half a second is mostly its threads starting: its share says nothing.
+    constexpr double LeastSeconds = 0.5;
+    if (seconds < LeastSeconds || !(cpuShare() > 0) || cpuShare() >= BusyShare) return "";
     char text[200];
     std::snprintf(text, sizeof text,
                   "the machine was busy: the render threads had %.0f%% of their %d core(s) (%.3g "

@@ -56,7 +56,8 @@ struct RenderStats {
     /// The share of their cores the render threads had: cpuSeconds ÷ (seconds × threads). Well
     /// below 1, other processes shared the cores.
     double cpuShare() const;
-    /// "the machine was busy: the render threads had 45% of their cores ...", or "".
+    /// "the machine was busy: the render threads had 45% of their cores ...", or "" (also for a
+    /// render of under half a second, mostly its threads starting).
     std::string busyNote() const;
     /// Why the CPU figure is not to be taken as precise ("" when it is): a render shorter than
     /// the clock's resolution allows, CPU time outside the render threads (threads of the lab's
