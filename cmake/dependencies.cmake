@@ -34,7 +34,9 @@ find_package(nlohmann_json REQUIRED)
 find_package(Threads REQUIRED)
 find_package(glfw3 3.3 REQUIRED)
 find_package(OpenGL REQUIRED)
-find_package(Boost 1.71 REQUIRED)
+# Boost.Math's distributions (header-only): from Boost's own BoostConfig.cmake, which Debian,
+# Homebrew and vcpkg install; CMake 3.30 dropped its FindBoost module for that (policy CMP0167).
+find_package(Boost 1.71 REQUIRED CONFIG)
 
 # tinyobjloader: its package's library, or its one header compiled here. The header is the way
 # when the library was built against another C++ standard library than this build's (the clang

@@ -45,11 +45,11 @@ void printFrameLine(const Frame& frame) {
     const ViewSettings& s = frame.settings;
     std::printf(
         "frame %d: median %.2f fps (%.1f ms) over the last %zu frames, this frame %.2f fps; "
-        "%d spp, %.3g rays/s, noise %.4f, efficiency %s; lab %s, impl %s, max-depth %d, "
-        "continue-prob %.2f, size %dx%d, %s\n",
+        "%d spp, %.3g rays/s, %.3g samples per CPU-second, noise %.4f, efficiency %s; lab %s, "
+        "impl %s, max-depth %d, continue-prob %.2f, size %dx%d, %s\n",
         frame.number, perSecond(frame.medianFrameSeconds), 1000.0 * frame.medianFrameSeconds,
         std::min<size_t>(frame.number, FrameRate::Window), perSecond(frame.frameSeconds),
-        frame.stats.spp, frame.raysPerSecond, frame.stats.noise,
+        frame.stats.spp, frame.raysPerSecond, frame.stats.samplesPerCpuSecond(), frame.stats.noise,
         frame.stats.efficiencyText().c_str(), std::string(labName(s.lab)).c_str(),
         std::string(implementationName(s.implementation)).c_str(), s.parameters.maxDepth,
         s.parameters.continueProb, s.width, s.height, s.split ? "split" : "single");

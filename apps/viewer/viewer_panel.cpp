@@ -57,6 +57,10 @@ void drawFigures(const Frame& frame, const ViewSettings& settings, ViewMode mode
     ImGui::Text("%.2f fps  %.1f ms/frame (median)", perSecond(frame.medianFrameSeconds),
                 1000.0 * frame.medianFrameSeconds);
     ImGui::Text("%d spp   %.3g rays/s", frame.stats.spp, frame.raysPerSecond);
+    // Beside the frame rate (wall time, what a person waits for), the figure to compare: other
+    // programs on the machine change the frame rate, and the samples per CPU-second little.
+    ImGui::Text("%.3g samples per CPU-second%s", frame.stats.samplesPerCpuSecond(),
+                frame.stats.busyNote().empty() ? "" : "  (machine busy)");
     ImGui::Text("lab %s (%s)", std::string(labName(settings.lab)).c_str(),
                 std::string(implementationName(settings.implementation)).c_str());
     ImGui::Text("maxDepth %d   continueProb %.2f", settings.parameters.maxDepth,

@@ -104,6 +104,9 @@ struct ProgressiveRenderer::Accumulation {
     /// Buffer 0 is the implementation shown, buffer 1 the other one, for the split view.
     AccumulationBuffer buffers[2] = {AccumulationBuffer(1, 1), AccumulationBuffer(1, 1)};
     double seconds[2] = {0, 0};
+    // The render threads' CPU time for the implementation shown. The process's is left out (0,
+    // not measured): in the window it counts the drawing too, which is no lab's.
+    CpuTimes cpu;
     RayCounters rays;
     std::optional<NonfiniteSample> firstNonfinite; // of the shown implementation since the restart
     FrameRate frameRate;                           // of the implementation shown (buffer 0)
@@ -118,6 +121,7 @@ struct ProgressiveRenderer::Accumulation {
         resetBuffer(buffers[1], settings.split ? settings.width : 1,
                     settings.split ? settings.height : 1);
         seconds[0] = seconds[1] = 0;
+        cpu = CpuTimes();
         rays = RayCounters();
         firstNonfinite.reset();
         frameRate.clear();
@@ -135,10 +139,11 @@ struct ProgressiveRenderer::Accumulation {
     }
 
     /// A finished pass into the totals; the panel's figures are of the implementation shown.
-    void add(int buffer, double passSeconds, const RayCounters& traced,
+    void add(int buffer, double passSeconds, const CpuTimes& passCpu, const RayCounters& traced,
              const std::optional<NonfiniteSample>& passFirst) {
         seconds[buffer] += passSeconds;
         if (buffer == 0) {
+            cpu.renderThreads += passCpu.renderThreads;
             rays += traced;
             if (passFirst && (!firstNonfinite || passFirst->before(*firstNonfinite)))
                 firstNonfinite = passFirst;
@@ -155,7 +160,8 @@ void ProgressiveRenderer::run() {
         const std::optional<double> seconds = renderPass(accumulation, buffer);
         if (!seconds) continue; // restarted mid-pass: the partial pass is thrown away
         const RayCounters traced = renderer_.rayCounters();
-        accumulation.add(buffer, *seconds, traced, renderer_.firstNonfinite());
+        accumulation.add(buffer, *seconds, {renderer_.cpuSeconds(), 0}, traced,
+                         renderer_.firstNonfinite());
         framesFinished_.fetch_add(1);
         Frame frame = frameFigures(accumulation, *seconds, traced);
         if (onFrame_) onFrame_(frame);
@@ -207,7 +213,7 @@ Frame ProgressiveRenderer::frameFigures(const Accumulation& accumulation, double
     frame.stats =
         renderStats({"", settings.lab, settings.implementation, settings.parameters, settings.seed},
                     accumulation.buffers[0], renderer_.threads(), accumulation.seconds[0],
-                    accumulation.rays, accumulation.firstNonfinite);
+                    accumulation.rays, accumulation.firstNonfinite, accumulation.cpu);
     return frame;
 }
 

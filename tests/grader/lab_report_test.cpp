@@ -52,6 +52,7 @@ GradeReport branchingAndRoulette() {
 EstimatorFigures figures(double efficiency, double noise, double noiseLate) {
     EstimatorFigures f;
     f.samplesPerSecond = 1e6, f.framesPerSecond = 4, f.noise = noise, f.efficiency = efficiency;
+    f.samplesPerCpuSecond = 5e5;
     f.noiseLate = noiseLate;
     return f;
 }
@@ -82,6 +83,46 @@ TEST_CASE("the lab report compares small efficiencies and lab 4's noise at 64 an
     CHECK(older.find("not stored (grader make-references --only-figures)") != std::string::npos);
 }
 
+TEST_CASE("the lab report's ratios are of CPU-time figures, and it says when the machine was busy",
+          "[grader]") {
+    LabFigures yours;
+    yours.notebook = {{"branching", figures(2.53, 0.234, 0)},
+                      {"roulette", figures(0.0236, 6.14, 10.1)},
+                      {"roulette_graded", figures(1.24, 0.382, 0.191)}};
+    // Lab 4 at q = 0.1: four times lab 1's samples per CPU-second, a wall-clock frame rate
+    // that a busy machine held to lab 1's.
+    yours.notebook["roulette"].samplesPerCpuSecond = 2e6;
+    yours.notebook["roulette"].notes = {"the machine was busy: the render threads had 31%"};
+    const std::string md = labReport(branchingAndRoulette(), Rubric{}, yours, yours, "");
+    CHECK(md.find("| samples per CPU-second ÷ lab 1's: yours | reference |") != std::string::npos);
+    CHECK(md.find("| roulette, continueProb 0.1 (lab 4's default) | 4.00 | 4.00 |") !=
+          std::string::npos);
+    CHECK(md.find("Notes on your renders:\n\n- roulette, continueProb 0.1 (lab 4's default): the "
+                  "machine was busy: the render threads had 31%") != std::string::npos);
+}
+
+TEST_CASE("the lab report names a speed at risk and its cause", "[grader]") {
+    GradeReport report = branchingAndRoulette();
+    CheckResult speed;
+    speed.kind = CheckKind::Speed;
+    speed.maxScore = 2;
+    speed.gradedHere = false;
+    speed.atRisk = true;
+    speed.summary = "at risk: your lab would likely lose these points";
+    speed.details = {"traces 1.7× the bounce rays of the lab's estimator: a black component "
+                     "traced?"};
+    report.labs[0].checks = {CheckResult{}, CheckResult{}, speed};
+    const std::string md = labReport(report, Rubric{}, LabFigures{}, std::nullopt, "");
+    CHECK(md.find("(+2 speed: graded by the instructor; **at risk**)") != std::string::npos);
+    CHECK(md.find("graded by the instructor: **at risk** (below)") != std::string::npos);
+    CHECK(md.find("**branching, speed:** at risk: your lab would likely lose these points\n- "
+                  "traces 1.7× the bounce rays") != std::string::npos);
+    CHECK(report.pointsAtRisk() == 2);
+    CHECK(terminalReport(report, false)
+              .find("(+2 speed: graded by the instructor; 2 of them at "
+                    "risk)") != std::string::npos);
+}
+
 TEST_CASE("the lab report shows the plots make sweep wrote, linked from the report's folder",
           "[grader]") {
     const std::string dir = test::temporaryFolder("lab-report-sweeps");
@@ -104,7 +145,7 @@ TEST_CASE("the lab report shows the plots make sweep wrote, linked from the repo
     const std::string md =
         labReport(branchingAndRoulette(), Rubric{}, LabFigures{}, std::nullopt, "", found);
     CHECK(md.find("### roulette: continueProb\n") != std::string::npos);
-    CHECK(md.find("![roulette: frame rate, noise and efficiency against "
+    CHECK(md.find("![roulette: samples per CPU-second, noise and efficiency against "
                   "continueProb](build/sweep/roulette-continue-prob/sweep.png)") !=
           std::string::npos);
     CHECK(md.find("3 values, numbers in [build/sweep/roulette-continue-prob/sweep.csv]") !=

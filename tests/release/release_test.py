@@ -28,7 +28,8 @@ Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
    once labs/branching.cpp is done (the solution copied in), estimators.lab1 passes while the
    other labs' tests still fail; and with all four labs done, `make grade` passes with the speed
    points shown apart and prints the speed ratios between labs beside the reference's, `make
-   sweep LAB=roulette` plots the student's lab 4, and `make report` writes lab-report.md with
+   sweep LAB=roulette` plots the student's lab 4, a lab 2 that traces black components is told
+   its speed points are at risk and why, and `make report` writes lab-report.md with
    every figure filled in and that plot shown.
 5. The targets that need the solutions say so in one line and exit non-zero (`make bench`).
 """
@@ -314,6 +315,22 @@ def check_finished_labs(root, logs):
           "the report names the machine the reference's figures were measured on")
     check("](build/sweep/roulette-continue-prob/sweep.png)" in report,
           "the report shows the plot of make sweep")
+    check("samples per CPU-second ÷ lab 1's" in report,
+          "the report's ratios between labs are of samples per CPU-second")
+
+    # A lab 2 that traces the ray of a picked component even where it is black: the same image,
+    # more bounce rays. Without the solutions to time it against, make grade still says its
+    # speed points are at risk, and why (the instructor's grader fails its speed).
+    shutil.copy(os.path.join(KIT, "tests", "grader", "mutants", "uniform_traces_black",
+                             "uniform.cpp"), os.path.join(root, "labs"))
+    status, output, _ = run(["make", "grade", "LAB=uniform"], root,
+                            os.path.join(logs, "make-grade-traces-black.log"))
+    check(status == 0 and "8/8 (+2 speed: graded by the instructor; 2 of them at risk)" in output
+          and "the bounce rays of the lab's estimator" in output
+          and "a black component traced?" in output,
+          "make grade tells a lab 2 that traces black components that its speed points are at "
+          "risk, and why" + ("" if status == 0 else ":\n" + tail(output)))
+    shutil.copy(os.path.join(KIT, "solutions", "uniform.cpp"), os.path.join(root, "labs"))
 
 
 def main():

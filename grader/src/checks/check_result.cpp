@@ -20,4 +20,10 @@ double LabGrade::pointsNotGradedHere() const {
     return s;
 }
 
+double LabGrade::pointsAtRisk() const {
+    double s = 0;
+    for (const CheckResult& c : checks) s += !c.gradedHere && c.atRisk ? c.maxScore : 0;
+    return s;
+}
+
 } // namespace pathlab::grader

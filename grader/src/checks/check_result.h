@@ -30,6 +30,10 @@ struct CheckResult {
     /// False for a check this build cannot make (speed, without the reference solutions to time
     /// against): the instructor's grader makes it, and its points are not in this build's totals.
     bool gradedHere = true;
+    /// For a check not graded here: this build's own figures say the instructor's grader would
+    /// likely fail it (the speed of a lab that traces rays its estimator does not), and why is
+    /// in the summary.
+    bool atRisk = false;
 
     /// The check's name in every report (check_kind.h).
     std::string name() const { return std::string(checkName(kind)); }
@@ -61,6 +65,7 @@ struct LabGrade {
     double score() const;
     double maxScore() const; ///< of the checks graded here
     double pointsNotGradedHere() const;
+    double pointsAtRisk() const; ///< of the checks not graded here, those at risk
 };
 
 } // namespace pathlab::grader

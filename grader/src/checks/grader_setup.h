@@ -4,6 +4,7 @@
 
 #include "checks/expectation.h"
 #include "checks/race_report.h"
+#include "checks/local_speed_estimate.h"
 #include "checks/rubric.h"
 #include "common/by_lab.h"
 #include "diagnosis/diagnosis.h"
@@ -56,7 +57,10 @@ struct GraderSetup {
     /// the student's labs, for the speed ratios between them; the reference's ratios then come
     /// from the stored figures (lab_figures.json, by lab; 0 where none).
     bool timeWithoutSolutions = false;
-    ByLab<double> storedSolutionSamplesPerSecond;
+    StoredSolutionSpeed storedSolution;
+    /// The kit's own cost of a ray on this machine (kit_ray_cost.h), which carries the stored
+    /// samples per CPU-second here; 0: not measured.
+    double kitCpuSecondsPerRay = 0;
     /// The race check of a submitted lab (race_check.h), made once its correctness renders
     /// finished; its finding enters the correctness verdict (race_verdict.h). Empty: none.
     std::function<RaceFinding(Lab)> raceCheck;

@@ -7,6 +7,8 @@
 #include "checks/run_limits.h"
 #include "isolation/timing_lock.h"
 
+#include "pathlab/renderer.h"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -70,7 +72,8 @@ struct TimedRuns {
     std::vector<double> samplesPerSecond; ///< per CPU-second, one per run that finished
     RayCounters rays;
     double samples = 0;
-    bool complete = false; ///< every run finished
+    double cpuSeconds = 0, wallSeconds = 0; ///< the runs' own, start-ups included
+    bool complete = false;                  ///< every run finished
 
     double rate() const { return complete ? geometricMean(samplesPerSecond) : 0; }
 };
@@ -88,9 +91,22 @@ TimedRuns timedRuns(const GraderSetup& setup, const LabRunner& runner, Lab lab,
         runs.samplesPerSecond.push_back(one.samplesPerCpuSecond());
         for (const RenderedImage& image : one.result.images) runs.rays += image.rays;
         runs.samples += one.samples;
+        runs.cpuSeconds += one.result.process.cpuSeconds;
+        runs.wallSeconds += one.result.process.seconds;
     }
     runs.complete = true;
     return runs;
+}
+
+/// "the machine was busy: ..." when `cpuSeconds` is well below `wallSeconds` on `cores` cores;
+/// "" otherwise, or when the cores are not known.
+std::string busyNote(double cpuSeconds, double wallSeconds, int cores) {
+    if (cores <= 0 || wallSeconds <= 0) return "";
+    const double share = cpuSeconds / (wallSeconds * cores);
+    if (share >= BusyShare) return "";
+    return "the machine was busy: the timed runs had " + std::to_string(std::lround(100 * share)) +
+           "% of their " + (cores == 1 ? "core" : std::to_string(cores) + " cores") +
+           " (other processes shared them); the figures are CPU time, which that changes little";
 }
 
 } // namespace
@@ -107,18 +123,57 @@ SpeedOutcome timeWithoutSolutions(const GraderSetup& setup, Lab lab, bool correc
     const TimedRuns runs = timedRuns(setup, setup.student, lab, startUps);
     outcome.studentRays = raysPerSample(runs.rays, runs.samples);
     outcome.studentSamplesPerSecond = runs.rate();
-    outcome.solutionSamplesPerSecond = setup.storedSolutionSamplesPerSecond[lab];
-    check.summary = correct ? "graded by the instructor: this build has no reference solutions to "
-                              "time your lab against (at least " +
-                                  fixed(r.minSpeedRatio, 2) +
-                                  " of the reference's samples per CPU-second on the same machine)"
-                            : "speed counts only for a correct lab";
-    if (outcome.studentSamplesPerSecond > 0)
-        check.details.push_back(
-            "yours on this machine: " + significant(outcome.studentSamplesPerSecond, 3) +
-            " samples per CPU-second in the grader's timed runs (grading every lab prints "
-            "the ratios between them); rays per sample: " +
-            raysText(outcome.studentRays));
+    outcome.solutionSamplesPerSecond = setup.storedSolution.samplesPerCpuSecond[lab];
+    if (!correct) {
+        check.summary = "speed counts only for a correct lab";
+        return outcome;
+    }
+    check.summary = "graded by the instructor: this build has no reference solutions to time your "
+                    "lab against (at least " +
+                    fixed(r.minSpeedRatio, 2) +
+                    " of the reference's samples per CPU-second on the same machine)";
+    if (!(outcome.studentSamplesPerSecond > 0)) return outcome;
+    check.details.push_back(
+        "yours on this machine: " + significant(outcome.studentSamplesPerSecond, 3) +
+        " samples per CPU-second in the grader's timed runs (grading every "
+        "lab prints the ratios between them); rays per sample: " +
+        raysText(outcome.studentRays));
+    const int cores = setup.threads > 0 ? setup.threads : Renderer::defaultThreads();
+    if (const std::string busy = busyNote(runs.cpuSeconds, runs.wallSeconds, cores); !busy.empty())
+        check.details.push_back(busy);
+    const LocalSpeedEstimate e =
+        estimateSpeedLocally(r, lab, outcome.studentSamplesPerSecond, outcome.studentRays,
+                             setup.storedSolution, setup.kitCpuSecondsPerRay);
+    if (!(e.ratio > 0)) {
+        check.details.push_back("no stored figures of the reference solutions to estimate your "
+                                "speed against (grader/references/lab_figures.json)");
+        return outcome;
+    }
+    check.details.push_back("the reference's rays per sample: " +
+                            raysText(setup.storedSolution.rays[lab]));
+    const std::string estimate =
+        "about " + fixed(e.ratio, 2) + " of the reference's samples per CPU-second, " +
+        (e.scaledByRayCost
+             ? "its stored figure carried to this machine by the kit's own cost of a ray"
+             : "from rays per sample alone (no cost of a ray stored)");
+    // The first cause is the summary's where the points are at risk; the details give the rest.
+    for (size_t i = e.atRisk ? 1 : 0; i < e.causes.size(); ++i)
+        check.details.push_back(e.causes[i]);
+    check.atRisk = e.atRisk;
+    if (e.atRisk) {
+        check.summary = "at risk: your lab would likely lose these points in your instructor's "
+                        "grading: " +
+                        estimate + ", and at least " + fixed(r.minSpeedRatio, 2) + " is needed; " +
+                        e.causes.front();
+        check.diagnosis = "likely too slow";
+    } else if (e.ratio < r.minSpeedRatio) {
+        check.details.push_back(estimate + ": near the threshold, with no cause in its rays or "
+                                           "its work per ray; an estimate across machines, which "
+                                           "your instructor's grader decides by timing both");
+    } else {
+        check.details.push_back(estimate + " (an estimate: your instructor's grader times both "
+                                           "on one machine)");
+    }
     return outcome;
 }
 
@@ -259,12 +314,7 @@ void describeTimedRuns(const Rubric& r, Lab lab, double ratio, size_t pairs,
 /// "the machine was busy: ..." when the timed runs had much less of their cores than their wall
 /// time; "" otherwise.
 std::string busyNote(const TimedMeasurement& t) {
-    if (t.timingCores == 0 || t.wallSeconds <= 0) return "";
-    const double share = t.cpuSeconds / (t.wallSeconds * t.timingCores);
-    if (share >= BusyShare) return "";
-    return "the machine was busy: the timed runs had " + std::to_string(std::lround(100 * share)) +
-           "% of their core (other processes shared it); the figures are CPU time, which that "
-           "changes little";
+    return busyNote(t.cpuSeconds, t.wallSeconds, t.timingCores);
 }
 
 } // namespace

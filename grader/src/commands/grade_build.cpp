@@ -2,6 +2,7 @@
 // submitting; and make-references, which measures what they are compared with.
 #include "checks/expectation.h"
 #include "checks/grading_scenes.h"
+#include "checks/kit_ray_cost.h"
 #include "checks/speed_check.h"
 #include "commands/commands.h"
 #include "commands/grade_lab.h"
@@ -26,6 +27,13 @@ namespace pathlab::grader {
 namespace {
 
 std::string labFiguresPath(const Arguments& a) { return a.references + "/lab_figures.json"; }
+
+/// The kit's own cost of a ray on this machine, on the rubric's speed scene at the timed runs'
+/// size (kit_ray_cost.h).
+double kitCostOfARay(const Rubric& rubric, int threads) {
+    return kitCpuSecondsPerRay(std::string(PATHLAB_MODELS_DIR) + "/" + rubric.speedScene + ".ecs",
+                               rubric.width, rubric.height, threads);
+}
 
 /// The reference solutions' notebook figures and timed runs on this machine.
 void makeLabFigures(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
@@ -54,6 +62,7 @@ void makeLabFigures(const Arguments& a, const Rubric& rubric, const std::string&
         }
         figures.timedRaysKnown = true;
     }
+    figures.kitCpuSecondsPerRay = kitCostOfARay(rubric, a.threads);
     std::fprintf(stderr, "lab figures: the notebook's renders ...\n");
     figures.notebook = measureNotebook(setup.solution,
                                        notebookEstimators({AllLabs.begin(), AllLabs.end()}, rubric),
@@ -139,13 +148,20 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
                                "time your labs against (your instructor's grader does it)");
         setup.timeWithoutSolutions = true;
         if (stored) {
-            setup.storedSolutionSamplesPerSecond = stored->timedSamplesPerSecond;
+            setup.storedSolution = {stored->timedSamplesPerSecond, stored->timedRays,
+                                    stored->timedRaysKnown, stored->kitCpuSecondsPerRay};
             report.ratiosReference = "the reference solutions on " + stored->machine.describe();
+            if (stored->kitCpuSecondsPerRay > 0)
+                setup.kitCpuSecondsPerRay = kitCostOfARay(rubric, a.threads);
         }
     }
     setup.scenes =
         gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden},
                       setup.solution, scratch, report.notes);
+    report.ratiosMeasuredOn = "the correctness renders of " + rubric.speedScene + ", " +
+                              std::to_string(rubric.width) + "×" + std::to_string(rubric.height) +
+                              ", " + std::to_string(rubric.seeds) +
+                              " seeds at each lab's samples per pixel; roulette as graded";
     StartUpTimes startUps;
     for (Lab lab : a.labs) {
         std::fprintf(stderr, "grading %s ...\n", std::string(labName(lab)).c_str());

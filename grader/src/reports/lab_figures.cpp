@@ -2,6 +2,7 @@
 
 #include "checks/run_limits.h"
 
+#include "pathlab/image_noise.h"
 #include "pathlab/input_error.h"
 #include "pathlab/render_stats.h"
 #include "pathlab/whole_file.h"
@@ -137,8 +138,11 @@ std::map<std::string, EstimatorFigures> measureNotebook(const LabRunner& runner,
         if (!s) continue;
         f.samplesPerSecond = s->samplesPerSecond();
         f.framesPerSecond = s->framesPerSecond;
+        f.samplesPerCpuSecond = s->samplesPerCpuSecond();
         f.noise = s->noise;
-        f.efficiency = s->efficiency();
+        f.efficiency = renderEfficiency(s->noise, s->cpuSeconds);
+        for (const std::string& note : {s->busyNote(), s->cpuNote()})
+            if (!note.empty()) f.notes.push_back(note);
         f.raysPerSample = static_cast<double>(s->rays.total()) /
                           (static_cast<double>(s->spp) * s->width * s->height);
         if (!measuresLateNoise(row)) continue;
@@ -154,9 +158,11 @@ void saveLabFigures(const std::string& path, const LabFigures& figures, const Ru
     for (const auto& [key, f] : figures.notebook) {
         notebook[key] = {{"samples_per_second", f.samplesPerSecond},
                          {"frames_per_second", f.framesPerSecond},
+                         {"samples_per_cpu_second", f.samplesPerCpuSecond},
                          {"noise", f.noise},
-                         {"efficiency", f.efficiency},
-                         {"rays_per_sample", f.raysPerSample}};
+                         {"efficiency_per_cpu_second", f.efficiency},
+                         {"rays_per_sample", f.raysPerSample},
+                         {"notes", f.notes}};
         if (f.noiseLate > 0) notebook[key]["noise_late"] = f.noiseLate;
     }
     nlohmann::json timed = nlohmann::json::object(), timedSpp = nlohmann::json::object(),
@@ -194,7 +200,8 @@ void saveLabFigures(const std::string& path, const LabFigures& figures, const Ru
           {"runs", rubric.speedRuns},
           {"measure", "samples per CPU-second"},
           {"samples_per_second", timed},
-          {"rays_per_sample", rays}}}};
+          {"rays_per_sample", rays},
+          {"kit_cpu_seconds_per_ray", figures.kitCpuSecondsPerRay}}}};
     writeFileAtomically(path, j.dump(1) + "\n");
 }
 
@@ -209,15 +216,19 @@ LabFigures loadLabFigures(const std::string& path, const Rubric& rubric) {
         const nlohmann::json& m = j.at("machine");
         figures.machine = {m.at("cpu"),   m.at("system"),  m.at("date"),        m.at("kit_version"),
                            m.at("cores"), m.at("threads"), m.at("load_average")};
-        for (const auto& [key, f] : j.at("notebook").at("estimators").items())
-            figures.notebook[key] = {f.at("samples_per_second"),
-                                     f.at("frames_per_second"),
-                                     f.at("noise"),
-                                     f.at("efficiency"),
-                                     f.at("rays_per_sample"),
-                                     f.value("noise_late", 0.0),
-                                     "",
-                                     ""};
+        // Figures stored before CPU time was measured have no samples per CPU-second and a
+        // wall-clock efficiency: those are left at 0, not stored.
+        for (const auto& [key, f] : j.at("notebook").at("estimators").items()) {
+            EstimatorFigures& e = figures.notebook[key];
+            e.samplesPerSecond = f.at("samples_per_second");
+            e.framesPerSecond = f.at("frames_per_second");
+            e.samplesPerCpuSecond = f.value("samples_per_cpu_second", 0.0);
+            e.noise = f.at("noise");
+            e.efficiency = f.value("efficiency_per_cpu_second", 0.0);
+            e.raysPerSample = f.at("rays_per_sample");
+            e.noiseLate = f.value("noise_late", 0.0);
+            e.notes = f.value("notes", std::vector<std::string>{});
+        }
         // Figures of other timed runs than the rubric's (another scene, size, seeds or samples,
         // or wall-clock time) would not compare: left at 0, unknown.
         const nlohmann::json& t = j.at("timed_runs");
@@ -226,6 +237,7 @@ LabFigures loadLabFigures(const std::string& path, const Rubric& rubric) {
                               t.value("seeds", 0) == rubric.seeds &&
                               t.value("measure", "") == "samples per CPU-second";
         figures.timedRaysKnown = sameRuns && t.contains("rays_per_sample");
+        figures.kitCpuSecondsPerRay = sameRuns ? t.value("kit_cpu_seconds_per_ray", 0.0) : 0.0;
         for (Lab lab : AllLabs) {
             const std::string name(labName(lab));
             if (!sameRuns || t.at("spp").at(name) != rubric.forLab(lab).correctnessSpp) {

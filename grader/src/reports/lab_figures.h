@@ -1,7 +1,10 @@
 #pragma once
 /// The figures a student writes in the lab notebook (handouts/00-setup.md): each estimator's
-/// frame rate, noise and efficiency on the labs' scene at 512×512 after 64 samples per pixel,
-/// from the viewer's --stats of a headless render (the same figures its panel shows).
+/// frame rate, samples per CPU-second, noise and efficiency on the labs' scene at 512×512 after
+/// 64 samples per pixel, from the viewer's --stats of a headless render (the same figures its
+/// panel shows). The frame rate is wall-clock time, what a person waits for; the ratios between
+/// labs are taken of samples per CPU-second and of the efficiency per CPU-second, which other
+/// programs on the machine change little.
 /// `grader --report` measures the student's labs; `grader make-references` stores the reference
 /// solutions' in grader/references/lab_figures.json, with the machine they were measured on,
 /// so that a student without the solutions compares ratios with the reference's.
@@ -37,8 +40,14 @@ constexpr int NotebookSize = 512, NotebookSpp = 64;
 constexpr int NotebookLateSpp = 256;
 
 struct EstimatorFigures {
-    double samplesPerSecond = 0, framesPerSecond = 0, noise = 0, efficiency = 0;
+    double samplesPerSecond = 0, framesPerSecond = 0; ///< wall-clock
+    double samplesPerCpuSecond = 0; ///< the render threads' CPU time; 0: not measured
+    double noise = 0;
+    double efficiency = 0; ///< 1/(noise² × CPU seconds); 0: not measured
     double raysPerSample = 0;
+    /// Why a figure above is less than it seems (a busy machine, CPU time outside the render
+    /// threads), from --stats; empty when nothing was said.
+    std::vector<std::string> notes;
     double noiseLate = 0;    ///< the noise after NotebookLateSpp; 0 where not measured
     std::string failure;     ///< why it could not be measured, in words; "" when measured
     std::string lateFailure; ///< why noiseLate could not be, when it was asked for
@@ -70,6 +79,9 @@ struct LabFigures {
     /// with where the solutions are not part of the build. Not known in older figures.
     ByLab<RaysPerSample> timedRays;
     bool timedRaysKnown = false;
+    /// The kit's own cost of a ray on that machine (kit_ray_cost.h): how the timed figures are
+    /// carried to another machine. 0: not stored.
+    double kitCpuSecondsPerRay = 0;
 };
 
 /// Renders the notebook's rows with `runner`'s labs on the rubric's noise scene.

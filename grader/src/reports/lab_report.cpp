@@ -46,6 +46,7 @@ const LabGrade* gradeOf(const GradeReport& report, Lab lab) {
 }
 
 std::string verdict(const CheckResult& c) {
+    if (c.atRisk) return "graded by the instructor: **at risk** (below)";
     if (!c.gradedHere) return "graded by the instructor";
     return std::string(c.passed ? "pass " : "**fail** ") + number(c.score, "%g") + "/" +
            number(c.maxScore, "%g");
@@ -62,8 +63,11 @@ void writeIntroduction(std::ostream& md, const Rubric& rubric, const LabFigures&
                            ", stored in "
                            "`grader/references/lab_figures.json`"
                      : "(not stored in this kit: `grader make-references` measures them)")
-       << ". Frame rates depend on the machine: compare the ratios between labs, yours with the "
-          "reference's, not the absolute numbers.\n\n"
+       << ". Figures depend on the machine: compare the ratios between labs, yours with the "
+          "reference's, not the absolute numbers. The ratios are taken of samples per CPU-second "
+          "and of the efficiency per CPU-second, which other programs on the machine change "
+          "little; the frame rate is wall-clock time, what you wait for, and a busy machine "
+          "lowers it.\n\n"
        << "Each row is one headless render of `" << rubric.noiseScene << "`, " << size << "×"
        << size << " pixels, " << spp << " samples per pixel, maxDepth " << rubric.maxDepth
        << ", all cores, seed 0, as `./viewer -c models/" << rubric.noiseScene
@@ -72,12 +76,14 @@ void writeIntroduction(std::ostream& md, const Rubric& rubric, const LabFigures&
        << number(rubric.continueProb, "%g") << "` for the graded roulette):\n\n"
        << "- *frame rate*: samples/s ÷ (" << size << " × " << size
        << "), the window's frame rate at " << size << "×" << size
-       << " with one sample per pixel per frame;\n"
+       << " with one sample per pixel per frame (wall-clock time);\n"
+       << "- *samples per CPU-second*: samples ÷ the CPU time the render threads spent "
+          "rendering (`cpu_seconds` in --stats; the window's panel shows it too);\n"
        << "- *noise*: the relative standard error of the image after " << spp
        << " samples per pixel, the panel's noise figure (handouts/00-setup.md, \"The noise "
           "figure\");\n"
-       << "- *efficiency*: 1/(noise² × seconds); a noise of 0.01 takes 10⁴/efficiency seconds at "
-          "this size.\n\n";
+       << "- *efficiency*: 1/(noise² × CPU seconds); a noise of 0.01 takes 10⁴/efficiency "
+          "CPU-seconds at this size (divide by the cores for the seconds you wait).\n\n";
 }
 
 /// Each estimator's figures, yours beside the reference's, with whether your lab is correct
@@ -87,20 +93,35 @@ void writeFiguresTable(std::ostream& md, const GradeReport& report,
                        const std::map<std::string, EstimatorFigures>& yours,
                        const std::map<std::string, EstimatorFigures>& theirs) {
     md << "## Your figures and the reference's\n\n"
-       << "| estimator | your lab correct | frame rate: yours | reference | noise at "
+       << "| estimator | your lab correct | frame rate: yours | reference | samples per "
+          "CPU-second: yours | reference | noise at "
        << std::to_string(NotebookSpp)
        << " spp: yours | reference | efficiency: yours | reference |\n"
-       << "|---|---|--:|--:|--:|--:|--:|--:|\n";
+       << "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|\n";
     for (const NotebookEstimator& row : rows) {
         const LabGrade* grade = gradeOf(report, row.lab);
         const bool correct = grade && !grade->checks.empty() && grade->checks[0].passed;
         md << "| " << row.label << " | " << (correct ? "yes" : "**no**") << " | "
            << cell(yours, row.key, &EstimatorFigures::framesPerSecond, "%.3g fps") << " | "
            << cell(theirs, row.key, &EstimatorFigures::framesPerSecond, "%.3g fps") << " | "
+           << cell(yours, row.key, &EstimatorFigures::samplesPerCpuSecond, "%.3g") << " | "
+           << cell(theirs, row.key, &EstimatorFigures::samplesPerCpuSecond, "%.3g") << " | "
            << cell(yours, row.key, &EstimatorFigures::noise, "%.3f") << " | "
            << cell(theirs, row.key, &EstimatorFigures::noise, "%.3f") << " | "
            << cell(yours, row.key, &EstimatorFigures::efficiency, "%.3g") << " | "
            << cell(theirs, row.key, &EstimatorFigures::efficiency, "%.3g") << " |\n";
+    }
+    // What --stats said of the student's renders: a busy machine, CPU time outside the render
+    // threads. The figures stay; the words say how far to trust them.
+    bool first = true;
+    for (const NotebookEstimator& row : rows) {
+        const auto found = yours.find(row.key);
+        if (found == yours.end()) continue;
+        for (const std::string& note : found->second.notes) {
+            md << (first ? "\nNotes on your renders:\n\n" : "") << "- " << row.label << ": " << note
+               << "\n";
+            first = false;
+        }
     }
 }
 
@@ -109,15 +130,16 @@ void writeFiguresTable(std::ostream& md, const GradeReport& report,
 void writeRatiosTable(std::ostream& md, const std::vector<NotebookEstimator>& rows,
                       const std::map<std::string, EstimatorFigures>& yours,
                       const std::map<std::string, EstimatorFigures>& theirs) {
-    md << "\n## Ratios between the labs\n\nEach figure ÷ lab 1's (branching): these carry over "
-          "from one machine to another.\n\n"
-       << "| estimator | frame rate ÷ lab 1's: yours | reference | noise ÷ lab 1's: yours | "
-          "reference | efficiency ÷ lab 1's: yours | reference |\n"
+    md << "\n## Ratios between the labs\n\nEach figure ÷ lab 1's (branching), of the renders "
+          "above: these carry over from one machine to another, and from a quiet machine to a "
+          "busy one, for they are measured in CPU time.\n\n"
+       << "| estimator | samples per CPU-second ÷ lab 1's: yours | reference | noise ÷ lab 1's: "
+          "yours | reference | efficiency ÷ lab 1's: yours | reference |\n"
        << "|---|--:|--:|--:|--:|--:|--:|\n";
     for (const NotebookEstimator& row : rows)
         md << "| " << row.label << " | "
-           << ratioCell(yours, row.key, &EstimatorFigures::framesPerSecond) << " | "
-           << ratioCell(theirs, row.key, &EstimatorFigures::framesPerSecond) << " | "
+           << ratioCell(yours, row.key, &EstimatorFigures::samplesPerCpuSecond) << " | "
+           << ratioCell(theirs, row.key, &EstimatorFigures::samplesPerCpuSecond) << " | "
            << ratioCell(yours, row.key, &EstimatorFigures::noise) << " | "
            << ratioCell(theirs, row.key, &EstimatorFigures::noise) << " | "
            << ratioCell(yours, row.key, &EstimatorFigures::efficiency) << " | "
@@ -176,14 +198,15 @@ void writeExperiments(std::ostream& md, const std::vector<SweepFigure>& sweeps,
     if (sweeps.empty()) {
         md << "No sweep run yet: `make sweep LAB=roulette` renders your lab 4 at continueProb "
               "0.05 to 0.95, `make sweep LAB=branching PARAM=max-depth` your lab 1 at maxDepth 1 "
-              "to 8, and plots their frame rate, noise and efficiency beside the handout's "
+              "to 8, and plots their samples per CPU-second, noise and efficiency beside the "
+              "handout's "
               "figures; `make report` then shows the plots here.\n";
     } else {
         md << "Made by `make sweep` (scripts/sweep.py): your labs rendered at each value, beside "
               "the handout's figures of the reference solution.\n";
         for (const SweepFigure& sweep : sweeps) {
             md << "\n### " << sweep.lab << ": " << sweep.parameter << "\n\n"
-               << "![" << sweep.lab << ": frame rate, noise and efficiency against "
+               << "![" << sweep.lab << ": samples per CPU-second, noise and efficiency against "
                << sweep.parameter << "](" << sweep.plot << ")\n\n"
                << sweep.values << " values, numbers in [" << sweep.table << "](" << sweep.table
                << ")";
@@ -216,7 +239,8 @@ void writeChecksTable(std::ostream& md, const GradeReport& report, const Rubric&
            << number(lab.maxScore(), "%g");
         if (lab.pointsNotGradedHere() > 0)
             md << " (+" << number(lab.pointsNotGradedHere(), "%g")
-               << " speed: graded by the instructor)";
+               << " speed: graded by the instructor"
+               << (lab.pointsAtRisk() > 0 ? "; **at risk**" : "") << ")";
         md << " |";
         for (const CheckResult& c : lab.checks) {
             md << " " << verdict(c);
@@ -224,12 +248,18 @@ void writeChecksTable(std::ostream& md, const GradeReport& report, const Rubric&
                 md << ": " << number(lab.studentVariance / lab.solutionVariance, "%.2f");
             if (c.kind == CheckKind::Speed && lab.studentSamplesPerSecond > 0)
                 md << (c.gradedHere ? ": " : "; yours here ") << number(lab.studentSamplesPerSecond)
-                   << " samples/s";
+                   << " samples per CPU-second";
             md << " |";
         }
         if (lab.checks.size() < 3) md << " not measured (--no-speed) |";
         md << "\n";
     }
+    for (const LabGrade& lab : report.labs)
+        for (const CheckResult& c : lab.checks)
+            if (c.atRisk) {
+                md << "\n**" << labName(lab.lab) << ", speed:** " << c.summary << "\n";
+                for (const std::string& d : c.details) md << "- " << d << "\n";
+            }
 }
 
 /// The student's own section: what they wrote there before, kept, or the prompt.

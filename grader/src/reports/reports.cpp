@@ -48,12 +48,23 @@ double GradeReport::pointsNotGradedHere() const {
     return s;
 }
 
+double GradeReport::pointsAtRisk() const {
+    double s = 0;
+    for (const LabGrade& l : labs) s += l.pointsAtRisk();
+    return s;
+}
+
 namespace {
 
-/// "8/8", or "8/8 (+2 speed: graded by the instructor)" where a check is not graded here.
-std::string scoreText(double score, double maxScore, double notGradedHere) {
-    char text[128];
-    if (notGradedHere > 0)
+/// "8/8", or "8/8 (+2 speed: graded by the instructor)" where a check is not graded here, with
+/// "; 2 of them at risk" where this build's own figures say those would likely be lost.
+std::string scoreText(double score, double maxScore, double notGradedHere, double atRisk) {
+    char text[160];
+    if (notGradedHere > 0 && atRisk > 0)
+        std::snprintf(text, sizeof text,
+                      "%g/%g (+%g speed: graded by the instructor; %g of them at risk)", score,
+                      maxScore, notGradedHere, atRisk);
+    else if (notGradedHere > 0)
         std::snprintf(text, sizeof text, "%g/%g (+%g speed: graded by the instructor)", score,
                       maxScore, notGradedHere);
     else
@@ -132,26 +143,31 @@ std::string terminalReport(const GradeReport& report, bool colour, bool withHidd
                 std::snprintf(line, sizeof line, "%s %g/%g", c.passed ? "pass" : "FAIL", c.score,
                               c.maxScore);
             else
-                std::snprintf(line, sizeof line, "(+%g)", c.maxScore);
+                std::snprintf(line, sizeof line, c.atRisk ? "(+%g) RISK" : "(+%g)", c.maxScore);
             std::string cell = line;
             cell.resize(std::max<size_t>(cell.size() + 1, 13), ' ');
-            out << (!c.gradedHere ? "" : c.passed ? green : red) << cell << reset;
+            out << (c.atRisk ? red : !c.gradedHere ? "" : c.passed ? green : red) << cell << reset;
         }
-        out << scoreText(lab.score(), lab.maxScore(), lab.pointsNotGradedHere()) << "\n";
+        out << scoreText(lab.score(), lab.maxScore(), lab.pointsNotGradedHere(), lab.pointsAtRisk())
+            << "\n";
     }
-    out << "total " << scoreText(report.score(), report.maxScore(), report.pointsNotGradedHere());
+    out << "total "
+        << scoreText(report.score(), report.maxScore(), report.pointsNotGradedHere(),
+                     report.pointsAtRisk());
     std::snprintf(line, sizeof line, " in %.0f s\n", report.seconds);
     out << line;
     for (const LabGrade& lab : report.labs)
         for (const CheckResult& c : lab.checks)
             out << "\n"
                 << labName(lab.lab) << " " << c.name() << ": "
-                << (c.passed || !c.gradedHere ? "" : red) << checkText(c, withHidden) << reset;
+                << (c.atRisk || (!c.passed && c.gradedHere) ? red : "") << checkText(c, withHidden)
+                << reset;
     out << "\n";
     const auto ratios = labRatios(report);
     if (!ratios.empty()) {
-        out << "\nspeed ratios between labs: samples/s in the grader's timed runs (roulette as "
-               "graded) ÷ branching's\n"
+        out << "\nspeed ratios between labs: samples per CPU-second in the grader's timed runs"
+            << (report.ratiosMeasuredOn.empty() ? "" : " (" + report.ratiosMeasuredOn + ")")
+            << " ÷ branching's\n"
             << "                              yours   reference\n";
         for (const LabRatio& r : ratios) {
             std::snprintf(line, sizeof line, "  %-26s %6.2f   ", r.name.c_str(), r.student);
@@ -166,8 +182,9 @@ std::string terminalReport(const GradeReport& report, bool colour, bool withHidd
             << (report.ratiosReference.empty()
                     ? "the reference solutions, timed now beside your labs"
                     : report.ratiosReference)
-            << "\n  (compare the ratios, not the samples/s: those depend on the machine; on a busy "
-               "machine they vary by tens of percent from run to run)\n";
+            << "\n  (compare the ratios, not the samples per CPU-second: those depend on the "
+               "machine; CPU time changes little when other programs run, wall-clock time "
+               "does)\n";
     }
     for (const std::string& note : report.notes) out << "note: " << note << "\n";
     return out.str();
@@ -183,6 +200,7 @@ std::string jsonReport(const GradeReport& report) {
                               {"max_score", c.maxScore},
                               {"passed", c.passed},
                               {"graded_here", c.gradedHere},
+                              {"at_risk", c.atRisk},
                               {"summary", c.summary},
                               {"details", c.details},
                               {"hidden_scenes", c.hiddenSceneDetails}});
@@ -213,12 +231,16 @@ std::string jsonReport(const GradeReport& report) {
                             {"max_score", a.maxScore},
                             {"graded_at", a.gradedAt},
                             {"how", a.how}});
-    const nlohmann::json j = {
-        {"kit_version", PATHLAB_VERSION}, {"score", report.score()},
-        {"max_score", report.maxScore()}, {"points_not_graded_here", report.pointsNotGradedHere()},
-        {"seconds", report.seconds},      {"labs", labs},
-        {"speed_ratios", ratios},         {"notes", report.notes},
-        {"earlier_attempts", attempts}};
+    const nlohmann::json j = {{"kit_version", PATHLAB_VERSION},
+                              {"score", report.score()},
+                              {"max_score", report.maxScore()},
+                              {"points_not_graded_here", report.pointsNotGradedHere()},
+                              {"points_at_risk", report.pointsAtRisk()},
+                              {"seconds", report.seconds},
+                              {"labs", labs},
+                              {"speed_ratios", ratios},
+                              {"notes", report.notes},
+                              {"earlier_attempts", attempts}};
     return j.dump(2) + "\n";
 }
 
@@ -306,16 +328,18 @@ void writeHtmlReport(const GradeReport& report, const std::string& folder) {
     std::ostringstream html;
     html << "<!doctype html><html><head><meta charset=\"utf-8\"><title>PathLab grade</title><style>"
          << pageStyle() << "</style></head><body>\n<h1>PathLab grade: "
-         << escapeXml(scoreText(report.score(), report.maxScore(), report.pointsNotGradedHere()))
+         << escapeXml(scoreText(report.score(), report.maxScore(), report.pointsNotGradedHere(),
+                                report.pointsAtRisk()))
          << "</h1>\n"
          << "<table><tr><th>lab</th><th>check</th><th>score</th><th>result</th></tr>\n";
     for (const LabGrade& lab : report.labs)
         for (const CheckResult& c : lab.checks)
             html << "<tr><td>" << labName(lab.lab) << "</td><td>" << c.name() << "</td><td>"
                  << c.score << " / " << c.maxScore << "</td><td class=\""
-                 << (!c.gradedHere ? "\">graded by the instructor"
-                     : c.passed    ? "pass\">pass"
-                                   : "fail\">FAIL")
+                 << (c.atRisk        ? "fail\">graded by the instructor: at risk"
+                     : !c.gradedHere ? "\">graded by the instructor"
+                     : c.passed      ? "pass\">pass"
+                                     : "fail\">FAIL")
                  << "</td></tr>\n";
     html << "</table>\n";
     for (const LabGrade& lab : report.labs) {

@@ -18,6 +18,9 @@ struct GradeReport {
     /// Where the reference's side of the speed ratios comes from, when not from timing the
     /// solutions beside the student's labs now: "the reference solutions on <machine>".
     std::string ratiosReference;
+    /// What the speed ratios between labs were measured on, in words (the timed runs' scene,
+    /// size and samples); empty: not said.
+    std::string ratiosMeasuredOn;
     /// A submission's earlier gradings (a batch keeps each in attempts/N/), oldest first.
     struct Attempt {
         int number = 0;
@@ -30,6 +33,7 @@ struct GradeReport {
     double score() const;
     double maxScore() const; ///< of the checks graded here
     double pointsNotGradedHere() const;
+    double pointsAtRisk() const; ///< of those not graded here, the ones this build warns of
 };
 
 /// `text` with & < > " escaped, for XML and HTML.
