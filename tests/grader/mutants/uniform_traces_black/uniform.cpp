@@ -1,9 +1,9 @@
 // Mutant 'uniform_traces_black': picks among all three components as lab 2 asks, but traces the
 // picked component's ray even where that component is black: the same image (a black
-// component's ray adds nothing), for 1.7 times the bounce rays. A plausible student bug; the
-// grader must fail its speed (see tests/grader/mutants.json), and the student release's own
-// `make grade` must say its speed points are at risk. Lab 2: uniform selection of one component
-// (handouts/02-uniform-pick.md).
+// component's ray adds nothing), for 3.4 times the bounce rays on the VI2 box. A plausible
+// student bug; the grader must fail its speed (see tests/grader/mutants.json), and the student
+// release's own `make grade` must say its speed points are at risk. Lab 2: uniform selection of
+// one component (handouts/02-uniform-pick.md).
 #include "pathlab/lab.h"
 
 #include <algorithm>
