@@ -118,12 +118,14 @@ const char* benchOptionsHelp() {
     return R"(usage: bench [options]
 
 Measures how fast PathLab renders next to Embree's own ray traversal, and next to Embree's
-pathtracer, and prints one table per scene.
+pathtracer, and prints one table per scene. Speed is compared by CPU time, which other programs
+on the machine change little; wall-clock figures stand beside it, and scaling is wall-clock.
 
   --scene FILE.ecs       scene to measure (repeatable; default models/cornell_box_VI2_Specular.ecs)
   --size W H             image size of the timed renders (default 512 512)
   --spp N                samples per pixel of one timed pass (default 2)
-  --passes N             timed passes after one warm-up pass; the fastest counts (default 3)
+  --passes N             timed passes after one warm-up pass; the one of least CPU time
+                         counts (the fastest by wall-clock time in the scaling; default 3)
   --threads N            threads of the multi-threaded figures (default: all cores)
   --max-depth N          labs 1-3 (default 3)
   --continue-prob P      lab 4 (default 0.1)
@@ -134,7 +136,8 @@ Embree's pathtracer (package embree-tools)
   --peer-scene FILE.ecs  its scene (default )" PATHLAB_EMBREE_MODELS_DIR R"(/cornell_box.ecs)
   --peer-light-scale S   scales the scene's point lights so the 8-bit output does not clip
                          (default 0.1)
-  --peer-spp N           samples per pixel of one timed frame (default 4)
+  --peer-spp N           samples per pixel of one timed frame (default 4); the frames'
+                         CPU time is a run's of --passes frames less a run's of none
   --peer-image-spp N     samples per pixel of the images whose means are compared (default 16)
   --peer-path-lengths L,...
                          Embree's path lengths to compare at, PathLab's importance solution

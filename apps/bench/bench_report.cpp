@@ -1,9 +1,14 @@
 #include "bench_report.h"
 
+#include "busy_machine.h"
+
+#include "pathlab/cpu_clock.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <thread>
 
 namespace pathlab::bench {
@@ -22,54 +27,118 @@ std::string millions(double perSecond) {
     return text;
 }
 
+/// Under a table: a few lines if other programs shared the machine while it was measured,
+/// broken between words to fit the tables' width.
+void printBusyNote(const std::vector<CpuUse>& uses, std::FILE* out) {
+    constexpr size_t Width = 96;
+    std::string line;
+    std::istringstream words(busyNote(uses));
+    for (std::string word; words >> word;) {
+        if (!line.empty() && line.size() + 1 + word.size() > Width) {
+            std::fprintf(out, "  %s\n", line.c_str());
+            line.clear();
+        }
+        line += (line.empty() ? "" : " ") + word;
+    }
+    if (!line.empty()) std::fprintf(out, "  %s\n", line.c_str());
+}
+
+/// What each timed run of a scene's table had of the machine.
+std::vector<CpuUse> sceneCpuUse(const SceneFigures& s) {
+    std::vector<CpuUse> uses;
+    for (const SolutionFigures& f : s.solutions) {
+        const std::string lab(labName(f.lab));
+        const auto render = [&](const RenderTiming& r) {
+            uses.push_back({lab + "'s passes on " + threadsText(r.threads), r.cpuSeconds, r.seconds,
+                            r.threads});
+        };
+        const auto raw = [&](const TraversalTimes& t, int threads) {
+            uses.push_back({"Embree alone on " + lab + "'s rays on " + threadsText(threads),
+                            t.cpuSeconds(), t.seconds(), threads});
+        };
+        render(f.renderOneThread);
+        render(f.render);
+        raw(f.rawOneThread, 1);
+        raw(f.raw, s.settings.threads);
+    }
+    return uses;
+}
+
 void printScene(const SceneFigures& s, std::FILE* out) {
     std::fprintf(out,
-                 "\n%s: %zu triangles, %dx%d, %d spp per pass, fastest of %d passes, max-depth "
-                 "%d, continue-prob %g\n",
+                 "\n%s: %zu triangles, %dx%d, %d spp per pass, the pass of least CPU time of %d, "
+                 "max-depth %d, continue-prob %g\n",
                  s.name.c_str(), s.triangles, s.settings.width, s.settings.height, s.settings.spp,
                  s.settings.passes, s.settings.parameters.maxDepth,
                  s.settings.parameters.continueProb);
 
+    // Per CPU-second, Embree's rate hardly depends on the threads (their CPU time is summed);
+    // per wall second it grows with them.
     const TraversalTimes one = s.rawOneThread(), all = s.raw();
     std::fprintf(out,
-                 "\n  Embree alone, on the rays the solutions traced   1 thread  %2d threads\n",
-                 s.settings.threads);
-    const auto rawRow = [&](const char* what, size_t rays1, double seconds1, size_t raysN,
-                            double secondsN) {
-        std::fprintf(out, "    %-30s rays/s  %9s  %10s\n", what,
+                 "\n  Embree alone, on the rays the solutions traced   rays per CPU-second    "
+                 "rays/s (wall clock)\n"
+                 "                                                   1 thread  %2d threads    "
+                 "1 thread  %2d threads\n",
+                 s.settings.threads, s.settings.threads);
+    const auto rawRow = [&](const char* what, size_t rays1, double cpu1, double seconds1,
+                            size_t raysN, double cpuN, double secondsN) {
+        std::fprintf(out, "    %-45s %9s  %10s   %9s  %10s\n", what,
+                     millions(rate(rays1, cpu1)).c_str(), millions(rate(raysN, cpuN)).c_str(),
                      millions(rate(rays1, seconds1)).c_str(),
                      millions(rate(raysN, secondsN)).c_str());
     };
-    rawRow("camera rays (coherent)", one.cameraRays, one.cameraSeconds, all.cameraRays,
-           all.cameraSeconds);
-    rawRow("closest-hit rays (incoherent)", one.bounceRays, one.bounceSeconds, all.bounceRays,
-           all.bounceSeconds);
-    rawRow("occlusion rays", one.shadowRays, one.shadowSeconds, all.shadowRays, all.shadowSeconds);
+    rawRow("camera rays (coherent)", one.cameraRays, one.cameraCpuSeconds, one.cameraSeconds,
+           all.cameraRays, all.cameraCpuSeconds, all.cameraSeconds);
+    rawRow("closest-hit rays (incoherent)", one.bounceRays, one.bounceCpuSeconds, one.bounceSeconds,
+           all.bounceRays, all.bounceCpuSeconds, all.bounceSeconds);
+    rawRow("occlusion rays", one.shadowRays, one.shadowCpuSeconds, one.shadowSeconds,
+           all.shadowRays, all.shadowCpuSeconds, all.shadowSeconds);
 
-    std::fprintf(out, "\n  solution    threads  samples/s  intersect/s  occluded/s   rays/s  "
-                      "Embree alone  efficiency\n");
-    const auto solutionRow = [&](const char* lab, int threads, const RenderTiming& r,
-                                 const TraversalTimes& raw, double efficiency) {
-        std::fprintf(out, "  %-10s %8d %10s %12s %11s %8s %13s %11.2f\n", lab, threads,
-                     millions(r.samplesPerSecond()).c_str(),
-                     millions(r.intersectPerSecond()).c_str(),
-                     millions(r.occludedPerSecond()).c_str(), millions(r.raysPerSecond()).c_str(),
-                     millions(raw.mixRate()).c_str(), efficiency);
+    std::fprintf(out, "\n                       per CPU-second                                   "
+                      "             wall clock\n"
+                      "  solution    threads   samples  intersect  occluded     rays  Embree alone"
+                      "  efficiency    samples/s  efficiency\n");
+    const auto solutionRow = [&](const char* lab, const RenderTiming& r, const TraversalTimes& raw,
+                                 double efficiency, double wallClockEfficiency) {
+        std::fprintf(
+            out, "  %-10s %8d %9s %10s %9s %8s %13s %11.2f %12s %11.2f\n", lab, r.threads,
+            millions(r.samplesPerCpuSecond()).c_str(), millions(r.intersectPerCpuSecond()).c_str(),
+            millions(r.occludedPerCpuSecond()).c_str(), millions(r.raysPerCpuSecond()).c_str(),
+            millions(raw.mixRatePerCpuSecond()).c_str(), efficiency,
+            millions(r.samplesPerSecond()).c_str(), wallClockEfficiency);
     };
     for (const SolutionFigures& f : s.solutions) {
         const std::string lab(labName(f.lab));
-        solutionRow(lab.c_str(), 1, f.renderOneThread, f.rawOneThread, f.efficiencyOneThread());
-        solutionRow("", s.settings.threads, f.render, f.raw, f.efficiency());
+        solutionRow(lab.c_str(), f.renderOneThread, f.rawOneThread, f.efficiencyOneThread(),
+                    f.wallClockEfficiencyOneThread());
+        solutionRow("", f.render, f.raw, f.efficiency(), f.wallClockEfficiency());
     }
-    std::fprintf(out, "  efficiency: rays/s achieved / Embree's rays/s on the same rays alone\n");
-    std::fprintf(out, "  thread scaling, samples/s with %d threads / 1:", s.settings.threads);
+    std::fprintf(out, "  efficiency: rays per CPU-second achieved / Embree's alone on the same "
+                      "rays, the share of the\n  render's CPU time that is Embree's traversal; "
+                      "wall clock: the same by wall time\n");
+    std::fprintf(
+        out, "  thread scaling (wall clock), samples/s with %d threads / 1:", s.settings.threads);
     for (const SolutionFigures& f : s.solutions)
         std::fprintf(out, "  %s %.2fx", std::string(labName(f.lab)).c_str(), f.scaling());
     std::fprintf(out, "\n");
+    printBusyNote(sceneCpuUse(s), out);
 }
 
-/// One line per path length under a header that says what was compared: samples/s of each,
-/// their ratio, and the two images' means, 8-bit as Embree stores them.
+/// What both tracers' threads had of the machine, at every path length measured.
+std::vector<CpuUse> peerCpuUse(const std::vector<PeerComparison>& peers) {
+    std::vector<CpuUse> uses;
+    for (const PeerComparison& c : peers) {
+        if (!c.measured) continue;
+        uses.push_back(c.embreeCpuUse);
+        uses.push_back(c.oursCpuUse);
+    }
+    return uses;
+}
+
+/// One line per path length under a header that says what was compared: samples per CPU-second
+/// and per second of each and their ratios; then the two images' means, 8-bit as Embree stores
+/// them.
 void printPeers(const std::vector<PeerComparison>& peers, std::FILE* out) {
     const auto measured = std::find_if(peers.begin(), peers.end(),
                                        [](const PeerComparison& c) { return c.measured; });
@@ -81,21 +150,44 @@ void printPeers(const std::vector<PeerComparison>& peers, std::FILE* out) {
     const PeerComparison& h = *measured;
     std::fprintf(out,
                  "\nEmbree's pathtracer on %s (point lights x%g), %dx%d, %d spp per frame, "
-                 "%d threads,\n  fastest of %d rounds of %d frames each, taken in turn; path "
-                 "length L = PathLab's importance\n  solution at max-depth L-1; mean radiance at "
-                 "%d spp, 8-bit as Embree stores it\n",
+                 "%d threads,\n  best of %d rounds of %d frames each, taken in turn; path "
+                 "length L = PathLab's importance\n  solution at max-depth L-1; CPU time: each "
+                 "process's per frame, Embree's from a run of %d frames\n  less one of none "
+                 "(its start-up); wall clock: the fastest frame\n",
                  h.scene.c_str(), h.lightScale, h.width, h.height, h.spp, h.threads, h.rounds,
-                 h.frames, h.imageSpp);
-    std::fprintf(out, "  path length  Embree samples/s  PathLab samples/s  PathLab / Embree   "
-                      "mean radiance: Embree, PathLab           difference (standard errors)\n");
+                 h.frames, h.frames);
+    std::fprintf(out, "               samples per CPU-second              samples/s (wall clock)"
+                      "              Embree's CPU time per frame\n"
+                      "  path length     Embree    PathLab  PathLab / Embree     Embree    "
+                      "PathLab  PathLab / Embree  by round (run of none)\n");
     for (const PeerComparison& c : peers) {
         if (!c.measured) {
             std::fprintf(out, "  %11d  %s\n", c.maxPathLength, c.note.c_str());
             continue;
         }
-        std::fprintf(out, "  %11d  %16s  %17s  %15.2fx   %.5f %.5f %.5f, %.5f %.5f %.5f",
-                     c.maxPathLength, millions(c.embreeSamplesPerSecond).c_str(),
-                     millions(c.oursSamplesPerSecond).c_str(), c.ratio(), c.embreeMean.r,
+        char cpuRatio[32] = "-"; // Embree's frames too short to time by CPU (c.cpuNote)
+        if (c.cpuRatio() > 0) std::snprintf(cpuRatio, sizeof cpuRatio, "%.2fx", c.cpuRatio());
+        std::fprintf(out, "  %11d %10s %10s %17s %10s %10s %16.2fx  ", c.maxPathLength,
+                     c.embreeSamplesPerCpuSecond > 0 ? millions(c.embreeSamplesPerCpuSecond).c_str()
+                                                     : "-",
+                     millions(c.oursSamplesPerCpuSecond).c_str(), cpuRatio,
+                     millions(c.embreeSamplesPerSecond).c_str(),
+                     millions(c.oursSamplesPerSecond).c_str(), c.ratio());
+        for (double seconds : c.embreeCpuSecondsPerFrame) std::fprintf(out, "%.3g ", seconds);
+        std::fprintf(out, "s (%.3g s)\n", c.embreeStartCpuSeconds);
+    }
+    for (const PeerComparison& c : peers)
+        if (c.measured && !c.cpuNote.empty())
+            std::fprintf(out, "  path length %d: %s\n", c.maxPathLength, c.cpuNote.c_str());
+    printBusyNote(peerCpuUse(peers), out);
+
+    std::fprintf(out,
+                 "  path length  mean radiance at %d spp, 8-bit as Embree stores it: "
+                 "Embree, PathLab   difference (standard errors)\n",
+                 h.imageSpp);
+    for (const PeerComparison& c : peers) {
+        if (!c.measured) continue;
+        std::fprintf(out, "  %11d  %.5f %.5f %.5f, %.5f %.5f %.5f", c.maxPathLength, c.embreeMean.r,
                      c.embreeMean.g, c.embreeMean.b, c.oursMean.r, c.oursMean.g, c.oursMean.b);
         const Color d = c.oursMean - c.embreeMean;
         if (c.imageSpp > 1)
@@ -122,15 +214,27 @@ void printMemory(const MemoryFigures& m, std::FILE* out) {
                  m.width, m.height, m.frames, m.peakMiB);
 }
 
+/// What the threads of each scaling run had of the machine.
+std::vector<CpuUse> scalingCpuUse(const ScalingFigures& f) {
+    std::vector<CpuUse> uses;
+    for (const ScalingFigures::Point& p : f.byThreads)
+        uses.push_back({"the passes on " + threadsText(p.value), p.timing.cpuSeconds,
+                        p.timing.seconds, p.timing.threads});
+    for (const ScalingFigures::Point& p : f.byTileSize)
+        uses.push_back({"the passes in tiles of " + std::to_string(p.value), p.timing.cpuSeconds,
+                        p.timing.seconds, p.timing.threads});
+    return uses;
+}
+
 void printScaling(const ScalingFigures& f, std::FILE* out) {
     std::fprintf(out,
-                 "\nScaling: %s solution on %s, %dx%d, 1 spp per pass as the window renders, "
-                 "fastest of %d passes\n  threads       ",
+                 "\nScaling (wall clock: how soon a pass is done): %s solution on %s,\n  %dx%d, "
+                 "1 spp per pass as the window renders, fastest of %d passes\n  threads       ",
                  std::string(labName(f.lab)).c_str(), f.scene.c_str(), f.width, f.height, f.passes);
     for (const ScalingFigures::Point& p : f.byThreads) std::fprintf(out, "%9d", p.value);
     std::fprintf(out, "\n  samples/s     ");
     for (const ScalingFigures::Point& p : f.byThreads)
-        std::fprintf(out, "%9s", millions(p.samplesPerSecond).c_str());
+        std::fprintf(out, "%9s", millions(p.samplesPerSecond()).c_str());
     std::fprintf(out, "\n  tile size     ");
     for (const ScalingFigures::Point& p : f.byTileSize) std::fprintf(out, "%9d", p.value);
     std::fprintf(out, "   (%d threads)\n  tiles         ", f.tileThreads);
@@ -139,21 +243,22 @@ void printScaling(const ScalingFigures& f, std::FILE* out) {
                      ((f.width + p.value - 1) / p.value) * ((f.height + p.value - 1) / p.value));
     std::fprintf(out, "\n  samples/s     ");
     for (const ScalingFigures::Point& p : f.byTileSize)
-        std::fprintf(out, "%9s", millions(p.samplesPerSecond).c_str());
+        std::fprintf(out, "%9s", millions(p.samplesPerSecond()).c_str());
     std::fprintf(out,
                  "\n  the window's hand-off between frames (the image's figures and its copy for "
                  "display): %.2f ms,\n  %.0f%% of a frame at %d threads; were the passes to scale "
                  "on, %.0f%% at 16 threads, %.0f%% at 64\n",
                  f.handOffSeconds * 1e3, 100 * f.handOffShare(f.tileThreads), f.tileThreads,
                  100 * f.handOffShare(16), 100 * f.handOffShare(64));
+    printBusyNote(scalingCpuUse(f), out);
 }
 
 json scalingJson(const ScalingFigures& f) {
     json threads = json::array(), tiles = json::array();
     for (const ScalingFigures::Point& p : f.byThreads)
-        threads.push_back({{"threads", p.value}, {"samples_per_second", p.samplesPerSecond}});
+        threads.push_back({{"threads", p.value}, {"samples_per_second", p.samplesPerSecond()}});
     for (const ScalingFigures::Point& p : f.byTileSize)
-        tiles.push_back({{"tile_size", p.value}, {"samples_per_second", p.samplesPerSecond}});
+        tiles.push_back({{"tile_size", p.value}, {"samples_per_second", p.samplesPerSecond()}});
     return {{"scene", f.scene},
             {"solution", labName(f.lab)},
             {"width", f.width},
@@ -163,7 +268,8 @@ json scalingJson(const ScalingFigures& f) {
             {"by_tile_size", tiles},
             {"hand_off_ms", f.handOffSeconds * 1e3},
             {"hand_off_share", f.handOffShare(f.tileThreads)},
-            {"hand_off_share_at_64_threads", f.handOffShare(64)}};
+            {"hand_off_share_at_64_threads", f.handOffShare(64)},
+            {"busy_note", busyNote(scalingCpuUse(f))}};
 }
 
 void printFirstFrame(const FirstFrameLatency& f, std::FILE* out) {
@@ -185,6 +291,9 @@ json rawJson(const TraversalTimes& t) {
         {"camera", rate(t.cameraRays, t.cameraSeconds)},
         {"closest_hit", rate(t.bounceRays, t.bounceSeconds)},
         {"occlusion", rate(t.shadowRays, t.shadowSeconds)},
+        {"camera_per_cpu_second", rate(t.cameraRays, t.cameraCpuSeconds)},
+        {"closest_hit_per_cpu_second", rate(t.bounceRays, t.bounceCpuSeconds)},
+        {"occlusion_per_cpu_second", rate(t.shadowRays, t.shadowCpuSeconds)},
         {"rays",
          {{"camera", t.cameraRays}, {"closest_hit", t.bounceRays}, {"occlusion", t.shadowRays}}}};
 }
@@ -194,7 +303,13 @@ json renderJson(const RenderTiming& r) {
             {"rays_per_second",
              {{"intersect", r.intersectPerSecond()},
               {"occluded", r.occludedPerSecond()},
-              {"total", r.raysPerSecond()}}}};
+              {"total", r.raysPerSecond()}}},
+            {"samples_per_cpu_second", r.samplesPerCpuSecond()},
+            {"rays_per_cpu_second",
+             {{"intersect", r.intersectPerCpuSecond()},
+              {"occluded", r.occludedPerCpuSecond()},
+              {"total", r.raysPerCpuSecond()}}},
+            {"cpu_share", CpuUse{"", r.cpuSeconds, r.seconds, r.threads}.share()}};
 }
 
 json sceneJson(const SceneFigures& s) {
@@ -202,14 +317,19 @@ json sceneJson(const SceneFigures& s) {
     for (const SolutionFigures& f : s.solutions) {
         json one = renderJson(f.renderOneThread);
         one["raw_mix_rays_per_second"] = f.rawOneThread.mixRate();
+        one["raw_mix_rays_per_cpu_second"] = f.rawOneThread.mixRatePerCpuSecond();
         one["efficiency"] = f.efficiencyOneThread();
+        one["efficiency_wall"] = f.wallClockEfficiencyOneThread();
         json all = renderJson(f.render);
         all["raw_mix_rays_per_second"] = f.raw.mixRate();
+        all["raw_mix_rays_per_cpu_second"] = f.raw.mixRatePerCpuSecond();
         all["efficiency"] = f.efficiency();
+        all["efficiency_wall"] = f.wallClockEfficiency();
         solutions.push_back({{"lab", labName(f.lab)},
                              {"threads", all},
                              {"one_thread", one},
                              {"efficiency", f.efficiency()},
+                             {"efficiency_wall", f.wallClockEfficiency()},
                              {"scaling", f.scaling()}});
     }
     return {{"scene", s.name},
@@ -222,7 +342,8 @@ json sceneJson(const SceneFigures& s) {
             {"max_depth", s.settings.parameters.maxDepth},
             {"continue_prob", s.settings.parameters.continueProb},
             {"raw", {{"one_thread", rawJson(s.rawOneThread())}, {"threads", rawJson(s.raw())}}},
-            {"solutions", solutions}};
+            {"solutions", solutions},
+            {"busy_note", busyNote(sceneCpuUse(s))}};
 }
 
 json peerJson(const PeerComparison& c) {
@@ -242,6 +363,15 @@ json peerJson(const PeerComparison& c) {
             {"embree_samples_per_second", c.embreeSamplesPerSecond},
             {"ours_samples_per_second", c.oursSamplesPerSecond},
             {"ratio", c.ratio()},
+            {"embree_samples_per_cpu_second", c.embreeSamplesPerCpuSecond},
+            {"ours_samples_per_cpu_second", c.oursSamplesPerCpuSecond},
+            {"cpu_ratio", c.cpuRatio()},
+            {"cpu_note", c.cpuNote},
+            {"embree_cpu_seconds_per_frame", c.embreeCpuSecondsPerFrame},
+            {"embree_start_cpu_seconds", c.embreeStartCpuSeconds},
+            {"embree_cpu_share", c.embreeCpuUse.share()},
+            {"ours_cpu_share", c.oursCpuUse.share()},
+            {"busy_note", busyNote({c.embreeCpuUse, c.oursCpuUse})},
             {"image_spp", c.imageSpp},
             {"mean_radiance", {{"embree", rgb(c.embreeMean)}, {"ours", rgb(c.oursMean)}}},
             {"standard_error", rgb(c.standardError)},
@@ -286,6 +416,7 @@ std::string reportJson(const BenchReport& report) {
     for (const ScalingFigures& f : report.scaling) scaling.push_back(scalingJson(f));
     const json document = {{"pathlab_version", PATHLAB_VERSION},
                            {"cores", std::thread::hardware_concurrency()},
+                           {"cpu_clock", cpuClockName()},
                            {"scenes", scenes},
                            {"embree_pathtracer", peers},
                            {"scaling", scaling},

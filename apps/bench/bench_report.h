@@ -24,7 +24,8 @@ struct BenchReport {
 /// One table per scene, then the comparison with Embree's pathtracer, scaling and memory.
 void printReport(const BenchReport& report, std::FILE* out);
 
-/// The same figures as one JSON document (rates in per-second units, memory in MiB).
+/// The same figures as one JSON document (rates per second and, in the keys that say so, per
+/// CPU-second; memory in MiB).
 std::string reportJson(const BenchReport& report);
 
 } // namespace pathlab::bench

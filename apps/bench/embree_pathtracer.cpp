@@ -60,22 +60,50 @@ std::vector<float> readPpm(const std::string& path, int width, int height) {
 
 } // namespace
 
-double pathtracerSamplesPerSecond(const PathtracerJob& job, int spp, int frames) {
-    std::vector<std::string> argv = commandLine(job, spp);
-    for (const std::string& a : {std::string("--benchmark"), std::string("1"),
-                                 std::to_string(frames), std::string("--legacy")})
-        argv.push_back(a);
-    const ChildRun result = runOrThrow(argv);
-    // "BENCHMARK_RENDER_MAX 3.7026": frames per second of the fastest frame.
-    std::istringstream lines(result.output);
+PathtracerSpeed pathtracerSpeed(const PathtracerJob& job, int spp, int frames) {
+    // Its --benchmark mode prints the frames' rates only, and a run's CPU time holds its
+    // start-up and warm-up frame too. Two runs that differ only by their timed frames differ in
+    // CPU time by those frames' alone. On this 2-core machine under load (each process had a
+    // quarter to a third of its cores), Embree's CPU time per frame differenced this way agreed
+    // within 2-5% over three rounds at 512x512, and the run of no timed frames took one frame's
+    // CPU time and 0-10 ms more: the start-up is small, the differencing steady. At tiny sizes
+    // it is not: the start-up's 5 ms of CPU time varied by 0.5 ms from run to run, more than a
+    // 24x16 frame takes.
+    const auto run = [&](int timedFrames) {
+        std::vector<std::string> argv = commandLine(job, spp);
+        for (const std::string& a : {std::string("--benchmark"), std::string("1"),
+                                     std::to_string(timedFrames), std::string("--legacy")})
+            argv.push_back(a);
+        return runOrThrow(argv);
+    };
+    const ChildRun start = run(0);
+    const ChildRun timed = run(frames);
+
+    // "BENCHMARK_RENDER_MAX 3.7026": frames per second of the fastest frame; _AVG of their mean.
+    PathtracerSpeed speed;
+    std::istringstream lines(timed.output);
     for (std::string line; std::getline(lines, line);) {
         std::istringstream words(line);
         std::string key;
         double fps = 0;
-        if (words >> key >> fps && key == "BENCHMARK_RENDER_MAX")
-            return fps * job.width * job.height * spp;
+        if (!(words >> key >> fps)) continue;
+        if (key == "BENCHMARK_RENDER_MAX")
+            speed.samplesPerSecond = fps * job.width * job.height * spp;
+        if (key == "BENCHMARK_RENDER_AVG") speed.framesPerSecond = fps;
     }
-    throw std::runtime_error(job.program + " printed no BENCHMARK_RENDER_MAX line");
+    if (!(speed.samplesPerSecond > 0))
+        throw std::runtime_error(job.program + " printed no BENCHMARK_RENDER_MAX line");
+    speed.startCpuSeconds = start.cpuSeconds;
+    speed.cpuSecondsPerFrame = (timed.cpuSeconds - start.cpuSeconds) / frames;
+    // The start-up's variation (a tenth of it, as above) over the timed frames' CPU time is the
+    // figure's error: frames of at least four times the start-up keep it to a few percent.
+    constexpr double LeastFramesPerStartUp = 4;
+    const double framesCpuSeconds = speed.cpuSecondsPerFrame * frames;
+    if (framesCpuSeconds > 0 &&
+        framesCpuSeconds >= LeastFramesPerStartUp * speed.startUpCpuSeconds())
+        speed.samplesPerCpuSecond =
+            static_cast<double>(job.width) * job.height * spp / speed.cpuSecondsPerFrame;
+    return speed;
 }
 
 std::vector<float> pathtracerImage(const PathtracerJob& job, int spp, const std::string& folder) {

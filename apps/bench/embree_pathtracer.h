@@ -9,6 +9,7 @@
 
 #include "bench_scene.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -23,10 +24,27 @@ struct PathtracerJob {
     int threads;
 };
 
-/// Samples per second of its fastest frame of `spp` samples per pixel, out of `frames` frames
-/// after one warm-up frame (its --benchmark mode, which times frames the same way PathLab's
-/// benchmark times passes). Throws std::runtime_error if it fails.
-double pathtracerSamplesPerSecond(const PathtracerJob& job, int spp, int frames);
+/// Its speed at one number of samples per pixel, by both clocks.
+struct PathtracerSpeed {
+    double samplesPerSecond = 0; ///< of its fastest frame, as it times frames itself
+    double framesPerSecond = 0;  ///< its frames' mean rate, for the share of its cores it had
+    /// Its whole process's CPU time (user and system) per frame: the CPU time of a run of
+    /// `frames` frames less that of a run of none, over `frames`. The runs' start-up (loading,
+    /// Embree's BVH build, threads starting, the warm-up frame) cancels.
+    double cpuSecondsPerFrame = 0;
+    double startCpuSeconds = 0; ///< the run of no frames: start-up and the warm-up frame
+    /// 0 when the timed frames took too little CPU time beside the start-up's to be told apart
+    /// from its variation (less than four times it).
+    double samplesPerCpuSecond = 0;
+
+    /// The start-up alone: the run of no frames less its warm-up frame.
+    double startUpCpuSeconds() const { return std::max(0.0, startCpuSeconds - cpuSecondsPerFrame); }
+};
+
+/// Its speed for frames of `spp` samples per pixel: `frames` frames after one warm-up frame (its
+/// --benchmark mode, which times frames as PathLab's benchmark times passes), and its CPU time
+/// from that run and one of the warm-up frame alone. Throws std::runtime_error if it fails.
+PathtracerSpeed pathtracerSpeed(const PathtracerJob& job, int spp, int frames);
 
 /// Its image at `spp` samples per pixel as it writes it (values k/255), RGB, row-major.
 /// `folder` receives the temporary image file. Throws std::runtime_error if it fails.

@@ -27,22 +27,42 @@ Camera sceneCamera(const RenderScene& scene, int width, int height);
 RenderJob solutionJob(const RenderScene& scene, const Camera& camera, Lab lab,
                       const LabParameters& parameters, int width, int height);
 
-/// The fastest timed pass.
+/// Which of the timed passes counts.
+enum class PassChoice {
+    LeastCpuTime,  ///< speed: the work of a pass, which other programs on the machine change little
+    LeastWallTime, ///< waiting: how soon a pass is done (thread scaling, tile sizes)
+};
+
+/// The timed pass that counts, by both clocks.
 struct RenderTiming {
-    double seconds = 0;    ///< of that pass
+    double seconds = 0;    ///< wall time of that pass
+    double cpuSeconds = 0; ///< the render threads' CPU time in that pass (Renderer::cpuSeconds)
+    /// The whole process's CPU time in that pass: comparable with another program's CPU time.
+    double processCpuSeconds = 0;
+    int threads = 0;
     long long samples = 0; ///< of that pass: width × height × spp
     RayCounters rays;      ///< of that pass
 
-    double samplesPerSecond() const { return seconds > 0 ? samples / seconds : 0; }
-    double intersectPerSecond() const { return seconds > 0 ? rays.intersect / seconds : 0; }
-    double occludedPerSecond() const { return seconds > 0 ? rays.occluded / seconds : 0; }
-    double raysPerSecond() const { return seconds > 0 ? rays.total() / seconds : 0; }
+    double samplesPerSecond() const { return perSecond(samples, seconds); }
+    double intersectPerSecond() const { return perSecond(rays.intersect, seconds); }
+    double occludedPerSecond() const { return perSecond(rays.occluded, seconds); }
+    double raysPerSecond() const { return perSecond(rays.total(), seconds); }
+    double samplesPerCpuSecond() const { return perSecond(samples, cpuSeconds); }
+    double intersectPerCpuSecond() const { return perSecond(rays.intersect, cpuSeconds); }
+    double occludedPerCpuSecond() const { return perSecond(rays.occluded, cpuSeconds); }
+    double raysPerCpuSecond() const { return perSecond(rays.total(), cpuSeconds); }
+
+    static double perSecond(double count, double seconds) {
+        return seconds > 0 ? count / seconds : 0;
+    }
 };
 
 /// One warm-up pass, then `passes` timed passes of `spp` samples per pixel with `threads`
-/// threads, each added to the same image as the viewer's window does; the fastest pass counts.
+/// threads, each added to the same image as the viewer's window does; the pass with the least
+/// time by `choice`'s clock counts.
 RenderTiming timeRender(const RenderJob& job, int spp, int passes, int threads,
-                        int tileSize = Renderer::TileSize);
+                        int tileSize = Renderer::TileSize,
+                        PassChoice choice = PassChoice::LeastCpuTime);
 
 /// The rays of one pass of one sample per pixel, in the order they were traced.
 RayLog recordRays(const RenderJob& job, int threads);

@@ -28,7 +28,7 @@ template <typename F> double fastestSeconds(int repeats, const F& f) {
 double ScalingFigures::handOffShare(int threads) const {
     const auto at = [&](int t) {
         for (const Point& p : byThreads)
-            if (p.value == t) return p.samplesPerSecond;
+            if (p.value == t) return p.samplesPerSecond();
         return 0.0;
     };
     const double one = at(1), measured = at(tileThreads);
@@ -55,12 +55,12 @@ ScalingFigures measureScaling(const BenchScene& benchScene, const SceneSettings&
     f.passes = settings.passes;
     f.tileThreads = cores;
     std::set<int> threadCounts = {1, 2, 4, 8, cores};
+    const PassChoice fastest = PassChoice::LeastWallTime;
     for (int threads : threadCounts)
         f.byThreads.push_back(
-            {threads, timeRender(job, 1, settings.passes, threads).samplesPerSecond()});
+            {threads, timeRender(job, 1, settings.passes, threads, Renderer::TileSize, fastest)});
     for (int tile : {8, 16, 32, 64})
-        f.byTileSize.push_back(
-            {tile, timeRender(job, 1, settings.passes, cores, tile).samplesPerSecond()});
+        f.byTileSize.push_back({tile, timeRender(job, 1, settings.passes, cores, tile, fastest)});
 
     // The hand-off as the window's render thread does it, on an image of two passes.
     AccumulationBuffer image(settings.width, settings.height);

@@ -1,7 +1,8 @@
 #pragma once
 /// How the renderer would scale past this machine's cores, from what can be measured on it: one
 /// solution at 1 thread up to more threads than cores, at several tile sizes, and the serial
-/// work the window's render thread does between two frames' passes.
+/// work the window's render thread does between two frames' passes. By wall-clock time: scaling
+/// is about how soon a pass is done.
 
 #include "bench_scene.h"
 #include "scene_measurement.h"
@@ -16,8 +17,10 @@ struct ScalingFigures {
     Lab lab = Lab::Roulette;
     int width = 0, height = 0, passes = 0;
     struct Point {
-        int value;               ///< threads, or pixels per tile side
-        double samplesPerSecond; ///< of 1-spp passes, the fastest
+        int value;           ///< threads, or pixels per tile side
+        RenderTiming timing; ///< the fastest of the 1-spp passes by wall-clock time
+
+        double samplesPerSecond() const { return timing.samplesPerSecond(); }
     };
     std::vector<Point> byThreads;  ///< at the default tile size
     int tileThreads = 0;           ///< the threads of byTileSize

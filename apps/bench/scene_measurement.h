@@ -16,13 +16,23 @@ struct SolutionFigures {
     RenderTiming render, renderOneThread;
     TraversalTimes raw, rawOneThread; ///< Embree alone on the rays this solution traced
 
-    /// The rays/s achieved over Embree's raw rate for the same mix of rays: the share of the
-    /// render's time that is Embree's traversal.
-    double efficiency() const { return ratio(render.raysPerSecond(), raw.mixRate()); }
+    /// The render's rays per CPU-second over Embree's alone per CPU-second on the same rays: the
+    /// share of the render's time that is Embree's traversal. By CPU time, which other programs
+    /// on the machine change little.
+    double efficiency() const {
+        return ratio(render.raysPerCpuSecond(), raw.mixRatePerCpuSecond());
+    }
     double efficiencyOneThread() const {
+        return ratio(renderOneThread.raysPerCpuSecond(), rawOneThread.mixRatePerCpuSecond());
+    }
+    /// The same share by wall-clock time: near efficiency() on an idle machine; on a busy one it
+    /// moves with the load during each of the two runs it divides.
+    double wallClockEfficiency() const { return ratio(render.raysPerSecond(), raw.mixRate()); }
+    double wallClockEfficiencyOneThread() const {
         return ratio(renderOneThread.raysPerSecond(), rawOneThread.mixRate());
     }
-    /// Samples/s with all threads over samples/s with one.
+    /// Samples/s with all threads over samples/s with one: wall-clock time, as scaling is about
+    /// how soon an image is done.
     double scaling() const {
         return ratio(render.samplesPerSecond(), renderOneThread.samplesPerSecond());
     }

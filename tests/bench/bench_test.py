@@ -2,7 +2,8 @@
 """Tests of the benchmark (apps/bench), ctest label `bench`. They check what it measures, never
 how fast anything is.
 
-  bench_test.py smoke BENCH      bench runs at a tiny size; its JSON parses with every field
+  bench_test.py smoke BENCH      bench runs at a tiny size; its JSON parses with every field,
+                                 the figures per CPU-second beside those per second of wall time
   bench_test.py agreement BENCH  PathLab's importance solution and Embree's own pathtracer give
                                  Embree's Cornell box the same mean radiance, at each path length
                                  the bench compares (2, 4 and 8); skipped (exit 77) when Embree's
@@ -42,6 +43,28 @@ def positive(value, what):
         sys.exit(f"{what} should be a positive number, is {value!r}")
 
 
+def share(value, per_thread, what):
+    """A share of the cores the timed threads had: above 0 (0 would mean the CPU time was not
+    measured), and with per-thread clocks at most 1 but for the clocks' rounding. The process's
+    clock (the fallback) counts every thread of the process, TBB's idle ones too, which over a
+    tiny pass can be more than the pass's own threads."""
+    limit = 1.05 if per_thread else math.inf
+    if not (isinstance(value, (int, float)) and math.isfinite(value) and 0 < value <= limit):
+        sys.exit(f"{what} should be a share of the cores in (0, {limit}], is {value!r}")
+
+
+def efficiency(value, what):
+    """The share of a render's time that is Embree's traversal: above 0, and not far above 1 (a
+    render cannot trace its rays faster than Embree alone, but for the spread of two timings)."""
+    if not (isinstance(value, (int, float)) and math.isfinite(value) and 0 < value <= 1.5):
+        sys.exit(f"{what} should be in (0, 1.5], is {value!r}")
+
+
+def note(value, what):
+    if not isinstance(value, str):
+        sys.exit(f"{what} should be text (empty when the machine was not busy), is {value!r}")
+
+
 def rgb(value, what):
     if not (isinstance(value, list) and len(value) == 3 and
             all(isinstance(c, (int, float)) and math.isfinite(c) for c in value)):
@@ -53,7 +76,9 @@ def smoke(bench):
     with tempfile.TemporaryDirectory() as folder:
         report, table = run_bench(bench, [
             "--size", "24", "16", "--spp", "1", "--passes", "1", "--threads", "2",
-            "--peer-spp", "1", "--peer-image-spp", "2",
+            # Frames of 512 spp take Embree tens of milliseconds of CPU time, well above its
+            # start-up's 5 ms: enough to difference (embree_pathtracer.cpp).
+            "--peer-spp", "512", "--peer-image-spp", "2",
             "--memory-size", "32", "32", "--memory-frames", "2", "--first-frame-runs", "1"],
             folder)
 
@@ -70,6 +95,9 @@ def smoke(bench):
         for threads in ("one_thread", "threads"):
             for kind in ("camera", "closest_hit", "occlusion"):
                 positive(scene["raw"][threads][kind], f"{name} raw {threads} {kind} rays/s")
+                positive(scene["raw"][threads][f"{kind}_per_cpu_second"],
+                         f"{name} raw {threads} {kind} rays per CPU-second")
+        note(scene["busy_note"], f"{name} busy note")
         labs = [s["lab"] for s in scene["solutions"]]
         if labs != ["branching", "uniform", "importance", "roulette"]:
             sys.exit(f"{name}: solutions {labs}")
@@ -80,10 +108,23 @@ def smoke(bench):
                 positive(figures["samples_per_second"], f"{what} {threads} samples/s")
                 positive(figures["rays_per_second"]["intersect"], f"{what} {threads} intersect/s")
                 positive(figures["raw_mix_rays_per_second"], f"{what} {threads} raw mix rays/s")
-                positive(figures["efficiency"], f"{what} {threads} efficiency")
+                positive(figures["samples_per_cpu_second"], f"{what} {threads} samples/CPU-s")
+                for kind in ("intersect", "occluded", "total"):
+                    positive(figures["rays_per_cpu_second"][kind],
+                             f"{what} {threads} {kind} rays/CPU-s")
+                positive(figures["raw_mix_rays_per_cpu_second"],
+                         f"{what} {threads} raw mix rays/CPU-s")
+                share(figures["cpu_share"], report["cpu_clock"] == "per-thread",
+                      f"{what} {threads} CPU share")
+                efficiency(figures["efficiency"], f"{what} {threads} efficiency (CPU time)")
+                positive(figures["efficiency_wall"], f"{what} {threads} efficiency (wall clock)")
+                check_cpu_figures(figures, 1 if threads == "one_thread" else scene["threads"],
+                                  f"{what} {threads}")
             positive(s["scaling"], f"{what} scaling")
             if s["efficiency"] != s["threads"]["efficiency"]:
                 sys.exit(f"{what}: the headline efficiency is not the all-threads one")
+            if s["efficiency_wall"] != s["threads"]["efficiency_wall"]:
+                sys.exit(f"{what}: the headline wall-clock efficiency is not the all-threads one")
 
     peers = report["embree_pathtracer"]
     if [p["max_path_length"] for p in peers] != PATH_LENGTHS:
@@ -103,7 +144,8 @@ def smoke(bench):
         sys.exit("the first-frame latency was not measured and says not why")
 
     scaling = report["scaling"]
-    if len(scaling) != 1 or "\nScaling: roulette solution" not in table:
+    if (len(scaling) != 1 or
+            "\nScaling (wall clock: how soon a pass is done): roulette solution" not in table):
         sys.exit(f"no scaling figures: {scaling}\n{table}")
     threads = [p["threads"] for p in scaling[0]["by_threads"]]
     if threads[:4] != [1, 2, 4, 8]:
@@ -113,9 +155,16 @@ def smoke(bench):
         sys.exit(f"tile sizes measured: {scaling[0]['by_tile_size']}")
     for p in scaling[0]["by_threads"] + scaling[0]["by_tile_size"]:
         positive(p["samples_per_second"], f"scaling samples/s at {p}")
+    note(scaling[0]["busy_note"], "the scaling's busy note")
     positive(scaling[0]["hand_off_ms"], "the window's hand-off between frames")
     if not 0 < scaling[0]["hand_off_share"] <= scaling[0]["hand_off_share_at_64_threads"] < 1:
         sys.exit(f"the hand-off's share should grow with threads: {scaling[0]}")
+
+    if report["cpu_clock"] != "per-thread" and not report["cpu_clock"].startswith("process"):
+        sys.exit(f"cpu_clock: {report['cpu_clock']!r}")
+    for heading in ("per CPU-second", "wall clock", "Scaling (wall clock"):
+        if heading not in table:
+            sys.exit(f"no table says '{heading}':\n{table}")
 
     memory = report["memory"]
     if not memory["measured"]:
@@ -123,6 +172,26 @@ def smoke(bench):
     positive(memory["peak_mib"], "peak memory")
     keeps_earlier_json_on_failure(bench)
     print(f"bench ran; {len(scenes)} scene(s); JSON complete; a failed run keeps the earlier JSON")
+
+
+def check_cpu_figures(figures, threads, what):
+    """A pass's figures per CPU-second and per second are of the same samples and rays: their
+    ratios are all the one share of the cores the threads had, and the efficiency by CPU time
+    is the render's rays per CPU-second over Embree's alone."""
+    cores = min(threads, len(os.sched_getaffinity(0)))
+    cpu_seconds_per_second = figures["samples_per_second"] / figures["samples_per_cpu_second"]
+    for kind in ("intersect", "occluded", "total"):
+        ratio = figures["rays_per_second"][kind] / figures["rays_per_cpu_second"][kind]
+        if not math.isclose(ratio, cpu_seconds_per_second, rel_tol=1e-9):
+            sys.exit(f"{what}: {kind} rays and samples are not of one pass: {figures}")
+    if not math.isclose(cpu_seconds_per_second / cores, figures["cpu_share"], rel_tol=1e-9):
+        sys.exit(f"{what}: the CPU share is not CPU time over wall time x cores: {figures}")
+    expected = figures["rays_per_cpu_second"]["total"] / figures["raw_mix_rays_per_cpu_second"]
+    if not math.isclose(figures["efficiency"], expected, rel_tol=1e-9):
+        sys.exit(f"{what}: the efficiency is not by CPU time: {figures}")
+    expected = figures["rays_per_second"]["total"] / figures["raw_mix_rays_per_second"]
+    if not math.isclose(figures["efficiency_wall"], expected, rel_tol=1e-9):
+        sys.exit(f"{what}: efficiency_wall is not by wall-clock time: {figures}")
 
 
 def keeps_earlier_json_on_failure(bench):
@@ -163,6 +232,34 @@ def check_peer(peer, table):
         positive(peer["embree_samples_per_second"], "Embree pathtracer samples/s")
         positive(peer["ours_samples_per_second"], "PathLab samples/s on Embree's box")
         positive(peer["ratio"], "PathLab / Embree")
+        if peer["cpu_note"]:
+            sys.exit(f"no CPU-time comparison at path length {peer['max_path_length']}: "
+                     f"{peer['cpu_note']}")
+        positive(peer["embree_samples_per_cpu_second"], "Embree pathtracer samples per CPU-second")
+        positive(peer["ours_samples_per_cpu_second"], "PathLab samples per CPU-second")
+        positive(peer["cpu_ratio"], "PathLab / Embree by CPU time")
+        if not math.isclose(peer["cpu_ratio"], peer["ours_samples_per_cpu_second"] /
+                            peer["embree_samples_per_cpu_second"], rel_tol=1e-9):
+            sys.exit(f"cpu_ratio is not PathLab's samples per CPU-second over Embree's: {peer}")
+        rounds = peer["embree_cpu_seconds_per_frame"]
+        if len(rounds) != peer["rounds"]:
+            sys.exit(f"Embree's CPU time per frame of {len(rounds)} rounds, not {peer['rounds']}")
+        for seconds in rounds:
+            positive(seconds, "Embree's CPU time per frame (two runs differenced)")
+        # Of the best round whose frames took enough CPU time beside the start-up's to be
+        # differenced: not always the round of least CPU time per frame.
+        samples = peer["width"] * peer["height"] * peer["spp"]
+        if not any(math.isclose(peer["embree_samples_per_cpu_second"], samples / seconds,
+                                rel_tol=1e-9) for seconds in rounds):
+            sys.exit(f"Embree's samples per CPU-second are not of one of its rounds: {peer}")
+        positive(peer["embree_start_cpu_seconds"], "Embree's start-up CPU time")
+        # Whole processes' CPU time over frames' wall time: work between frames can take the
+        # share above 1, so only its presence is checked.
+        positive(peer["embree_cpu_share"], "Embree's pathtracer's CPU share")
+        positive(peer["ours_cpu_share"], "PathLab's CPU share beside Embree's pathtracer")
+        note(peer["busy_note"], "the comparison's busy note")
+        if "samples per CPU-second" not in table:
+            sys.exit(f"the comparison with Embree's pathtracer is not by CPU time:\n{table}")
         if peer["max_path_length"] != peer["max_depth"] + 1:
             sys.exit(f"path length {peer['max_path_length']} != max-depth {peer['max_depth']} + 1")
         rgb(peer["mean_radiance"]["embree"], "Embree's mean radiance")

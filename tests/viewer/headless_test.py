@@ -13,7 +13,11 @@ named after its mutant. Each check prints PASS/FAIL; the script exits non-zero i
 - A lab that returns NaN (the mutant roulette_nan): the NaN warning comes before the render's
   figures, which give no noise or efficiency as if they meant something.
 - On a terminal a render draws a progress line (bar, percentage, time left); in a pipe, nothing.
+- The render threads' CPU time: per-thread clocks by default, samples per CPU-second agreeing
+  with the samples and that time; where a platform has no per-thread clock (PATHLAB_CPU_CLOCK=
+  process stands in for one), the process's clock, said in one line and in --stats.
 """
+import json
 import os
 import pty
 import re
@@ -125,8 +129,39 @@ def progress_line_on_terminals_only(tmp):
           f"in a pipe it draws nothing (stderr {run.stderr[:160]!r})")
 
 
+def render_with_stats(tmp, name, env=None):
+    """A render of about a second of CPU time on one thread: (the run, its --stats)."""
+    stats = os.path.join(tmp, name + ".json")
+    run = subprocess.run([VIEWER, "-c", SCENE, "--lab", "importance", "--solution", "--size", "96",
+                          "96", "--spp", "96", "--threads", "1", "-o", os.path.join(tmp, name + ".pfm"),
+                          "--stats", stats], capture_output=True, text=True, timeout=300,
+                         env=dict(os.environ, **(env or {})))
+    return run, json.load(open(stats)) if run.returncode == 0 else {}
+
+
+def cpu_time_and_its_fallback(tmp):
+    run, s = render_with_stats(tmp, "cpu")
+    samples = s.get("spp", 0) * s.get("width", 0) * s.get("height", 0)
+    check(run.returncode == 0 and s.get("cpu_clock") == "per-thread" and s["cpu_seconds"] > 0
+          and abs(s["samples_per_cpu_second"] - samples / s["cpu_seconds"]) <= 1e-6 * samples / s["cpu_seconds"]
+          and 0 < s["cpu_share"] <= 1.2 and not s.get("cpu_note"),
+          f"--stats has the render threads' CPU time from per-thread clocks, and samples per "
+          f"CPU-second of it ({ {k: v for k, v in s.items() if k.startswith('cpu') or 'per_cpu' in k} })")
+    check("s of CPU time)" in run.stdout and "samples per CPU-second" in run.stdout
+          and "CPU time from the process" not in run.stdout,
+          f"the headless line says the CPU time and samples per CPU-second: {run.stdout.strip()[:240]!r}")
+    run, s = render_with_stats(tmp, "process", {"PATHLAB_CPU_CLOCK": "process"})
+    said = [line for line in run.stdout.splitlines() if "CPU time from the process" in line]
+    check(run.returncode == 0 and s.get("cpu_clock", "").startswith("process (no per-thread CPU clock here")
+          and s["cpu_seconds"] > 0 and s["samples_per_cpu_second"] > 0 and len(said) == 1
+          and "CPU time from the process" in s.get("cpu_note", ""),
+          f"without per-thread clocks, the process's clock, said in one line and in --stats: "
+          f"{said!r}, {s.get('cpu_clock', '')[:60]!r}")
+
+
 def main():
     with tempfile.TemporaryDirectory() as tmp:
+        cpu_time_and_its_fallback(tmp)
         endless_loop_is_stopped(tmp)
         watchdog_leaves_images_alone(tmp)
         nan_warning_comes_first(tmp)
