@@ -13,9 +13,13 @@
 using namespace pathlab;
 using namespace pathlab::grader;
 
-// A named rubric rather than a temporary in each call: GCC 12 at -O3 warns, wrongly, that a
-// temporary Rubric's strings may be used uninitialized, and CI builds with warnings as errors.
-static const Rubric kitRubric{};
+// The rubric's defaults, default-initialized once: GCC 12 at -O3 warns, wrongly, that an
+// aggregate-initialized Rubric's strings (Rubric{}) may be used uninitialized, and CI builds
+// with warnings as errors.
+static const Rubric& defaultRubric() {
+    static Rubric rubric;
+    return rubric;
+}
 
 TEST_CASE("make report keeps what the student wrote under What I observed", "[grader]") {
     const std::string dir = test::temporaryFolder("lab-report");
@@ -23,7 +27,7 @@ TEST_CASE("make report keeps what the student wrote under What I observed", "[gr
     CHECK(observationsIn(path).empty()); // no report yet
 
     // First report: the prompt, which is nobody's notes.
-    const std::string first = labReport(GradeReport{}, kitRubric, LabFigures{}, std::nullopt, "");
+    const std::string first = labReport(GradeReport{}, defaultRubric(), LabFigures{}, std::nullopt, "");
     std::ofstream(path) << first;
     CHECK(first.find("## What I observed\n\n<!--") != std::string::npos);
     CHECK(observationsIn(path).empty());
@@ -35,7 +39,7 @@ TEST_CASE("make report keeps what the student wrote under What I observed", "[gr
     CHECK(notes.find("Lab 2 is noisier: it traces a bounce one time in three.\n") !=
           std::string::npos);
     const std::string second =
-        labReport(GradeReport{}, kitRubric, LabFigures{}, std::nullopt, notes);
+        labReport(GradeReport{}, defaultRubric(), LabFigures{}, std::nullopt, notes);
     std::ofstream(path) << second;
     CHECK(observationsIn(path) == notes);
 }
@@ -71,7 +75,7 @@ TEST_CASE("the lab report compares small efficiencies and lab 4's noise at 64 an
                       {"roulette_graded", figures(1.24, 0.382, 0.191)}};
     theirs.notebook = yours.notebook;
     theirs.notebook["roulette"].efficiency = 0.0118;
-    const std::string md = labReport(branchingAndRoulette(), kitRubric, yours, theirs, "");
+    const std::string md = labReport(branchingAndRoulette(), defaultRubric(), yours, theirs, "");
     // Efficiency ÷ lab 1's: 0.0236/2.53 and 0.0118/2.53, which two decimals both made 0.01.
     CHECK(md.find("| 0.00933 | 0.00466 |") != std::string::npos);
     CHECK(md.find("## Lab 4: the noise at 64 and at 256 spp") != std::string::npos);
@@ -83,7 +87,7 @@ TEST_CASE("the lab report compares small efficiencies and lab 4's noise at 64 an
 
     // A reference stored before lab_figures.json had the late noise: says how to get it.
     theirs.notebook["roulette"].noiseLate = 0;
-    const std::string older = labReport(branchingAndRoulette(), kitRubric, yours, theirs, "");
+    const std::string older = labReport(branchingAndRoulette(), defaultRubric(), yours, theirs, "");
     CHECK(older.find("not stored (grader make-references --only-figures)") != std::string::npos);
 }
 
@@ -97,7 +101,7 @@ TEST_CASE("the lab report's ratios are of CPU-time figures, and it says when the
     // that a busy machine held to lab 1's.
     yours.notebook["roulette"].samplesPerCpuSecond = 2e6;
     yours.notebook["roulette"].notes = {"the machine was busy: the render threads had 31%"};
-    const std::string md = labReport(branchingAndRoulette(), kitRubric, yours, yours, "");
+    const std::string md = labReport(branchingAndRoulette(), defaultRubric(), yours, yours, "");
     CHECK(md.find("| samples per CPU-second ÷ lab 1's: yours | reference |") != std::string::npos);
     CHECK(md.find("| roulette, continueProb 0.1 (lab 4's default) | 4.00 | 4.00 |") !=
           std::string::npos);
@@ -116,7 +120,7 @@ TEST_CASE("the lab report names a speed at risk and its cause", "[grader]") {
     speed.details = {"traces 1.7× the bounce rays of the lab's estimator: a black component "
                      "traced?"};
     report.labs[0].checks = {CheckResult{}, CheckResult{}, speed};
-    const std::string md = labReport(report, kitRubric, LabFigures{}, std::nullopt, "");
+    const std::string md = labReport(report, defaultRubric(), LabFigures{}, std::nullopt, "");
     CHECK(md.find("(+2 speed: graded by the instructor; **at risk**)") != std::string::npos);
     CHECK(md.find("graded by the instructor: **at risk** (below)") != std::string::npos);
     CHECK(md.find("**branching, speed:** at risk: your lab would likely lose these points\n- "
@@ -147,7 +151,7 @@ TEST_CASE("the lab report shows the plots make sweep wrote, linked from the repo
     CHECK(findSweeps(dir + "/nowhere", dir).empty());
 
     const std::string md =
-        labReport(branchingAndRoulette(), kitRubric, LabFigures{}, std::nullopt, "", found);
+        labReport(branchingAndRoulette(), defaultRubric(), LabFigures{}, std::nullopt, "", found);
     CHECK(md.find("### roulette: continueProb\n") != std::string::npos);
     CHECK(md.find("![roulette: samples per CPU-second, noise and efficiency against "
                   "continueProb](build/sweep/roulette-continue-prob/sweep.png)") !=
@@ -162,7 +166,7 @@ TEST_CASE("the lab report shows make convergence's plot when there is one", "[gr
     const std::string folder = dir + "/build/convergence";
     CHECK(findConvergencePlot(folder, dir).empty());
     const std::string without =
-        labReport(branchingAndRoulette(), kitRubric, LabFigures{}, std::nullopt, "", {});
+        labReport(branchingAndRoulette(), defaultRubric(), LabFigures{}, std::nullopt, "", {});
     CHECK(without.find("make convergence") == std::string::npos);
 
     std::filesystem::create_directories(folder);
@@ -172,7 +176,7 @@ TEST_CASE("the lab report shows make convergence's plot when there is one", "[gr
     const std::string plot = findConvergencePlot(folder, dir);
     CHECK(plot == "build/convergence/convergence.png");
     const std::string md =
-        labReport(branchingAndRoulette(), kitRubric, LabFigures{}, std::nullopt, "", {}, plot);
+        labReport(branchingAndRoulette(), defaultRubric(), LabFigures{}, std::nullopt, "", {}, plot);
     CHECK(md.find("No sweep run yet") != std::string::npos);
     CHECK(md.find("### Error against render time\n\n![the relative RMSE of my four labs against "
                   "render time](build/convergence/convergence.png)") != std::string::npos);
