@@ -27,7 +27,8 @@ TEST_CASE("make report keeps what the student wrote under What I observed", "[gr
     CHECK(observationsIn(path).empty()); // no report yet
 
     // First report: the prompt, which is nobody's notes.
-    const std::string first = labReport(GradeReport{}, defaultRubric(), LabFigures{}, std::nullopt, "");
+    const std::string first =
+        labReport(GradeReport{}, defaultRubric(), LabFigures{}, std::nullopt, "");
     std::ofstream(path) << first;
     CHECK(first.find("## What I observed\n\n<!--") != std::string::npos);
     CHECK(observationsIn(path).empty());
@@ -175,8 +176,8 @@ TEST_CASE("the lab report shows make convergence's plot when there is one", "[gr
     std::ofstream(folder + "/convergence.csv") << "lab,label\n";
     const std::string plot = findConvergencePlot(folder, dir);
     CHECK(plot == "build/convergence/convergence.png");
-    const std::string md =
-        labReport(branchingAndRoulette(), defaultRubric(), LabFigures{}, std::nullopt, "", {}, plot);
+    const std::string md = labReport(branchingAndRoulette(), defaultRubric(), LabFigures{},
+                                     std::nullopt, "", {}, plot);
     CHECK(md.find("No sweep run yet") != std::string::npos);
     CHECK(md.find("### Error against render time\n\n![the relative RMSE of my four labs against "
                   "render time](build/convergence/convergence.png)") != std::string::npos);
