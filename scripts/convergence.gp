@@ -1,15 +1,17 @@
-# make convergence's plot (scripts/convergence.py): relative RMSE against render time, log-log,
-# one curve per lab, the handout's curves of the reference solutions beside them, dashed, and the
-# slope -1/2 line. Variables (gnuplot -e): data (convergence.csv), handout (handout.csv, or ''),
-# out (PNG), width and height (its pixels), title, yours (whose labs), guide (k of k/sqrt(t)).
-# Both CSVs have the columns lab, label, reference, spp, seconds, seconds_256 (6),
-# samples_per_second, relative_rmse (8), ...
+# make convergence's plot (scripts/convergence.py): relative RMSE against CPU time of rendering,
+# log-log, one curve per lab, the handout's curves of the reference solutions beside them, dashed,
+# and the slope -1/2 line. CPU time (the render threads', summed over them) because other programs
+# on the machine change it little, where they stretch the wall clock's seconds several-fold.
+# Variables (gnuplot -e): data (convergence.csv), handout (handout.csv, or ''), out (PNG), width
+# and height (its pixels), title, yours (whose labs), guide (k of k/sqrt(t)).
+# Both CSVs have the columns lab, label, reference, spp, cpu_seconds, cpu_seconds_256 (6),
+# samples_per_cpu_second, relative_rmse (8), ...
 set terminal pngcairo size width,height font "sans,11"
 set output out
 set datafile separator ","
 set key inside top right opaque box font "sans,9"
 set logscale xy
-set xlabel "render time (s), scaled to 256x256 pixels"
+set xlabel "CPU time of rendering (s, summed over the render threads), scaled to 256x256 pixels"
 set ylabel "relative RMSE: RMSE / the reference's mean radiance"
 set grid xtics ytics mxtics mytics lc rgb "#dddddd"
 set title title."\n(labs 1-3 against the depth-limited image, lab 4 against the unbiased one; dashed: the handout)" font "sans,11"

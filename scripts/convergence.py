@@ -13,14 +13,20 @@ release too: 64x64 pixels, 40 seeds x 128 spp): labs 1-3 against the depth-limit
 plot (handouts/figures/convergence.png) measures them. Writes, into BUILD/convergence/ (printed
 at the end):
 
-  convergence.csv   one row per lab and spp (the columns: COLUMNS below); seconds_256 is the
-                    render time scaled to 256x256 pixels, the handout's size, so that the two
-                    plots' time axes compare
+  convergence.csv   one row per lab and spp (the columns: COLUMNS below); cpu_seconds is the
+                    render threads' CPU time (--stats), summed over them, and cpu_seconds_256
+                    that time scaled to 256x256 pixels, the handout's size, so that the two
+                    plots' time axes compare; the wall clock's seconds (and seconds_256) beside
   handout.csv       the handout's curves of the reference solutions (handouts/figures/
                     convergence.csv), in the same columns
-  convergence.png   relative RMSE against seconds_256, log-log: yours, the handout's beside
+  convergence.png   relative RMSE against cpu_seconds_256, log-log: yours, the handout's beside
                     them (dashed), and a slope -1/2 guide line
   renders/          each render's image and --stats file
+
+The time axis is CPU time because other programs on the machine change it little: on a busy
+laptop the wall clock's seconds stretch several-fold, and the curves would sit far to the right
+of the handout's for no fault of the labs. It is also the same whatever the number of threads.
+A render that found the machine busy (--stats' busy_note) is said at the end, in one line.
 
 The reference has its own noise (about that of 5000 spp): above some 500 spp it adds to the
 error measured. A sample's noise is higher at 64x64 than at the handout's 256x256 (about 1.5 times
@@ -48,8 +54,10 @@ DEFAULT_SPP = [4, 8, 16, 32, 64, 128, 256, 512]
 HANDOUT_PIXELS = 256 * 256
 GRADED_CONTINUE_PROB = 0.8
 PLOT_WIDTH, PLOT_HEIGHT = 900, 640
-COLUMNS = ["lab", "label", "reference", "spp", "seconds", "seconds_256", "samples_per_second",
-           "relative_rmse", "rel_mse", "noise"]
+# The plot reads cpu_seconds_256 (6) and relative_rmse (8); the wall clock's figures come last.
+COLUMNS = ["lab", "label", "reference", "spp", "cpu_seconds", "cpu_seconds_256",
+           "samples_per_cpu_second", "relative_rmse", "rel_mse", "noise", "seconds", "seconds_256",
+           "samples_per_second"]
 # The labs in the handouts' order, their words in the plot, and the handout's row of each.
 LABS = [("branching", "branching (lab 1)", "branching"),
         ("uniform", "uniform pick (lab 2)", "uniform"),
@@ -120,18 +128,21 @@ def render(viewer, lab, spp, solution, reference, size, folder):
 
 
 def row(lab, label, kind, stats):
-    pixels = stats["width"] * stats["height"]
+    scale = HANDOUT_PIXELS / (stats["width"] * stats["height"])
     return {"lab": lab, "label": label, "reference": kind, "spp": stats["spp"],
-            "seconds": f"{stats['seconds']:.4g}",
-            "seconds_256": f"{stats['seconds'] * HANDOUT_PIXELS / pixels:.4g}",
-            "samples_per_second": round(stats["samples_per_second"]),
+            "cpu_seconds": f"{stats['cpu_seconds']:.4g}",
+            "cpu_seconds_256": f"{stats['cpu_seconds'] * scale:.4g}",
+            "samples_per_cpu_second": round(stats["samples_per_cpu_second"]),
             "relative_rmse": f"{stats['reference']['relative_rmse']:.4g}",
             "rel_mse": f"{stats['reference']['rel_mse']:.4g}",
-            "noise": f"{stats['noise']:.4g}"}
+            "noise": f"{stats['noise']:.4g}",
+            "seconds": f"{stats['seconds']:.4g}",
+            "seconds_256": f"{stats['seconds'] * scale:.4g}",
+            "samples_per_second": round(stats["samples_per_second"])}
 
 
 def handout_rows():
-    """The handout's curves of the reference solutions, in this script's columns (its seconds
+    """The handout's curves of the reference solutions, in this script's columns (its times
     are already at 256x256)."""
     if not os.path.exists(HANDOUT_CSV):
         return []
@@ -143,9 +154,12 @@ def handout_rows():
                 continue
             lab, label = keys[r["estimator"]]
             rows.append({"lab": lab, "label": label, "reference": r["reference"],
-                         "spp": r["spp"], "seconds": r["seconds"], "seconds_256": r["seconds"],
-                         "samples_per_second": r["samples_per_second"],
-                         "relative_rmse": r["relative_rmse"], "rel_mse": "", "noise": r["noise"]})
+                         "spp": r["spp"], "cpu_seconds": r["cpu_seconds"],
+                         "cpu_seconds_256": r["cpu_seconds"],
+                         "samples_per_cpu_second": r["samples_per_cpu_second"],
+                         "relative_rmse": r["relative_rmse"], "rel_mse": "", "noise": r["noise"],
+                         "seconds": r["seconds"], "seconds_256": r["seconds"],
+                         "samples_per_second": r["samples_per_second"]})
     return rows
 
 
@@ -168,8 +182,8 @@ def write_csv(path, rows):
 
 def slope_guide(rows):
     """k of the guide line k / sqrt(t): under every curve, touching the lowest."""
-    products = [float(r["relative_rmse"]) * math.sqrt(float(r["seconds_256"])) for r in rows
-                if float(r["relative_rmse"]) > 0 and float(r["seconds_256"]) > 0]
+    products = [float(r["relative_rmse"]) * math.sqrt(float(r["cpu_seconds_256"])) for r in rows
+                if float(r["relative_rmse"]) > 0 and float(r["cpu_seconds_256"]) > 0]
     return 0.8 * min(products) if products else 0.1
 
 
@@ -178,7 +192,7 @@ def plot(folder, rows, has_handout, solution, size):
     variables = {"data": "convergence.csv", "handout": "handout.csv" if has_handout else "",
                  "out": "convergence.png", "width": PLOT_WIDTH, "height": PLOT_HEIGHT,
                  "yours": "solution here" if solution else "yours", "guide": slope_guide(rows),
-                 "title": f"VI2 Cornell box: error versus render time of {whose}, "
+                 "title": f"VI2 Cornell box: error versus CPU time of {whose}, "
                           f"{size[0]}x{size[1]} pixels"}
     definitions = "; ".join(f"{k}='{v}'" if isinstance(v, str) else f"{k}={v}"
                             for k, v in variables.items())
@@ -209,14 +223,22 @@ def run_study(viewer, spps, solution, out):
                   "their curves measure the labs as they are")
         print(f"make convergence: 4 labs at {' '.join(map(str, spps))} spp against the grader's "
               f"references", flush=True)
-        rows = []
+        rows, notes = [], []
         for lab, label, _ in LABS:
             reference, width, height = reference_image(kinds[lab])
             for spp in spps:
                 stats = render(viewer, lab, spp, solution, reference, (width, height), renders)
                 rows.append(row(lab, label, kinds[lab], stats))
-                print(f"  {lab} {spp} spp: {stats['seconds']:.3f} s, relative RMSE "
+                print(f"  {lab} {spp} spp: {stats['seconds']:.3f} s "
+                      f"({stats['cpu_seconds']:.3f} s of CPU time), relative RMSE "
                       f"{stats['reference']['relative_rmse']:.4g}", flush=True)
+                # One note per render (a busy machine before a CPU figure's own).
+                note = stats.get("busy_note") or stats.get("cpu_note")
+                if note:
+                    notes.append(note)
+        if notes:
+            print(f"make convergence: {notes[0]}"
+                  + (f" (and in {len(notes) - 1} more render(s))" if len(notes) > 1 else ""))
         write_csv(os.path.join(work, "convergence.csv"), rows)
         theirs = handout_rows()
         if theirs:

@@ -16,9 +16,12 @@ at SIZE×SIZE pixels and N samples per pixel, seed 0. PARAM is what the lab lets
 (each does nothing in the other labs, so asking for it there is refused). Writes, into
 BUILD/sweep/LAB-PARAM/ (printed at the end):
 
-  sweep.csv     one row per value (the columns: CSV_COLUMNS below)
-  sweep.png     frame rate, noise of one sample and efficiency against the value: yours, and
-                the handout's figures of the reference solution beside them
+  sweep.csv     one row per value (the columns: FIGURE_COLUMNS and RENDER_COLUMNS below)
+  sweep.png     samples per CPU-second, noise of one sample and efficiency against the value:
+                yours, and the handout's figures of the reference solution beside them. Speed
+                and efficiency are by CPU time (the render threads', from --stats), which other
+                programs on the machine change little: a busy laptop's wall-clock frame rates
+                can fall several times below the handout's and hide the shape to compare
   handout.csv   those handout figures, in the same columns (from handouts/figures/
                 roulette_sweep.csv or depth_sweep.csv, at this sweep's image size)
   renders/      each value's image and --stats file
@@ -44,10 +47,11 @@ PLOT = os.path.join(KIT, "scripts", "sweep.gp")
 DEFAULT_SIZE, DEFAULT_SPP = 256, 64
 # The plot's size in pixels (scripts/sweep.gp draws three panels side by side).
 PLOT_WIDTH, PLOT_HEIGHT = 1500, 480
-# After the parameter's own column, the same six figures as handout.csv, then the render's own.
-FIGURE_COLUMNS = ["samples_per_second", "frame_rate", "rays_per_sample", "noise_per_sample",
-                  "efficiency"]
-RENDER_COLUMNS = ["noise", "spp", "seconds", "width", "height"]
+# After the parameter's own column, the same figures as handout.csv (efficiency per CPU-second:
+# 1/(noise² × CPU seconds)), then the render's own, wall-clock ones among them.
+FIGURE_COLUMNS = ["samples_per_cpu_second", "rays_per_sample", "noise_per_sample", "efficiency"]
+RENDER_COLUMNS = ["noise", "spp", "cpu_seconds", "seconds", "samples_per_second", "frame_rate",
+                  "width", "height"]
 
 
 class UsageError(Exception):
@@ -222,40 +226,55 @@ def estimate_seconds(viewer, sweep, folder):
     return total
 
 
+def cpu_efficiency(stats):
+    """1/(noise² × CPU seconds): the efficiency by the work done, not by the wall clock."""
+    noise, cpu = stats["noise"], stats["cpu_seconds"]
+    return 1 / (noise * noise * cpu) if noise > 0 and cpu > 0 else 0
+
+
 def figures_row(stats, column, value):
     """One CSV row from a render's --stats."""
     pixels = stats["width"] * stats["height"]
     rays = stats["rays"]["intersect"] + stats["rays"]["occluded"]
     return {column: value,
-            "samples_per_second": round(stats["samples_per_second"]),
-            "frame_rate": f"{stats['samples_per_second'] / pixels:.4g}",
+            "samples_per_cpu_second": round(stats["samples_per_cpu_second"]),
             "rays_per_sample": f"{rays / (stats['spp'] * pixels):.4g}",
             "noise_per_sample": f"{stats['noise'] * math.sqrt(stats['spp']):.4g}",
-            "efficiency": f"{stats['efficiency']:.4g}",
+            "efficiency": f"{cpu_efficiency(stats):.4g}",
             "noise": f"{stats['noise']:.4g}", "spp": stats["spp"],
-            "seconds": f"{stats['seconds']:.4g}", "width": stats["width"],
-            "height": stats["height"]}
+            "cpu_seconds": f"{stats['cpu_seconds']:.4g}", "seconds": f"{stats['seconds']:.4g}",
+            "samples_per_second": round(stats["samples_per_second"]),
+            "frame_rate": f"{stats['samples_per_second'] / pixels:.4g}",
+            "width": stats["width"], "height": stats["height"]}
 
 
 def measure(viewer, sweep, folder, report=print):
     """Renders every value into FOLDER; returns the CSV rows."""
-    rows = []
+    rows, busy = [], []
     for value in sweep.values:
         stats = render(viewer, sweep, value, sweep.spp, folder, f"{value:g}")
         rows.append(figures_row(stats, sweep.parameter.column, value))
-        report(f"  {sweep.describe(value)}: {sweep.spp} spp in {stats['seconds']:.2f} s, "
-               f"{stats['samples_per_second'] / 1e6:.3g} M samples/s, noise {stats['noise']:.4g}, "
-               f"efficiency {stats['efficiency']:.3g}"
+        report(f"  {sweep.describe(value)}: {sweep.spp} spp in {stats['seconds']:.2f} s "
+               f"({stats['cpu_seconds']:.2f} s of CPU time), "
+               f"{stats['samples_per_cpu_second'] / 1e6:.3g} M samples per CPU-second, "
+               f"noise {stats['noise']:.4g}, efficiency {cpu_efficiency(stats):.3g}"
                + (f" ({stats['nonfinite_pixels']} NaN or infinite pixels left out)"
                   if stats.get("nonfinite_pixels") else ""))
+        # One note per render (a busy machine before a CPU figure's own), counted once each.
+        note = stats.get("busy_note") or stats.get("cpu_note")
+        if note:
+            busy.append(note)
+    if busy:
+        report(f"make sweep: {busy[0]}"
+               + (f" (and in {len(busy) - 1} more render(s))" if len(busy) > 1 else ""))
     return rows
 
 
 def handout_rows(sweep):
     """The reference solution's figures from the handouts, at this sweep's image size: a
-    render's efficiency 1/(noise² s) is samples/s ÷ (pixels × noise of one sample²), so it is
-    recomputed for these pixels from the handout's samples/s and noise of one sample. [] when
-    the handouts have none for this lab."""
+    render's efficiency 1/(noise² × CPU s) is samples per CPU-second ÷ (pixels × noise of one
+    sample²), so it is recomputed for these pixels from the handout's samples per CPU-second and
+    noise of one sample. [] when the handouts have none for this lab."""
     path = os.path.join(FIGURES, sweep.parameter.handout_csv)
     if not os.path.exists(path):
         return []
@@ -265,10 +284,9 @@ def handout_rows(sweep):
         for row in csv.DictReader(f):
             if row.get("lab", sweep.lab) != sweep.lab:
                 continue
-            rate, sigma = float(row["samples_per_second"]), float(row["noise_per_sample"])
+            rate, sigma = float(row["samples_per_cpu_second"]), float(row["noise_per_sample"])
             rows.append({sweep.parameter.column: row[sweep.parameter.column],
-                         "samples_per_second": round(rate),
-                         "frame_rate": f"{rate / pixels:.4g}",
+                         "samples_per_cpu_second": round(rate),
                          "rays_per_sample": row["rays_per_sample"],
                          "noise_per_sample": row["noise_per_sample"],
                          "efficiency": f"{rate / (pixels * sigma * sigma):.4g}"})

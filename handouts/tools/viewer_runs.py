@@ -17,6 +17,9 @@ class Viewer:
         self.executable = executable
         self.scene = scene
         self.work = work
+        # Per render: its name, the render threads' share of their cores, and --stats' notes (a
+        # busy machine, a CPU figure not to be trusted): what the figures' timings survived.
+        self.cpu_record = []
         os.makedirs(work, exist_ok=True)
 
     def estimator_options(self, lab, continue_prob=None, max_depth=None):
@@ -40,26 +43,38 @@ class Viewer:
         with open(stats) as f:
             result = json.load(f)
         result["image"] = image
+        self.cpu_record.append({"name": name, "seconds": result["seconds"],
+                                "cpu_share": result.get("cpu_share", 0),
+                                "busy_note": result.get("busy_note", ""),
+                                "cpu_note": result.get("cpu_note", "")})
         return result
 
-    def samples_per_second(self, lab, size, continue_prob=None, seed=777, at_least_seconds=0.4):
-        """Throughput of a solution at SIZE², from renders doubled in spp until one lasts
-        AT_LEAST_SECONDS (a short render mostly measures start-up noise)."""
+    def samples_per_cpu_second(self, lab, size, continue_prob=None, seed=777,
+                               at_least_cpu_seconds=0.8):
+        """Samples per CPU-second of a solution at SIZE², the render threads' CPU time, which
+        other programs on the machine change little: from renders doubled in spp until one takes
+        AT_LEAST_CPU_SECONDS (a short render mostly measures its threads starting)."""
         spp = 1
         while True:
             stats = self.render("probe", lab, spp, size, seed, continue_prob)
-            if stats["seconds"] >= at_least_seconds or spp >= 4096:
-                return stats["samples_per_second"]
+            if stats["cpu_seconds"] >= at_least_cpu_seconds or spp >= 4096:
+                return stats["samples_per_cpu_second"]
             spp *= 2
 
 
-FRAME_LINE = re.compile(r"frame (\d+): median ([\d.]+) fps .* (\d+) spp, .* noise ([\d.]+), "
+# The window's --print-frame-rate line (apps/viewer/frame_report.cpp): "frame N: median F fps
+# ... ; S spp, R rays/s, C samples per CPU-second, noise Z, efficiency E; lab ...".
+FRAME_LINE = re.compile(r"frame (\d+): median ([\d.]+) fps .* (\d+) spp, [^,]* rays/s, "
+                        r"([\d.e+-]+) samples per CPU-second, noise ([\d.]+), "
                         r"efficiency ([\d.e+-]+);")
 
 
 def window_measurement(viewer, display, lab, size, frames, continue_prob=None):
     """What a student reads off the window's panel (one sample per pixel per frame): after each
-    of FRAMES, {"frame_rate": the panel's median frame rate, "noise", "efficiency", "spp"}."""
+    of FRAMES, {"frame_rate": the panel's median frame rate (wall time, what a student waits
+    for), "samples_per_cpu_second" (the render threads' CPU time since the start: the figure
+    other programs change little), "noise", "efficiency" (the panel's: per second of wall time
+    rendering), "spp"}."""
     with tempfile.TemporaryDirectory() as tmp:
         run = subprocess.run(
             [viewer.executable, *viewer.estimator_options(lab, continue_prob), "--size",
@@ -72,7 +87,8 @@ def window_measurement(viewer, display, lab, size, frames, continue_prob=None):
         m = FRAME_LINE.search(line)
         if m and int(m.group(1)) in frames:
             panel[int(m.group(1))] = {"frame_rate": float(m.group(2)), "spp": int(m.group(3)),
-                                      "noise": float(m.group(4)), "efficiency": float(m.group(5))}
+                                      "samples_per_cpu_second": float(m.group(4)),
+                                      "noise": float(m.group(5)), "efficiency": float(m.group(6))}
     missing = sorted(set(frames) - set(panel))
     if missing:
         raise RuntimeError(f"the window printed no line for frames {missing}")

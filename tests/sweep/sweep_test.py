@@ -6,9 +6,17 @@ Usage: sweep_test.py --build BUILD --source KIT
 Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
 1. A tiny sweep of each parameter (16×16 pixels, 2 spp, two values) on the labs of labs/ as they
    are: exit 0, a time estimate line before the renders and the output folder named at the end;
-   sweep.csv has one row per value, the value first, every figure finite and positive;
-   sweep.png is a PNG of the plot's size; handout.csv holds the handout's figures.
-2. Bad input (an unknown LAB or PARAM, a parameter the lab does not have, a value out of range,
+   sweep.csv has one row per value, the value first, then the figures by CPU time
+   (samples_per_cpu_second, ..., efficiency), every figure finite and positive, the efficiency
+   1/(noise² × CPU seconds) and the samples per CPU-second and the frame rate those of the
+   render's samples, within the CSV's rounding; sweep.png is a PNG of the plot's size;
+   handout.csv holds the handout's figures of that lab, every row of
+   handouts/figures/roulette_sweep.csv or depth_sweep.csv, with its samples per CPU-second and
+   the efficiency recomputed for 16×16 pixels.
+2. The figures of made-up renders (the viewer replaced): the efficiency is by CPU time, not by
+   the wall clock, and a render that found the machine busy is said in one line after the
+   renders, with how many more did.
+3. Bad input (an unknown LAB or PARAM, a parameter the lab does not have, a value out of range,
    a size that is not a number) is one line naming it and exit status 2, from the script and
    from `make sweep`, and writes nothing: no output folder, no build folder.
 """
@@ -33,8 +41,15 @@ SWEEP = os.path.join(args.source, "scripts", "sweep.py")
 sys.path.insert(0, os.path.dirname(SWEEP))
 import sweep as sweep_script  # noqa: E402
 
-FIGURES = ["samples_per_second", "frame_rate", "rays_per_sample", "noise_per_sample",
-           "efficiency", "noise", "seconds"]
+FIGURES = ["samples_per_cpu_second", "rays_per_sample", "noise_per_sample", "efficiency", "noise",
+           "cpu_seconds", "seconds", "samples_per_second", "frame_rate"]
+# The CSV's numbers have 4 significant digits: a figure computed from two or three of them
+# agrees with its own column to a few parts in a thousand.
+ROUNDING = 3e-3
+
+
+def close(a, b, tolerance=ROUNDING):
+    return abs(a - b) <= tolerance * max(abs(a), abs(b))
 
 
 def png_size(path):
@@ -73,18 +88,83 @@ def check_sweep(scratch, lab, param, values, column):
     wanted = [float(v) for v in values.split()]
     check([float(r[column]) for r in rows] == wanted,
           f"{name}: sweep.csv has a row per value, in column {column}")
+    header = list(rows[0]) if rows else []
+    check(header[:1 + len(sweep_script.FIGURE_COLUMNS)] == [column] + sweep_script.FIGURE_COLUMNS
+          and "samples_per_cpu_second" in header,
+          f"{name}: sweep.csv's columns start with the value and the figures by CPU time {header}")
     bad = [(r[column], k, r.get(k)) for r in rows for k in FIGURES
            if not (r.get(k) and math.isfinite(float(r[k])) and float(r[k]) > 0)]
     check(not bad, f"{name}: every figure finite and positive {bad[:3] if bad else ''}")
+    if bad:
+        return
+    samples = [int(r["spp"]) * int(r["width"]) * int(r["height"]) for r in rows]
+    efficiency = [(float(r["efficiency"]), 1 / (float(r["noise"]) ** 2 * float(r["cpu_seconds"])))
+                  for r in rows]
+    check(all(close(a, b) for a, b in efficiency),
+          f"{name}: efficiency is 1/(noise² × CPU seconds) {efficiency}")
+    rates = [(float(r["samples_per_cpu_second"]), n / float(r["cpu_seconds"]))
+             for r, n in zip(rows, samples)]
+    check(all(close(a, b) for a, b in rates),
+          f"{name}: samples_per_cpu_second is the samples over cpu_seconds {rates}")
+    frames = [(float(r["frame_rate"]), float(r["samples_per_second"]) / (n / int(r["spp"])))
+              for r, n in zip(rows, samples)]
+    check(all(close(a, b) for a, b in frames),
+          f"{name}: frame_rate is the wall clock's samples/s over the pixels {frames}")
     size = png_size(os.path.join(out, "sweep.png"))
     check(size == (sweep_script.PLOT_WIDTH, sweep_script.PLOT_HEIGHT),
           f"{name}: sweep.png is a {sweep_script.PLOT_WIDTH}x{sweep_script.PLOT_HEIGHT} PNG: {size}")
     with open(os.path.join(out, "handout.csv"), newline="") as f:
         handout = list(csv.DictReader(f))
-    check(len(handout) >= 2 and all(float(r["efficiency"]) > 0 for r in handout),
-          f"{name}: handout.csv holds the handout's figures ({len(handout)} rows)")
+    parameter = sweep_script.PARAMETERS[param]
+    with open(os.path.join(sweep_script.FIGURES, parameter.handout_csv), newline="") as f:
+        theirs = [r for r in csv.DictReader(f) if r.get("lab", lab) == lab]
+    check(len(handout) >= 2 and len(handout) == len(theirs) and
+          [float(r[column]) for r in handout] == [float(r[column]) for r in theirs],
+          f"{name}: handout.csv holds the handout's {len(theirs)} rows of {lab} "
+          f"({len(handout)} rows)")
+    recomputed = [(float(r["efficiency"]), float(r["samples_per_cpu_second"]) /
+                   (16 * 16 * float(r["noise_per_sample"]) ** 2)) for r in handout]
+    check(all(float(r["samples_per_cpu_second"]) > 0 for r in handout) and
+          all(close(a, b) for a, b in recomputed),
+          f"{name}: handout.csv has the handout's samples per CPU-second and their efficiency "
+          f"at 16x16 pixels {recomputed[:2]}")
     renders = sorted(os.listdir(os.path.join(out, "renders")))
     check(len(renders) == 2 * len(wanted), f"{name}: an image and a stats file per value")
+
+
+def check_made_up_renders(scratch):
+    """measure() on made-up --stats: two renders, one on a busy machine, at half the CPU time of
+    their wall time on 2 threads' cores."""
+    renders = iter([
+        {"busy_note": "", "cpu_note": "", "cpu_seconds": 0.5, "seconds": 0.25},
+        {"busy_note": "the machine was busy: made up", "cpu_note": "", "cpu_seconds": 0.5,
+         "seconds": 1.0}])
+
+    def made_up(viewer, sweep, value, spp, folder, name, size=None):
+        stats = next(renders)
+        samples = spp * 16 * 16
+        return dict(stats, width=16, height=16, spp=spp, noise=0.5,
+                    rays={"intersect": samples, "occluded": samples},
+                    samples_per_cpu_second=samples / stats["cpu_seconds"],
+                    samples_per_second=samples / stats["seconds"])
+
+    sweep = sweep_script.Sweep("roulette", sweep_script.PARAMETERS["continue-prob"], [0.2, 0.8],
+                               16, 2, solution=False)
+    real, sweep_script.render = sweep_script.render, made_up
+    said = []
+    try:
+        rows = sweep_script.measure("viewer", sweep, scratch, said.append)
+    finally:
+        sweep_script.render = real
+    check([float(r["efficiency"]) for r in rows] == [8, 8],
+          f"made-up renders: efficiency 1/(0.5² × 0.5 CPU-s) = 8 whatever their wall time: "
+          f"{[r['efficiency'] for r in rows]}")
+    check([r["samples_per_cpu_second"] for r in rows] == [1024, 1024] and
+          [r["samples_per_second"] for r in rows] == [2048, 512],
+          "made-up renders: samples per CPU-second from the CPU time, samples/s from the wall "
+          f"clock's: {[(r['samples_per_cpu_second'], r['samples_per_second']) for r in rows]}")
+    check(said[-1:] == ["make sweep: the machine was busy: made up"],
+          f"made-up renders: the busy machine said in one line after the renders: {said[-1:]}")
 
 
 def check_bad_input(scratch):
@@ -125,6 +205,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="pathlab-sweep-test-") as scratch:
         check_sweep(scratch, "roulette", "continue-prob", "0.2 0.8", "continue_prob")
         check_sweep(scratch, "branching", "max-depth", "1 3", "max_depth")
+        check_made_up_renders(scratch)
         check_bad_input(scratch)
     return exit_code()
 
