@@ -35,6 +35,14 @@ else()
     set(PATHLAB_NO_FP_CONTRACTION "")
 endif()
 
+# Source files named from the kit's folder in the programs (__FILE__ in a failed check's message):
+# no host path is compiled into the viewer that the grader copies into a submission's sandbox,
+# where a lab could read it. framework/src/check.cpp finds the file from where the program runs.
+check_cxx_compiler_flag(-ffile-prefix-map=a=b PATHLAB_HAS_FILE_PREFIX_MAP)
+if(PATHLAB_HAS_FILE_PREFIX_MAP)
+    add_compile_options(-ffile-prefix-map=${PROJECT_SOURCE_DIR}/=)
+endif()
+
 # Math functions that never set errno (-fno-math-errno): GCC and clang then inline std::sqrt with
 # no branch around it. MSVC's sqrt does not set errno in the first place.
 check_cxx_compiler_flag(-fno-math-errno PATHLAB_HAS_NO_MATH_ERRNO)

@@ -188,6 +188,9 @@ def make_class(root, outside, port):
         "ptrace_parent": "ptrace 1: Operation not permitted",
         "stop_itself": "stopped its own process (Stopped (signal), signal 19)",
         "widen_affinity": "sched_setaffinity: Operation not permitted",
+        "seed_offset": "too noisy to judge",
+        "rare_spikes": "too noisy to judge",
+        "control_characters": "GRADER OK",
     }
     reasons["hanging_initializer"] = reasons["endless_loop"]
     for case, reason in reasons.items():
@@ -362,6 +365,12 @@ def attacks_held(out, expected):
     shown = [line for line in variant_lines if line in leak or line[::-1] in leak]
     check(variant_lines and not shown and "LEAK" not in leak,
           f"nothing of the hidden scene's files reached the feedback of the lab that printed them ({shown[:3]})")
+    # A lab's escape sequences and bells, printed or in a compiler error, arrive as \xNN text.
+    raw = [name for name in ("feedback.json", "index.html", "grader.log", "result.json")
+           if any(byte in open(os.path.join(out, "submissions", "hostile_control_characters", name), "rb").read()
+                  for byte in (b"\x1b", b"\x07"))]
+    check(not raw and "PWNED-TITLE" in text("hostile_control_characters"),
+          f"no control byte a lab printed or put in a compiler error reaches its feedback or logs ({raw})")
     smudged = text("git_smudge")
     check("SMUDGED" not in smudged and "uid=" not in smudged,
           "a git submission's smudge filter did not run: its lab was read as the blob committed")
@@ -433,6 +442,15 @@ def bookkeeping(root, subs, out, rubric, expected, rows):
     check(f"{len(expected)} submission(s) already graded" in run.stderr
           and open(os.path.join(out, "gradebook.csv")).read() == before,
           "a batch run again skips what is graded and keeps the gradebook")
+    check("did not finish" not in run.stderr and "0 of 0" not in run.stderr,
+          f"... and says nothing of an interrupted batch or of grading none: {run.stderr[-300:]!r}")
+    # The same folder, the instructor's --rubric forgotten: refused, naming both files, and
+    # nothing changes (the kit's rubric would grade the class again).
+    forgot = subprocess.run([GRADER, "batch", subs, "--out", out, *no_race],
+                            capture_output=True, text=True, timeout=600)
+    check(forgot.returncode == 2 and f"was graded under the rubric {os.path.abspath(rubric)}" in forgot.stderr
+          and open(os.path.join(out, "gradebook.csv")).read() == before,
+          f"a batch rerun without the --rubric it was graded under refuses, naming it: {forgot.stderr[-300:]!r}")
     print(f"run again: {time.monotonic() - started:.0f} s", flush=True)
     started = time.monotonic()
 
@@ -467,6 +485,10 @@ def bookkeeping(root, subs, out, rubric, expected, rows):
     check(sandbox_processes(root) == [], "a killed batch leaves no grading running")
     run, _ = run_batch(part_subs, part_out, rubric, extra=no_race)
     check("already graded" in run.stderr, "the restarted batch skips what the killed one finished")
+    check("did not finish (interrupted)" in run.stderr,
+          f"... and says that the batch before it did not finish: {run.stderr[:300]!r}")
+    left = [f for f in os.listdir("/tmp") if f.startswith(f"pathlab-grader-{batch.pid}-")]
+    check(left == [], f"the killed batch's scratch folder is removed by the next grader: {left}")
     restarted = gradebook(part_out)
     for i in part:
         differing = {k: (rows[i].get(k), v) for k, v in restarted.get(i, {}).items() if rows[i].get(k) != v}

@@ -170,9 +170,14 @@ def mutants(tmp, slow, timed=(True, False)):
         rows.append(f"| {name} | {m['lab']} | {target_name}: {verdict} | {diagnosis[:110]} |")
         says = m["says"] if isinstance(m["says"], list) else [m["says"]]
         missing = [words for words in says if words not in text]
-        check(report is not None and target is not None and passed == should_pass and not missing,
+        # Words of another cause that must not be told (a linear lab is not called non-linear).
+        wrong = [words for words in m.get("never_says", []) if words in text]
+        check(report is not None and target is not None and passed == should_pass and not missing
+              and not wrong,
               f"mutant {name}: {target_name} {'passes' if should_pass else 'fails'} and says "
-              f"{says}" + (f" (missing: {missing}; it said: {text[:600]})" if missing else ""))
+              f"{says}" + (f", never {m['never_says']}" if "never_says" in m else "")
+              + (f" (missing: {missing}; it said: {text[:600]})" if missing else "")
+              + (f" (it said {wrong}: {text[:600]})" if wrong else ""))
         replay = next((d for d in (target or {}).get("details", []) if d.startswith("replay:")), None)
         if replay:
             replays["ran"] += 1

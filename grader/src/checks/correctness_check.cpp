@@ -2,12 +2,14 @@
 
 #include "checks/correctness_renders.h"
 #include "checks/hypothesis_tests.h"
+#include "checks/light_linearity.h"
 #include "checks/number_text.h"
 #include "checks/path_evidence.h"
 #include "checks/path_length.h"
 #include "checks/rays_per_sample.h"
 #include "checks/reproducibility_check.h"
 #include "checks/run_limits.h"
+#include "checks/seed_spread.h"
 #include "checks/seed_variance.h"
 #include "checks/worst_tile_replay.h"
 #include "diagnosis/diagnosis.h"
@@ -123,6 +125,7 @@ struct SceneComparisons {
     std::vector<std::string> untraced; ///< per scene: missingPathEvidence, "" where it is traced
     std::vector<double> allP;          ///< every scene's regions' p, in a row
     std::vector<PathLengthObservation> pathLengths; ///< lab 4 in the diffuse furnaces
+    std::vector<SeedSpread> spreads;                ///< per scene: seed_spread.h
     bool stepsOpen = false;                         ///< see SceneRuns
 };
 
@@ -185,6 +188,7 @@ SceneComparisons renderAndCompare(const GraderSetup& setup, Lab lab, uint64_t se
         if (lab == Lab::Roulette && scene.furnace && scene.furnace->walls == FurnaceWalls::Diffuse)
             found.pathLengths.push_back({scene.furnace->continueProb, runs.rays.bounce});
         found.scenes.push_back(compare(runs, scene.reference.forLab(lab), r.seeds));
+        found.spreads.push_back(seedSpread(runs.images, r.width, r.height, r.tiles));
         found.untraced.push_back(missingPathEvidence(pathEvidence(setup, scene, lab, runs)));
         found.allP.insert(found.allP.end(), found.scenes.back().p.begin(),
                           found.scenes.back().p.end());
@@ -309,23 +313,38 @@ void explainMixedSurfaces(Lab lab, const GradingScene& scene,
 }
 
 /// A public scene that differs, in the details: its channels' ratios, the tiles that differ, and
-/// the likely cause that its kind of scene can tell.
+/// the likely cause that its kind of scene can tell (unless `tellCauses` is false: a lab that is
+/// not linear in light, whose values no model of a linear lab's bug explains).
 void explainScene(const GraderSetup& setup, Lab lab, const GradingScene& scene, const Comparison& c,
                   const std::vector<bool>& regionsRejected, const RejectingScenes& rejecting,
-                  Attempt& attempt) {
+                  bool tellCauses, Attempt& attempt) {
     const ChannelRatios ratios = channelRatios(c, scene.reference.forLab(lab), setup.rubric);
     attempt.details.push_back(scene.name + ": observed/expected" + ratios.text);
     if (const std::string tiles = differingTiles(regionsRejected, setup.rubric.tiles);
         !tiles.empty())
         attempt.details.push_back(scene.name + ": " + tiles);
-    if (scene.reference.scene == "mixed_surfaces" && !rejecting.furnace && !rejecting.refraction)
+    if (tellCauses && scene.reference.scene == "mixed_surfaces" && !rejecting.furnace &&
+        !rejecting.refraction)
         explainMixedSurfaces(lab, scene, ratios.intervals, attempt);
-    if (scene.reference.scene == "refraction_check" && !rejecting.furnace)
+    if (tellCauses && scene.reference.scene == "refraction_check" && !rejecting.furnace)
         tellLikelyCause(likelyRefractionCause(lab), attempt);
     if (scene.furnace)
         attempt.details.push_back(scene.name + ": " + fixed(wholeImageMean(c), 4) +
                                   ", where a correct lab gives " +
                                   fixed(correctFurnaceValue(lab, *scene.furnace), 4));
+}
+
+/// The public scene a lab's linearity in light is checked on (light_linearity.h): a furnace that
+/// rejects it, else the first public scene that does; none when only hidden scenes do.
+const GradingScene* linearityScene(const std::vector<GradingScene>& scenes,
+                                   const std::vector<bool>& sceneRejected) {
+    const GradingScene* chosen = nullptr;
+    for (size_t s = 0; s < scenes.size(); ++s) {
+        if (scenes[s].hidden || !sceneRejected[s]) continue;
+        if (scenes[s].furnace) return &scenes[s];
+        if (!chosen) chosen = &scenes[s];
+    }
+    return chosen;
 }
 
 /// Explains a rejection in `attempt`'s details and diagnosis: per scene, the whole image's
@@ -339,6 +358,21 @@ void explainRejection(const GraderSetup& setup, Lab lab, const SceneComparisons&
     for (const std::vector<bool>& regions : regionsRejected)
         sceneRejected.push_back(anyRejected(regions));
     const RejectingScenes rejecting = rejectingScenes(setup.scenes, sceneRejected);
+    // A lab that is not linear in light is told that first, and nothing the models of linear
+    // labs' bugs would make of its values.
+    bool linear = true;
+    if (const GradingScene* probed = linearityScene(setup.scenes, sceneRejected)) {
+        const size_t s = static_cast<size_t>(probed - setup.scenes.data());
+        std::vector<double> fullLight;
+        for (const MeanEstimate& m : found.scenes[s].observed) fullLight.push_back(m.mean);
+        const LinearityFinding finding = checkLightLinearity(setup, lab, *probed, seed, fullLight,
+                                                             probed->reference.forLab(lab));
+        if (finding.measured && !finding.linear) {
+            linear = false;
+            attempt.details.push_back("likely cause: " + finding.cause);
+            attempt.diagnosis = causeName(finding.cause);
+        }
+    }
     // Every furnace's value, accepted or not, narrows down the known bugs that explain them.
     std::vector<FurnaceObservation> furnaces;
     for (size_t s = 0; s < setup.scenes.size(); ++s) {
@@ -350,18 +384,20 @@ void explainRejection(const GraderSetup& setup, Lab lab, const SceneComparisons&
             attempt.hiddenDetails.push_back(
                 scene.name + (sceneRejected[s] ? HiddenSceneDiffers : HiddenSceneMatches));
         else if (sceneRejected[s])
-            explainScene(setup, lab, scene, c, regionsRejected[s], rejecting, attempt);
+            explainScene(setup, lab, scene, c, regionsRejected[s], rejecting, linear, attempt);
     }
     if (!rejecting.publicScene)
         attempt.hiddenDetails.push_back(
             "every scene you can see matches: what differs is something only a hidden scene has "
             "(a material, a light or a path the public scenes lack)");
-    if (rejecting.furnace) {
+    if (rejecting.furnace && linear) {
         const std::vector<std::string> causes = likelyFurnaceCauses(lab, furnaces, found.stepsOpen);
         if (!causes.empty()) {
             attempt.details.push_back("likely cause: " + causes.front());
             // The furnaces' diagnosis is the most specific: it wins over any told before.
             attempt.diagnosis = causeName(causes.front());
+        } else {
+            attempt.details.push_back("no bug the grader knows gives these furnace values");
         }
     }
     // A pixel of each public scene that differs, replayed beside the reference until one's paths
@@ -408,6 +444,46 @@ bool explainUntraced(const GraderSetup& setup, const SceneComparisons& found, At
     return untraced;
 }
 
+/// A share as a whole percentage ("140%"), or with two figures below 10% ("0.66%").
+std::string percent(double share) {
+    return (100 * share >= 10 ? std::to_string(std::lround(100 * share))
+                              : significant(100 * share, 2)) +
+           "%";
+}
+
+/// Scenes whose renders spread from seed to seed too much to be judged (seed_spread.h): says
+/// which in `attempt` and returns true; false where every scene could be judged.
+bool explainTooNoisy(const GraderSetup& setup, const SceneComparisons& found, Attempt& attempt) {
+    bool tooNoisy = false;
+    for (size_t s = 0; s < setup.scenes.size(); ++s) {
+        const SeedSpread& spread = found.spreads[s];
+        if (!tooNoisyToJudge(spread)) continue;
+        tooNoisy = true;
+        const std::string why =
+            spread.relativeStandardError > MaxRelativeStandardError
+                ? "the mean of your image changes from seed to seed by " +
+                      percent(spread.relativeStandardError) +
+                      " of itself (its standard error over the seeds; a correct lab's is under "
+                      "1%)"
+                : "your image's mean changes from seed to seed " +
+                      significant(
+                          std::max(spread.wholeImageCorrelation, spread.medianTileCorrelation), 2) +
+                      " times as much as its pixels' own noise allows (a path tracer's pixels "
+                      "are independent: about 1)";
+        const std::string text =
+            why +
+            ": a comparison with the reference cannot tell whether the mean is right, so "
+            "it is not taken as matching; likely cause: " +
+            TooNoisyCause;
+        if (setup.scenes[s].hidden)
+            attempt.hiddenDetails.push_back(setup.scenes[s].name + ": " + text);
+        else
+            attempt.details.push_back(setup.scenes[s].name + ": " + text);
+    }
+    if (tooNoisy) attempt.diagnosis = causeName(TooNoisyCause);
+    return tooNoisy;
+}
+
 /// One attempt of the correctness check over all scenes. `noise`: the figure of an earlier
 /// attempt (-1: none), kept where this one does not reach the noise scene.
 Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase, double noise) {
@@ -424,6 +500,9 @@ Attempt correctnessAttempt(const GraderSetup& setup, Lab lab, uint64_t seedBase,
         attempt.diagnosis = causeName(ignored);
         return attempt;
     }
+    // A comparison that could not have found a difference says nothing: a lab too noisy to
+    // judge is not taken as matching, whatever its t-tests say.
+    if (explainTooNoisy(setup, found, attempt)) return attempt;
     // Means that match from images that do not come from paths are told before anything a
     // hidden scene says: a table of the public scenes' answers fits no hidden scene either. A lab
     // whose public scenes differ is told why they differ instead (the stub traces no bounce).
@@ -506,6 +585,10 @@ CorrectnessOutcome checkCorrectness(const GraderSetup& setup, Lab lab) {
         check.diagnosis = failure.kind;
         if (failure.kind == NonfiniteRadianceFailure)
             details.push_back("likely cause: " + likelyNonfiniteCause(lab));
+    } else if (attempt.diagnosis == causeName(TooNoisyCause)) {
+        check.summary = "could not be compared with " + expected +
+                        ": your images are too noisy to judge (twice, on fresh seeds)";
+        check.diagnosis = attempt.diagnosis;
     } else if (attempt.diagnosis == NotTracedDiagnosis) {
         check.summary = "mean radiance matches " + expected + " on the scenes you can see, but " +
                         NotTracedDiagnosis + " (twice, on fresh seeds)";

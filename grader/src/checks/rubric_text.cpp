@@ -54,6 +54,11 @@ std::string rubricText(const Rubric& r, const std::string& rubricPath, int hidde
         out << "  hidden scenes: " << hiddenScenes
             << " (feedback says pass or fail; Gradescope shows that " << r.hiddenScenesVisibility
             << ")\n";
+    else if (r.sceneVariants > 0)
+        out << "  hidden scenes: none here; an instructor's batch without hidden scenes grades on "
+            << r.sceneVariants
+            << " variant(s) of the public scenes\n  (hidden_scenes.variants: the same geometry, "
+               "other colours and light)\n";
     else
         out << "  hidden scenes: none here (your instructor's grader may add some)\n";
 

@@ -56,13 +56,99 @@ std::string variedMaterials(const std::string& mtl, const std::function<double()
     return out;
 }
 
+namespace {
+
+/// Writes the scene at `base` into `folder` under `stem` (stem.ecs, stem_NAME for the files it
+/// names, each name replaced where another file names it), each file's text passed through
+/// `transform` (its extension and text); returns the new .ecs's absolute path.
+std::string
+copyScene(const std::string& base, const std::string& folder, const std::string& stem,
+          const std::function<std::string(const std::string&, std::string)>& transform) {
+    fs::create_directories(folder);
+    const std::vector<std::string> files = sceneFiles(base);
+    std::vector<std::pair<std::string, std::string>> renamed;
+    for (const std::string& file : files) {
+        const std::string name = fs::path(file).filename().string();
+        renamed.push_back({name, file == files.front() ? stem + ".ecs" : stem + "_" + name});
+    }
+    for (size_t i = 0; i < files.size(); ++i) {
+        std::string text = readFile(files[i]);
+        for (const auto& [from, to] : renamed) text = replaced(text, from, to);
+        writeFileAtomically(folder + "/" + renamed[i].second,
+                            transform(fs::path(files[i]).extension().string(), std::move(text)));
+    }
+    return fs::absolute(folder + "/" + stem + ".ecs").string();
+}
+
+/// "-pointlight X Y Z R G B" and "-dirlight DX DY DZ R G B" (one or two dashes, Embree's
+/// spellings) with R G B times `factor`; other lines as they are.
+std::string scaledLightOptions(const std::string& ecs, double factor) {
+    std::istringstream in(ecs);
+    std::string out;
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream words(line);
+        std::string option;
+        words >> option;
+        const std::string name = option.substr(
+            option.find_first_not_of('-') == std::string::npos ? 0 : option.find_first_not_of('-'));
+        if (name == "pointlight" || name == "dirlight" || name == "directionallight") {
+            std::vector<double> values;
+            for (double v; words >> v;) values.push_back(v);
+            if (values.size() == 6) {
+                line = option;
+                for (size_t k = 0; k < 6; ++k) {
+                    char text[32];
+                    std::snprintf(text, sizeof text, " %.9g",
+                                  k < 3 ? values[k] : values[k] * factor);
+                    line += text;
+                }
+            }
+        }
+        out += line + "\n";
+    }
+    return out;
+}
+
+} // namespace
+
+std::string scaledEmission(const std::string& mtl, double factor) {
+    std::istringstream in(mtl);
+    std::string out;
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream words(line);
+        std::string keyword;
+        words >> keyword;
+        if (keyword != "Ke") {
+            out += line + "\n";
+            continue;
+        }
+        // Every digit kept: a factor of 2^-6 must scale the light exactly.
+        line = keyword;
+        for (double value; words >> value;) {
+            char text[40];
+            std::snprintf(text, sizeof text, " %.17g", value * factor);
+            line += text;
+        }
+        out += line + "\n";
+    }
+    return out;
+}
+
+std::string writeScaledLightScene(const std::string& ecsPath, const std::string& folder,
+                                  const std::string& stem, double factor) {
+    return copyScene(ecsPath, folder, stem, [&](const std::string& extension, std::string text) {
+        if (extension == ".mtl") return scaledEmission(text, factor);
+        if (extension == ".ecs") return scaledLightOptions(text, factor);
+        return text;
+    });
+}
+
 std::vector<std::string> writeSceneVariants(const Rubric& rubric, const std::string& folder,
                                             uint64_t seed) {
     std::vector<std::string> bases;
     for (const std::string& name : rubric.scenes)
         if (!furnaceModel(name, rubric.maxDepth, rubric.continueProb)) bases.push_back(name);
     if (bases.empty() || rubric.sceneVariants <= 0) return {};
-    fs::create_directories(folder);
     // The engine's numbers are the same on every platform; a distribution's are not.
     std::mt19937_64 engine(seed);
     const std::function<double()> random = [&] {
@@ -71,21 +157,11 @@ std::vector<std::string> writeSceneVariants(const Rubric& rubric, const std::str
     std::vector<std::string> written;
     for (int k = 0; k < rubric.sceneVariants; ++k) {
         const std::string base = publicScenePath(bases[static_cast<size_t>(k) % bases.size()]);
-        const std::string stem = "variant_" + std::to_string(k + 1);
-        // The scene's files under new names, each name replaced where another file names it.
-        const std::vector<std::string> files = sceneFiles(base);
-        std::vector<std::pair<std::string, std::string>> renamed;
-        for (const std::string& file : files) {
-            const std::string name = fs::path(file).filename().string();
-            renamed.push_back({name, file == files.front() ? stem + ".ecs" : stem + "_" + name});
-        }
-        for (size_t i = 0; i < files.size(); ++i) {
-            std::string text = readFile(files[i]);
-            for (const auto& [from, to] : renamed) text = replaced(text, from, to);
-            if (fs::path(files[i]).extension() == ".mtl") text = variedMaterials(text, random);
-            writeFileAtomically(folder + "/" + renamed[i].second, text);
-        }
-        written.push_back(fs::absolute(folder + "/" + stem + ".ecs").string());
+        written.push_back(copyScene(base, folder, "variant_" + std::to_string(k + 1),
+                                    [&](const std::string& extension, std::string text) {
+                                        return extension == ".mtl" ? variedMaterials(text, random)
+                                                                   : text;
+                                    }));
     }
     return written;
 }

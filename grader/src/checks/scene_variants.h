@@ -26,4 +26,14 @@ std::vector<std::string> writeSceneVariants(const Rubric& rubric, const std::str
 /// (one number in [0, 1) per call). Other lines are kept as they are.
 std::string variedMaterials(const std::string& mtl, const std::function<double()>& random);
 
+/// `mtl` with every emission Ke times `factor`.
+std::string scaledEmission(const std::string& mtl, double factor);
+
+/// A copy of the scene at `ecsPath` in `folder` as `stem`.ecs (its files as stem_NAME), every
+/// light times `factor`: each material's Ke and each --pointlight and --dirlight's intensity.
+/// A lab that is linear in the light it finds renders it as the scene times `factor`, sample by
+/// sample. Returns the copy's .ecs path.
+std::string writeScaledLightScene(const std::string& ecsPath, const std::string& folder,
+                                  const std::string& stem, double factor);
+
 } // namespace pathlab::grader

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 
 namespace pathlab::grader {
@@ -287,6 +288,30 @@ Decision decide(const std::vector<double>& logRatios, double shift, double thres
     return Decision::Undecided;
 }
 
+/// At the cap, for a lab still undecided: the same interval with the standard error the
+/// machine alone makes, measured by how the reference's runs spread (a pair's log ratio varies
+/// by about √2 times one side's log time). The benefit of the doubt is for a lab whose ratio the
+/// machine's noise hides; a lab whose own runs vary far more than the reference's (slow in some
+/// processes, fast in others) is judged by its ratio against the machine's noise. Returns
+/// Slower, or Undecided. `spreadRatio` is set to the lab's spread of log times over the
+/// reference's.
+Decision decideWithMachineSpread(const std::vector<double>& logRatios, double shift,
+                                 double threshold, double alpha, const TimedMeasurement& t,
+                                 double& spreadRatio) {
+    std::vector<double> studentLogs, solutionLogs;
+    for (double v : t.student) studentLogs.push_back(std::log(v));
+    for (double v : t.solution) solutionLogs.push_back(std::log(v));
+    if (solutionLogs.size() < 2 || logRatios.size() < 2) return Decision::Undecided;
+    const double n = static_cast<double>(solutionLogs.size());
+    const double machine = batchMean(solutionLogs).standardError * std::sqrt(n); // one run's
+    const double own = batchMean(studentLogs).standardError * std::sqrt(n);
+    spreadRatio = machine > 0 ? own / machine : 0;
+    const double margin = studentOneSidedCritical(alpha, n - 1) * std::sqrt(2.0) * machine /
+                          std::sqrt(static_cast<double>(logRatios.size()));
+    const double estimate = batchMean(logRatios).mean + shift;
+    return estimate + margin < std::log(threshold) ? Decision::Slower : Decision::Undecided;
+}
+
 /// The figures every verdict is told with: the summary's samples per CPU-second (the geometric
 /// means of each side's runs, whose quotient is the ratio: one set of measurements), the
 /// measure, and the details' rays and variances per sample.
@@ -334,6 +359,11 @@ TimedMeasurement timeLab(const GraderSetup& setup, Lab lab, const SpeedInputs& i
     const LabRunner studentRunner = timedRunner(setup.student, setup.timing);
     const LabRunner solutionRunner = timedRunner(setup.solution, setup.timing);
     const TimingLock lock(setup.timing.lockFile);
+    if (lock.waitedInVain())
+        std::fprintf(stderr,
+                     "note: %s was held by another process for %d s: the timed runs go on "
+                     "without it, and may share their core\n",
+                     setup.timing.lockFile.c_str(), TimingLock::MaxWaitSeconds);
     const double startUp = startUpCpuSeconds(setup, solutionRunner, *scene, startUps);
     t.timingCores = static_cast<int>(setup.timing.cpus.size());
     std::vector<double> logRatios;
@@ -426,7 +456,18 @@ SpeedOutcome judgeTimedRuns(const Rubric& r, Lab lab, bool correct,
         decide(logRatios, shift, r.minSpeedRatio, r.speedAlpha / SpeedPairsCap);
     SpeedVerdict verdict = judgeSpeed(r, lab, ratio, outcome.efficiencyRatio, outcome.studentRays,
                                       outcome.solutionRays);
-    if (decision == Decision::Undecided && !verdict.passed) {
+    double spreadRatio = 0;
+    if (decision == Decision::Undecided && !verdict.passed &&
+        decideWithMachineSpread(logRatios, shift, r.minSpeedRatio, r.speedAlpha / SpeedPairsCap, t,
+                                spreadRatio) == Decision::Slower) {
+        // The lab's own runs vary, not the machine: no benefit of the doubt.
+        verdict.details.push_back(
+            "your lab's timed runs vary from run to run " + fixed(spreadRatio, 1) +
+            " times as much as the reference's (which vary only with the machine): judged "
+            "against the machine's variation, the ratio " +
+            fixed(ratio, 2) + " is below " + fixed(r.minSpeedRatio, 2) +
+            " with confidence. Does your lab do more work in some runs than in others?");
+    } else if (decision == Decision::Undecided && !verdict.passed) {
         // After the last pairs, neither above nor below the threshold with confidence: the lab
         // is given the benefit of the doubt, and told so.
         verdict = {};

@@ -34,13 +34,17 @@ options
   --scenes DIR        the hidden scenes: also grade on every .ecs in DIR, references measured
                       from the solutions (default: grader/hidden_scenes/ when it holds any;
                       --scenes none grades on the public scenes only)
+  --reference-cache DIR
+                      where the hidden scenes' references, measured from the solutions, are
+                      kept (default: reference-cache/ beside the grader; a batch keeps its own
+                      in OUT/.references)
   --reveal-hidden     feedback names the hidden scenes and shows their images and tiles
                       (by default it says only pass or fail and a likely cause)
   --rubric FILE       points and thresholds (default: grader/rubric.json)
   --references DIR    stored references (default: grader/references)
   --seed N            seed base (default 1); a fail is re-checked on fresh seeds anyway
   --threads N         threads per render (default: all cores)
-  --no-speed          skip the frame-rate check
+  --no-speed          skip the speed check (its points are left out of the total)
   --json FILE --junit FILE --gradescope FILE --html DIR
                       reports (the terminal table is always printed)
   --report FILE.md    a lab report: your notebook's figures (frame rate, noise, efficiency) and
@@ -303,6 +307,8 @@ Arguments parseArguments(int argc, char** argv) {
     const int first = readCommand(argc, argv, a);
     bool scenesGiven = false;
     readOptions(argc, argv, first, a, scenesGiven);
+    for (int i = first; i < argc; ++i)
+        a.rubricGiven = a.rubricGiven || std::string(argv[i]).rfind("--rubric", 0) == 0;
     if (a.command == "help") return a;
     settleHiddenScenes(a, scenesGiven);
     if (a.command == "rubric") return a;

@@ -23,6 +23,7 @@ struct Arguments {
     uint64_t variantSeed = 0;
     bool revealHidden = false; ///< feedback may name hidden scenes and show their images
     std::string rubric, references;
+    bool rubricGiven = false; ///< --rubric on the command line (else the kit's)
     std::string json, junit, gradescope, html, report;
     /// --report: where `make sweep` wrote its plots (default: sweep/ beside the grader).
     std::string sweeps;

@@ -35,6 +35,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -216,11 +217,18 @@ void runCanary(const std::vector<std::string>& childBase, const std::string& sol
                    d.value("diagnosis", "");
         char points[64];
         std::snprintf(points, sizeof points, "%g / %g", score, max);
+        log << timestamp() << " canary: refused the batch: nothing was graded" << why << "\n"
+            << std::flush;
         throw InputError(
             "canary: the reference solutions score " + std::string(points) +
             " on this grading, so its references, scenes or rubric are wrong; nothing was "
             "graded. What failed:" +
-            why + "\n  (details: " + folder + "/index.html)");
+            why +
+            "\n  A threshold the reference solutions fail (the noise check's max_ratio, the "
+            "speed check's min_ratio) is tighter than their own spread from one grading to the "
+            "next: loosen it in the rubric (docs/instructor-guide.md, The canary)."
+            "\n  (details: " +
+            folder + "/index.html)");
     }
     writeFileAtomically(folder + "/passed", fingerprint + "\n");
 }
@@ -271,6 +279,59 @@ void logBatchStart(std::ofstream& log, const Arguments& a, size_t submissions,
                          : "")
         << ", rubric " << grading.rubricHash << ", scenes " << grading.scenesHash << "\n";
 }
+
+/// A batch into a folder graded under another rubric file, with no --rubric given, is most
+/// likely an instructor who forgot it: re-scoring the class under the kit's rubric would change
+/// every grade. It refuses, naming both files; with --rubric it goes on (a changed rubric is
+/// re-scored or graded again, as the guide says).
+void requireRubricOfEarlierBatch(const Arguments& a, const std::string& out,
+                                 const GradingNow& grading) {
+    std::ifstream in(out + "/batch.json");
+    const nlohmann::json earlier =
+        in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+    if (!earlier.is_object() || a.rubricGiven) return;
+    const std::string file = earlier.value("rubric_file", "");
+    if (file.empty() || earlier.value("rubric_hash", "") == grading.rubricHash ||
+        file == fs::absolute(a.rubric).string())
+        return;
+    throw InputError(out + " was graded under the rubric " + file +
+                     " (its batch.json); without --rubric this batch would grade it again under "
+                     "the kit's, " +
+                     a.rubric + ". Pass --rubric " + file +
+                     " to go on under that one, or --rubric with the kit's to change to it");
+}
+
+/// A batch.log whose last batch has no "batch finished" line: that batch was stopped (killed, a
+/// reboot). Said once, when the next batch starts: what it graded is kept, the rest graded now.
+void sayIfInterrupted(const std::string& out, std::ofstream& log) {
+    std::ifstream in(out + "/batch.log");
+    std::string line, lastStart;
+    bool finished = true;
+    while (std::getline(in, line)) {
+        if (line.find(" batch of ") != std::string::npos) lastStart = line, finished = false;
+        if (line.find(" batch finished") != std::string::npos ||
+            line.find(" batch stopped") != std::string::npos)
+            finished = true;
+    }
+    if (finished || lastStart.empty()) return;
+    const std::string when = lastStart.substr(0, lastStart.find(' '));
+    const std::string text = "the batch started at " + when +
+                             " did not finish (interrupted): the submissions it graded are kept, "
+                             "those it had not finished are graded now";
+    std::fprintf(stderr, "%s\n", text.c_str());
+    log << timestamp() << " " << text << "\n";
+}
+
+/// Writes "batch stopped" into the log when an error ends the batch, so that the next one does
+/// not take it for interrupted.
+struct LogsAnError {
+    std::ofstream& log;
+    ~LogsAnError() {
+        if (std::uncaught_exceptions() > 0)
+            log << timestamp() << " batch stopped by an error (told on the terminal)\n"
+                << std::flush;
+    }
+};
 
 /// The cores of a batch, by what runs on them.
 struct Cores {
@@ -333,9 +394,10 @@ void measureHiddenReferences(const Arguments& a, const Rubric& rubric,
 
 /// OUT/batch.json: what the batch's gradebook is written against, for `grader merge` and for
 /// the next batch into OUT.
-void writeBatchJson(const std::string& out, const GradingNow& grading,
-                    const DeadlineAndTimes& dates) {
-    writeFileAtomically(out + "/batch.json", nlohmann::json{{"rubric_hash", grading.rubricHash},
+void writeBatchJson(const std::string& out, const std::string& rubricFile,
+                    const GradingNow& grading, const DeadlineAndTimes& dates) {
+    writeFileAtomically(out + "/batch.json", nlohmann::json{{"rubric_file", rubricFile},
+                                                            {"rubric_hash", grading.rubricHash},
                                                             {"scenes_hash", grading.scenesHash},
                                                             {"max_score", grading.maxScore},
                                                             {"deadline", dates.deadline},
@@ -466,10 +528,11 @@ JobCounts gradeInJobs(int jobs, const std::vector<std::string>& childBase,
                       const GradingNow& grading, std::ofstream& log) {
     std::vector<std::string> queued = idsOf(todo);
     writeGradebook(out, gradebookEntries(out, submissions, queued), grading, std::nullopt);
+    JobCounts counts;
+    if (todo.empty()) return counts; // no progress bar counting to 0 of 0
     ProgressBar progress("grading", "submissions");
     std::vector<Job> running;
     size_t next = 0;
-    JobCounts counts;
     progress.update(0, static_cast<int>(todo.size()));
     while (next < todo.size() || !running.empty()) {
         while (next < todo.size() && static_cast<int>(running.size()) < jobs)
@@ -548,7 +611,8 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
     std::printf("%s: %s\n", outcome.id.c_str(), outcome.status.c_str());
     std::fputs(terminalReport(outcome.report, false).c_str(), stdout);
     writeReports(a, rubric, outcome.report);
-    return 0;
+    // As every command that grades: 1 when a check failed (or a lab was not graded).
+    return outcome.report.score() == outcome.report.maxScore() ? 0 : 1;
 }
 
 int runBatch(const Arguments& given, const Rubric& rubric, const std::string& scratch) {
@@ -563,8 +627,11 @@ int runBatch(const Arguments& given, const Rubric& rubric, const std::string& sc
     const DeadlineAndTimes dates = deadlineAndTimes(a, out);
     const GradingNow grading = gradingNow(a, rubric, dates.deadline, dates.times);
     if (a.shards == 1) noteTimesOfOthers(grading, submissions);
+    requireRubricOfEarlierBatch(a, out, grading);
     std::ofstream log(out + "/batch.log", std::ios::app);
+    sayIfInterrupted(out, log);
     logBatchStart(log, a, submissions.size(), grading);
+    const LogsAnError logsAnError{log};
     const bool askAboutChanges = a.only.empty() && !a.force;
     const std::map<std::string, SubmittedFiles> files =
         askAboutChanges
@@ -595,7 +662,7 @@ int runBatch(const Arguments& given, const Rubric& rubric, const std::string& sc
     if (!selection.todo.empty()) prepare();
     // What this batch's gradebook is written against, for `grader merge`: only once the canary
     // passed, so that a batch it stopped changes nothing.
-    writeBatchJson(out, grading, dates);
+    writeBatchJson(out, fs::absolute(a.rubric).string(), grading, dates);
     const JobCounts counts =
         gradeInJobs(a.jobs, childBase, selection.todo, submissions, out, grading, log);
     const std::vector<SimilarLabs> similar = similarSubmissions(out, idsOf(submissions));

@@ -7,9 +7,31 @@
 
 #include "pathlab/program_main.h"
 
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <unistd.h>
+
+namespace {
+
+/// The scratch folders of graders that ended without removing theirs (killed, a batch stopped
+/// by SIGTERM, whose gradings went with it): each is named after its grader's process, and one
+/// whose process is gone is removed by the next grader to start.
+void removeScratchOfEndedGraders() {
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator("/tmp", error)) {
+        const std::string name = entry.path().filename().string();
+        const std::string prefix = "pathlab-grader-";
+        if (name.rfind(prefix, 0) != 0) continue;
+        const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
+        if (pid <= 0 || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+        std::filesystem::remove_all(entry.path(), error);
+    }
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     using namespace pathlab;
@@ -35,8 +57,10 @@ int main(int argc, char** argv) {
                 return 0;
             }
             if (a.command == "make-variants") return makeVariants(a, rubric);
-            char pattern[] = "/tmp/pathlab-grader-XXXXXX";
-            if (!::mkdtemp(pattern)) throw std::runtime_error("cannot make a scratch folder");
+            removeScratchOfEndedGraders();
+            std::string pattern = "/tmp/pathlab-grader-" + std::to_string(::getpid()) + "-XXXXXX";
+            if (!::mkdtemp(pattern.data()))
+                throw std::runtime_error("cannot make a scratch folder");
             scratch = pattern;
             if (a.command == "make-references") return makeReferences(a, rubric, scratch);
             if (a.command == "submission") return gradeOneSubmission(a, rubric, scratch);

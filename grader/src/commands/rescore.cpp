@@ -6,9 +6,12 @@
 
 #include "pathlab/input_error.h"
 
+#include <filesystem>
 #include <fstream>
 
 namespace pathlab::grader {
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -83,6 +86,11 @@ Rescore rescoreSubmission(const Rubric& rubric, bool speed, const std::string& r
         "'s measurements (only its points or thresholds had changed): nothing was rendered again");
     outcome.how = "re-scored from attempt " + std::to_string(rescore.fromAttempt);
     outcome.attempt = archiveAttempt(folder);
+    // The log of the grading whose measurements were judged again stays beside its feedback,
+    // for the student it is handed back to, as well as in the archived attempt.
+    std::error_code noLog;
+    fs::copy_file(folder + "/attempts/" + std::to_string(outcome.attempt - 1) + "/grader.log",
+                  folder + "/grader.log", fs::copy_options::overwrite_existing, noLog);
     writeGrading(outcome, s.path, folder);
     rescore.done = true;
     rescore.after = outcome.report.score();

@@ -14,8 +14,12 @@ namespace {
 double furnaceValue(Lab lab, const FurnaceModel& m, const FurnaceBehaviour& b) {
     const double a = m.walls == FurnaceWalls::Diffuse ? m.reflectance : 0;
     const double s = m.walls == FurnaceWalls::Mirror ? m.reflectance : 0;
-    const double roulette =
-        lab == Lab::Roulette ? std::pow(m.continueProb, 1 - b.rouletteDivisions) : 1;
+    // A branch that divides by continueProb k times weighs a continued path by q^(1-k).
+    const auto roulette = [&](int divisions) {
+        return lab == Lab::Roulette ? std::pow(m.continueProb, 1 - divisions) : 1.0;
+    };
+    const double diffuseRoulette = roulette(b.rouletteDivisionsDiffuse);
+    const double specularRoulette = roulette(b.rouletteDivisionsSpecular);
     const int limit = b.fixedDepth >= 0 ? b.fixedDepth : m.maxDepth;
     const int lastDepth = isDepthLimited(lab) || b.depthLimitKept ? limit + b.depthShift : 100000;
     // The expected weight of the paths that reach depth d by a camera, diffuse or specular ray.
@@ -27,8 +31,8 @@ double furnaceValue(Lab lab, const FurnaceModel& m, const FurnaceBehaviour& b) {
         value += camera + (b.emissionAfterDiffuse ? diffuse : 0) +
                  (b.emissionAfterSpecular ? specular : 0) + reaching * b.directWeight * a;
         camera = 0;
-        diffuse = reaching * roulette * b.diffuseWeight * a;
-        specular = reaching * roulette * b.mirrorWeight * s;
+        diffuse = reaching * diffuseRoulette * b.diffuseWeight * a;
+        specular = reaching * specularRoulette * b.mirrorWeight * s;
     }
     return value;
 }

@@ -108,6 +108,17 @@ const std::vector<KnownBug>& knownBugs() {
         {"forgot to divide by the pick probability 1/3", "", LabStep::ProbabilityDivision,
          labBit(Lab::Uniform),
          [](FurnaceBehaviour& b) { b.diffuseWeight = b.mirrorWeight = 1.0 / 3; }},
+        // One branch of the lab's own: the diffuse furnaces read the value above, the mirror
+        // furnace a correct lab's (or the other way round). A factor of 1/pi (0.318) in the
+        // diffuse branch gives values close to 1/3's: the closer fit is told first.
+        {"forgot to divide by the pick probability 1/3 in the diffuse branch",
+         "the Ks and Kt branches divide by it, the Kd branch does not; each branch must",
+         LabStep::ProbabilityDivision, labBit(Lab::Uniform),
+         [](FurnaceBehaviour& b) { b.diffuseWeight = 1.0 / 3; }},
+        {"forgot to divide by the pick probability 1/3 in the mirror and refraction branches",
+         "the Kd branch divides by it, the Ks and Kt branches do not; each branch must",
+         LabStep::ProbabilityDivision, labBit(Lab::Uniform),
+         [](FurnaceBehaviour& b) { b.mirrorWeight = 1.0 / 3; }},
         // 1/2 where the pick is 1/3: the three components read as two.
         {"divided by 1/2 instead of the pick probability 1/3", "", LabStep::ProbabilityDivision,
          labBit(Lab::Uniform),
@@ -126,9 +137,26 @@ const std::vector<KnownBug>& knownBugs() {
          [](FurnaceBehaviour& b) { b.depthLimitKept = true; }},
         {"Russian-roulette weight missing", "a continued path must be divided by continueProb",
          LabStep::ProbabilityDivision, labBit(Lab::Roulette),
-         [](FurnaceBehaviour& b) { b.rouletteDivisions = 0; }},
+         [](FurnaceBehaviour& b) { b.rouletteDivisionsDiffuse = b.rouletteDivisionsSpecular = 0; }},
         {"divided by continueProb twice", "", LabStep::ProbabilityDivision, labBit(Lab::Roulette),
-         [](FurnaceBehaviour& b) { b.rouletteDivisions = 2; }},
+         [](FurnaceBehaviour& b) { b.rouletteDivisionsDiffuse = b.rouletteDivisionsSpecular = 2; }},
+        // One branch of the lab's own: the mirror furnace reads 1/(1 - s*q) where a correct lab
+        // gives 1/(1 - s), the diffuse furnaces are right (or the other way round).
+        {"Russian-roulette weight missing on the mirror and refraction branches",
+         "the diffuse branch divides a continued path by continueProb, the Ks and Kt branches do "
+         "not; each branch must",
+         LabStep::ProbabilityDivision, labBit(Lab::Roulette),
+         [](FurnaceBehaviour& b) { b.rouletteDivisionsSpecular = 0; }},
+        {"Russian-roulette weight missing on the diffuse branch",
+         "the Ks and Kt branches divide a continued path by continueProb, the diffuse branch does "
+         "not; each branch must",
+         LabStep::ProbabilityDivision, labBit(Lab::Roulette),
+         [](FurnaceBehaviour& b) { b.rouletteDivisionsDiffuse = 0; }},
+        {"divided by continueProb twice on the mirror and refraction branches", "",
+         LabStep::ProbabilityDivision, labBit(Lab::Roulette),
+         [](FurnaceBehaviour& b) { b.rouletteDivisionsSpecular = 2; }},
+        {"divided by continueProb twice on the diffuse branch", "", LabStep::ProbabilityDivision,
+         labBit(Lab::Roulette), [](FurnaceBehaviour& b) { b.rouletteDivisionsDiffuse = 2; }},
     };
     return bugs;
 }

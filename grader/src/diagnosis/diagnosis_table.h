@@ -43,7 +43,9 @@ struct FurnaceBehaviour {
     bool emissionAfterSpecular = true;
     int depthShift = 0;  ///< labs 1-3: bounces beyond (or short of) maxDepth
     int fixedDepth = -1; ///< labs 1-3: a depth limit of its own, whatever maxDepth is (-1: none)
-    int rouletteDivisions = 1;   ///< lab 4: how often a continued path is divided by continueProb
+    /// Lab 4: how often a path continued by a diffuse bounce, and by a mirror or refraction
+    /// bounce, is divided by continueProb (each branch of the lab divides on its own).
+    int rouletteDivisionsDiffuse = 1, rouletteDivisionsSpecular = 1;
     bool depthLimitKept = false; ///< lab 4: paths also end at maxDepth, as in labs 1-3
 };
 

@@ -1,6 +1,7 @@
 #include "isolation/lab_library.h"
 
 #include "pathlab/input_error.h"
+#include "pathlab/printable_text.h"
 #include "pathlab/whole_file.h"
 
 #include <nlohmann/json.hpp>
@@ -38,7 +39,9 @@ std::string compilerMessages(const ProcessOutcome& outcome) {
              {"/submission/", "/pathlab/include/", "/pathlab/generated/", "/pathlab/runner/"})
             for (size_t at; (at = line.find(folder)) != std::string::npos;)
                 line.erase(at, folder.size());
-        text += line + "\n";
+        // The messages quote the submission's own bytes (an #error line may hold any): no
+        // control byte of them reaches a log, a terminal or a page.
+        text += printableText(line) + "\n";
     }
     return text;
 }

@@ -1,6 +1,8 @@
 // POSIX: Linux and macOS (the grader is not built with MSVC). Pinning to cores is Linux only.
 #include "isolation/process_runner.h"
 
+#include "pathlab/printable_text.h"
+
 #include "process/child_process.h"
 
 #include <csignal>
@@ -73,7 +75,9 @@ std::string ProcessOutcome::outputTail(int lines) const {
         // Long enough for a failed check, which names the lab's line, what to fix and the
         // framework's check; short enough that a flood of output stays readable.
         if (line.size() > 600) line = line.substr(0, 600) + "...";
-        if (!line.empty()) kept.insert(kept.begin(), line);
+        // What a lab printed goes into logs, terminals and pages: no control byte of its own
+        // (an escape sequence that rewrites the log's lines as a terminal shows them, a bell).
+        if (!line.empty()) kept.insert(kept.begin(), printableText(line));
         if (start == std::string::npos) break;
         end = start;
     }

@@ -76,7 +76,11 @@ std::vector<std::string> bubblewrapArguments(const SandboxRun& run,
         "--ro-bind", "/usr", "/usr", "--ro-bind-try", "/etc/ld.so.cache", "/etc/ld.so.cache",
         "--ro-bind-try", "/etc/alternatives", "/etc/alternatives", "--proc", "/proc", "--dev",
         "/dev", "--size", std::to_string(run.scratchBytes), "--tmpfs", SandboxScratch, "--chdir",
-        SandboxScratch};
+        SandboxScratch,
+        // Of the host's kernel, nothing a render needs and a submission could print: its boot
+        // options, its build, its symbols (unreadable, where the kernel lets a sandbox open it).
+        "--ro-bind-try", "/dev/null", "/proc/cmdline", "--ro-bind-try", "/dev/null",
+        "/proc/version", "--ro-bind-try", "/dev/null", "/proc/kallsyms"};
     // Merged-/usr systems link /bin, /lib... into /usr; older ones have real folders.
     for (const char* top : {"/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"}) {
         std::error_code error;

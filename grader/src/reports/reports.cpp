@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -138,7 +140,15 @@ std::string terminalReport(const GradeReport& report, bool colour, bool withHidd
     out << "score\n" << std::right;
     for (const LabGrade& lab : report.labs) {
         out << std::string(labName(lab.lab)) << std::string(12 - labName(lab.lab).size(), ' ');
-        for (const CheckResult& c : lab.checks) {
+        for (CheckKind check : AllChecks) {
+            // A check this grading did not run (--no-speed) keeps its column, empty.
+            auto found = std::find_if(lab.checks.begin(), lab.checks.end(),
+                                      [&](const CheckResult& c) { return c.kind == check; });
+            if (found == lab.checks.end()) {
+                out << std::setw(13) << std::left << "-" << std::right;
+                continue;
+            }
+            const CheckResult& c = *found;
             if (c.gradedHere)
                 std::snprintf(line, sizeof line, "%s %g/%g", c.passed ? "pass" : "FAIL", c.score,
                               c.maxScore);
@@ -190,6 +200,13 @@ std::string terminalReport(const GradeReport& report, bool colour, bool withHidd
     return out.str();
 }
 
+/// A speed figure, or null where it was not measured (a grading without speed, or a lab that
+/// did not run): 0 would read as a measured standstill.
+static nlohmann::json measuredOrNull(double figure) {
+    if (!(figure > 0) || !std::isfinite(figure)) return nullptr;
+    return figure;
+}
+
 std::string jsonReport(const GradeReport& report) {
     nlohmann::json labs = nlohmann::json::array();
     for (const LabGrade& lab : report.labs) {
@@ -213,13 +230,13 @@ std::string jsonReport(const GradeReport& report) {
              {"max_score", lab.maxScore()},
              {"checks", checks},
              {"samples_per_second",
-              {{"student", lab.studentSamplesPerSecond},
-               {"solution", lab.solutionSamplesPerSecond}}},
+              {{"student", measuredOrNull(lab.studentSamplesPerSecond)},
+               {"solution", measuredOrNull(lab.solutionSamplesPerSecond)}}},
              {"rays_per_sample",
               {{"student", rays(lab.studentRays)}, {"solution", rays(lab.solutionRays)}}},
              {"variance_per_sample",
               {{"student", lab.studentVariance}, {"solution", lab.solutionVariance}}},
-             {"efficiency_ratio", lab.efficiencyRatio}});
+             {"efficiency_ratio", measuredOrNull(lab.efficiencyRatio)}});
     }
     nlohmann::json ratios = nlohmann::json::object();
     for (const LabRatio& r : labRatios(report))

@@ -2,8 +2,10 @@
 // may read them (the first process's and its own environment and command line, the mounts, the
 // control groups, the descriptors it holds), prints what it found and aborts, so that the
 // grader's feedback carries it out: PATHLAB_TEST_SECRET, an environment variable the test
-// gives the grader. In the sandbox there is nothing to find: the first process is the grader's,
-// unreadable, and every file was copied in at a neutral path.
+// gives the grader; the host kernel's boot options and build; the kit's folder compiled into the
+// programs. In the sandbox there is nothing to find: the first process is the grader's,
+// unreadable, every file was copied in at a neutral path, the kernel's files read as nothing,
+// and the programs name their sources from the kit's folder.
 #include "pathlab/lab.h"
 
 #include <cstdio>
@@ -55,6 +57,13 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
                              "/proc/self/cmdline", "/proc/self/mountinfo", "/proc/1/mountinfo",
                              "/proc/self/cgroup", "/proc/sys/kernel/hostname"})
         found += findings(contents(file));
+    // The host's kernel (its boot options and build) and the kit's folder on the host, compiled
+    // into the programs the sandbox runs.
+    for (const char* file : {"/proc/cmdline", "/proc/version"})
+        if (!contents(file).empty()) found += std::string(" readable:") + file;
+    for (const char* program : {"/pathlab/viewer", "/pathlab/init"})
+        if (contents(program).find("@SOURCE@/") != std::string::npos)
+            found += std::string(" host-path-in:") + program;
     if (DIR* fds = ::opendir("/proc/self/fd")) {
         while (const dirent* entry = ::readdir(fds)) {
             char target[512] = {};
