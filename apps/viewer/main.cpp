@@ -12,6 +12,7 @@
 #include "pathlab/image_io.h"
 #include "pathlab/inspection_json.h"
 #include "pathlab/input_error.h"
+#include "pathlab/pixel_efficiency_map.h"
 #include "pathlab/pixel_noise_map.h"
 #include "pathlab/relative_error_map.h"
 #include "pathlab/program_main.h"
@@ -84,18 +85,30 @@ std::vector<std::string> writeMaps(const HeadlessExtras& extras, const RenderOpt
     if (!extras.maps.errorImages.empty()) {
         const std::vector<float> error = relativeErrorMap(image, extras.reference.rgb);
         for (const std::string& path : extras.maps.errorImages)
-            lines.push_back(
-                viewer::writeMapFile(named(path), options.width, options.height, error,
-                                     "relative squared error against " + extras.referenceFile));
+            lines.push_back(viewer::writeMapFile(
+                named(path), options.width, options.height, error,
+                "relative squared error against " + extras.referenceFile, extras.maps.range));
     }
-    if (!extras.maps.noiseImages.empty()) {
+    if (!extras.maps.noiseImages.empty() || !extras.maps.efficiencyImages.empty()) {
         std::vector<float> variance;
         result.image.varianceImage(variance);
         const std::vector<float> noise =
             relativeStandardErrorMap(image, variance, result.image.samplesPerPixel());
         for (const std::string& path : extras.maps.noiseImages)
             lines.push_back(viewer::writeMapFile(named(path), options.width, options.height, noise,
-                                                 "relative standard error per pixel"));
+                                                 "relative standard error per pixel",
+                                                 extras.maps.range));
+        // Charged by CPU time, as the panel's and --stats' efficiency; wall-clock time where no
+        // CPU time was measured.
+        const bool byCpu = result.stats.cpuSeconds > 0;
+        const std::vector<float> efficiency =
+            efficiencyMap(noise, byCpu ? result.stats.cpuSeconds : result.stats.seconds);
+        for (const std::string& path : extras.maps.efficiencyImages)
+            lines.push_back(
+                viewer::writeMapFile(named(path), options.width, options.height, efficiency,
+                                     std::string("efficiency per pixel, 1/(relative variance x ") +
+                                         (byCpu ? "CPU-seconds" : "seconds") + " per sample)",
+                                     extras.maps.range));
     }
     return lines;
 }

@@ -18,20 +18,22 @@ MapFormat mapFormatOf(const std::string& path) {
 }
 
 std::string writeMapFile(const std::string& path, int width, int height,
-                         const std::vector<float>& values, const std::string& what) {
+                         const std::vector<float>& values, const std::string& what,
+                         const std::optional<LogScale>& range) {
     if (mapFormatOf(path) != MapFormat::Png) {
         std::vector<float> rgb(3 * values.size());
         for (size_t i = 0; i < values.size(); ++i) std::fill_n(&rgb[3 * i], 3, values[i]);
         writeImage(path, width, height, rgb);
         return "wrote " + path + ": " + what;
     }
-    const LogScale scale = decadeScale(values);
+    const LogScale scale = range ? *range : decadeScale(values);
     std::vector<unsigned char> rgba;
     logScaleImage(values, scale, rgba);
     writeDisplayImage(path, width, height + scaleBarHeight(width),
                       withScaleBarBelow(rgba, width, height, scale));
     return "wrote " + path + ": " + what + ", log scale " + scaleLabel(scale.low) + " (black) to " +
-           scaleLabel(scale.high) + " (red), grey: 0 or no value; scale bar beneath";
+           scaleLabel(scale.high) + " (red)" + (range ? " as --map-range set" : "") +
+           ", grey: 0 or no value; scale bar beneath";
 }
 
 } // namespace pathlab::viewer

@@ -32,7 +32,8 @@ json vertexJson(const InspectedVertex& v) {
     for (const PathContinuation& c : v.continuedBy)
         continued.push_back({{"child", c.child},
                              {"component", c.component},
-                             {"probability", optional(c.probability)}});
+                             {"probability", optional(c.probability)},
+                             {"weighted_by", c.weightedBy.empty() ? json() : json(c.weightedBy)}});
     json roulette = nullptr;
     if (v.roulette)
         roulette = {{"draw", v.roulette->draw},
@@ -57,6 +58,7 @@ json vertexJson(const InspectedVertex& v) {
               {"Ni", v.material.Ni}}},
             {"emitted", rgb(v.emitted)},
             {"throughput", optionalColor(v.throughput)},
+            {"linear", v.linear},
             {"emission_weight", optionalColor(v.emissionWeight)},
             {"emission_added", rgb(v.emissionAdded)},
             {"direct_light_called", v.directLightCalled},
@@ -106,6 +108,7 @@ InspectedVertex vertexOf(const json& j) {
                   m.at("Ni").get<float>(), colorOf(m.at("Ke"))};
     v.emitted = colorOf(j.at("emitted"));
     v.throughput = optionalColorOf(j.at("throughput"));
+    v.linear = j.value("linear", true);
     v.emissionWeight = optionalColorOf(j.at("emission_weight"));
     v.emissionAdded = colorOf(j.at("emission_added"));
     v.directLightCalled = j.at("direct_light_called").get<bool>();
@@ -116,10 +119,12 @@ InspectedVertex vertexOf(const json& j) {
                                     vec3Of(j.at("shadow_ray").at("to"))};
     v.draws = j.at("draws").get<std::vector<float>>();
     for (const json& c : j.at("continued_by"))
-        v.continuedBy.push_back({c.at("child").get<int>(), c.at("component").get<std::string>(),
-                                 c.at("probability").is_null()
-                                     ? std::nullopt
-                                     : std::optional<float>(c.at("probability").get<float>())});
+        v.continuedBy.push_back(
+            {c.at("child").get<int>(), c.at("component").get<std::string>(),
+             c.at("probability").is_null() ? std::nullopt
+                                           : std::optional<float>(c.at("probability").get<float>()),
+             c.value("weighted_by", json()).is_string() ? c.at("weighted_by").get<std::string>()
+                                                        : std::string()});
     if (!j.at("roulette").is_null())
         v.roulette = RouletteDraw{j.at("roulette").at("draw").get<float>(),
                                   j.at("roulette").at("continue_prob").get<float>(),

@@ -1,6 +1,7 @@
 #include "pathlab/inspection_table.h"
 
 #include <cstdio>
+#include <cstdlib>
 
 namespace pathlab {
 
@@ -9,6 +10,18 @@ namespace {
 std::string number(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3g", value);
+    return text;
+}
+
+/// A roulette draw, with the digits it takes to stay on its side of continueProb and below 1:
+/// 0.9996 is not "1".
+std::string drawNumber(float draw, float continueProb) {
+    char text[32];
+    for (int digits = 3; digits <= 9; ++digits) {
+        std::snprintf(text, sizeof text, "%.*g", digits, draw);
+        const float shown = std::strtof(text, nullptr);
+        if ((shown < continueProb) == (draw < continueProb) && (shown < 1) == (draw < 1)) break;
+    }
     return text;
 }
 
@@ -36,15 +49,19 @@ std::string wentOn(const InspectedVertex& v) {
     std::string text;
     for (const PathContinuation& c : v.continuedBy) {
         if (!text.empty()) text += " ";
-        text += c.component + "→" + std::to_string(c.child) + " /" +
-                (c.probability ? number(*c.probability) : std::string("?"));
+        // A weight that is another component's colour is no division: said as what it is.
+        text += c.component + "→" + std::to_string(c.child) +
+                (!c.weightedBy.empty() ? " weighted by " + c.weightedBy
+                 : c.probability       ? " /" + number(*c.probability)
+                                       : std::string(" /?"));
     }
     if (v.roulette) {
         // The lab's first draw at the vertex, taken as its roulette draw: where going on and
         // the draw disagree, the table says so (a kept depth limit, a draw from elsewhere).
         const bool below = v.roulette->draw < v.roulette->continueProb;
-        text += std::string(text.empty() ? "" : " ") + "(roulette " + number(v.roulette->draw) +
-                (below ? " < " : " >= ") + number(v.roulette->continueProb) + ")";
+        text += std::string(text.empty() ? "" : " ") + "(roulette " +
+                drawNumber(v.roulette->draw, v.roulette->continueProb) + (below ? " < " : " >= ") +
+                number(v.roulette->continueProb) + ")";
         // A surface that scatters nothing (a light's, all of Kd, Ks and Kt black) ends the path
         // whatever the draw said.
         const Material& m = v.material;
@@ -89,9 +106,11 @@ std::string inspectionTable(const PixelInspection& inspection) {
     std::string out = inspection.lab + " (" + inspection.implementation + "), pixel (" +
                       std::to_string(inspection.x) + ", " + std::to_string(inspection.y) +
                       "), seed " + std::to_string(inspection.seed) + "\n";
+    bool nonLinear = false;
     for (const InspectedSample& sample : inspection.samples) {
         out += "sample " + std::to_string(sample.index) + ": value " + colour(sample.contribution) +
                "\n";
+        for (const InspectedVertex& v : sample.vertices) nonLinear = nonLinear || !v.linear;
         appendRow(out, format, "v", "arrived by", "from", "material", "throughput", "emission +",
                   "direct +", "went on by / divided by");
         for (const InspectedVertex& v : sample.vertices) {
@@ -102,15 +121,23 @@ std::string inspectionTable(const PixelInspection& inspection) {
                 continue;
             }
             appendRow(out, format, std::to_string(v.index), v.arrivedBy, from, material(v.material),
-                      v.throughput ? colour(*v.throughput) : "?", colour(v.emissionAdded),
+                      v.throughput ? colour(*v.throughput) + (v.linear ? "" : " NOT LINEAR") : "?",
+                      colour(v.emissionAdded),
                       v.directLightCalled ? colour(v.directLightAdded) : "not asked",
                       wentOn(v) + depthNote(v, inspection));
         }
     }
+    if (nonLinear)
+        out +=
+            "NOT LINEAR: your lab's value does not grow in proportion to the light found at a\n"
+            " vertex (twice the light, not twice the value): a clamp, a min() or a cap on what a\n"
+            " ray brings back? A clamp is biased, and the weights and probabilities measured\n"
+            " there mean nothing (the grader's light-linearity check says the same).\n";
     out +=
         "(throughput: the weight the lab gave light found at the vertex; emission + and direct +:\n"
         " what it added there; went on by: the ray to the next vertex and the probability divided\n"
-        " by, ? where it cannot be measured, as for a ray that left the scene.)\n";
+        " by, ? where it cannot be measured, as for a ray that left the scene; weighted by Kt:\n"
+        " the ray's weight is another component's colour, not its own's.)\n";
     return out;
 }
 

@@ -351,6 +351,14 @@ size_t drawsOf(const InspectedSample& sample) {
     return draws;
 }
 
+/// Whether a sample's path traced a ray after the camera's: a lab that never bounces (a stub)
+/// needs no random number, and is told what it does not trace rather than where its numbers
+/// come from.
+bool bounced(const InspectedSample& sample) {
+    return std::count_if(sample.calls.begin(), sample.calls.end(),
+                         [](const InspectedCall& call) { return call.type == "trace"; }) > 1;
+}
+
 } // namespace
 
 PathComparison comparePaths(const PixelInspection& lab, const PixelInspection& reference) {
@@ -359,11 +367,13 @@ PathComparison comparePaths(const PixelInspection& lab, const PixelInspection& r
     // A lab that takes none of its numbers from ctx.sampler has paths unrelated to the
     // reference's: any first difference would be chance.
     size_t ours = 0, theirs = 0;
+    bool labBounced = false;
     for (size_t s = 0; s < samples; ++s) {
         ours += drawsOf(lab.samples[s]);
         theirs += drawsOf(reference.samples[s]);
+        labBounced = labBounced || bounced(lab.samples[s]);
     }
-    if (ours == 0 && theirs > 0) {
+    if (ours == 0 && theirs > 0 && labBounced) {
         comparison.samplesCompared = samples;
         comparison.comparable = false;
         comparison.divergence = PathDivergence{

@@ -16,12 +16,11 @@ bool samePosition(const Vec3& a, const Vec3& b) { return std::memcmp(&a, &b, siz
 
 } // namespace
 
-Color PathProbe::changed(const Color& actual) {
+Color PathProbe::changed(const Color& actual, float scale) {
     // A large change: the sample's value is a float sum of everything the path found, and the
     // change must stand far above that sum's rounding even where the lab's weight is tiny (a
     // vertex 30 roulette bounces deep). Linear arithmetic is as exact at this scale as at 1.
-    constexpr float Scale = 65536;
-    const auto channel = [](float value) { return value != 0 ? value * (1 + Scale) : Scale; };
+    const auto channel = [scale](float value) { return value != 0 ? value * (1 + scale) : scale; };
     return {channel(actual.r), channel(actual.g), channel(actual.b)};
 }
 
@@ -60,7 +59,7 @@ Hit PathRecorder::traced(const Ray& ray, Hit hit, const Sampler& now) {
     directLights_.emplace_back();
     if (probe_.value == PathProbe::Value::Emission && probe_.vertex == vertex && hit.found) {
         // A lab may read the emission from the material as well as from the hit.
-        hit.emitted = PathProbe::changed(hit.emitted);
+        hit.emitted = PathProbe::changed(hit.emitted, probe_.scale);
         hit.material.Ke = hit.emitted;
     }
     return hit;
@@ -77,7 +76,7 @@ Color PathRecorder::directLit(const Hit& hit, Color light, bool sentShadowRay,
         directLights_[static_cast<size_t>(vertex)] = recorded;
     }
     if (probe_.value == PathProbe::Value::DirectLight && probe_.vertex == vertex)
-        return PathProbe::changed(light);
+        return PathProbe::changed(light, probe_.scale);
     return light;
 }
 

@@ -8,6 +8,7 @@
 #include "pathlab/render_scene.h"
 #include "pathlab/scattering.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -83,9 +84,24 @@ std::optional<Color> measuredWeight(const SampleReplayer& replayer, uint64_t sam
                                     const Replay& base, PathProbe probe, const Color& actual) {
     const Replay probed = replayer.run(sample, probe);
     if (!sameCalls(base, probed)) return std::nullopt;
-    const Color given = PathProbe::changed(actual) - actual; // no channel is 0
+    const Color given = PathProbe::changed(actual, probe.scale) - actual; // no channel is 0
     const Color change = probed.contribution - base.contribution;
     return Color{change.r / given.r, change.g / given.g, change.b / given.b};
+}
+
+/// Whether the lab's value is linear in the light given at a vertex: the weight measured with
+/// a change 16 times smaller agrees with `weight` to 1% (float rounding stays far below that
+/// for a weight above 1e-8). A clamp on the light a bounce returns fails it.
+bool linearAt(const SampleReplayer& replayer, uint64_t sample, const Replay& base, PathProbe probe,
+              const Color& actual, const Color& weight) {
+    probe.scale = PathProbe::DefaultScale / 16;
+    const std::optional<Color> smaller = measuredWeight(replayer, sample, base, probe, actual);
+    if (!smaller) return true; // other calls at this scale: nothing to compare
+    const auto agrees = [](float a, float b) {
+        return std::fabs(a - b) <= 1e-2f * std::max(std::fabs(a), std::fabs(b)) + 1e-12f;
+    };
+    return agrees(weight.r, smaller->r) && agrees(weight.g, smaller->g) &&
+           agrees(weight.b, smaller->b);
 }
 
 /// The vertex a ray left, and which of the framework's rays from there it is: a bounce ray's
@@ -158,6 +174,31 @@ std::optional<float> dividedBy(const InspectedVertex& from, const InspectedVerte
     return pick(*strength) * pick(*from.throughput) / after;
 }
 
+/// The other component (Kd, Ks or Kt, not the ray's own) whose colour the ray's weight equals
+/// in every channel, where the ray's own component's colour differs from it: a mirror ray
+/// weighted by Kt, say. Empty when there is none, or the throughputs cannot tell.
+std::string weightedByOther(const InspectedVertex& from, const InspectedVertex& to) {
+    const Color* own = componentStrength(from.material, to.arrivedBy);
+    if (!own || !from.throughput || !to.throughput) return "";
+    const auto same = [](float a, float b) {
+        return std::fabs(a - b) <= 1e-4f * std::max(std::fabs(a), std::fabs(b));
+    };
+    const Color& before = *from.throughput;
+    const Color& after = *to.throughput;
+    if (!(before.r > 0 && before.g > 0 && before.b > 0)) return "";
+    const Color weight{after.r / before.r, after.g / before.g, after.b / before.b};
+    const auto equal = [&](const Color& c) {
+        return same(weight.r, c.r) && same(weight.g, c.g) && same(weight.b, c.b);
+    };
+    if (equal(*own)) return "";
+    const Material& m = from.material;
+    const std::pair<const char*, const Color*> others[] = {
+        {"Kd", &m.Kd}, {"Ks", &m.Ks}, {"Kt", &m.Kt}};
+    for (const auto& [name, colour] : others)
+        if (colour != own && !isBlack(*colour) && equal(*colour)) return name;
+    return "";
+}
+
 const char* callType(PathEvent::Type type) {
     switch (type) {
     case PathEvent::Type::Trace: return "trace";
@@ -191,9 +232,12 @@ InspectedSample inspectSample(const SampleReplayer& replayer, const InspectionRe
                 vertex.directLightCalled = true;
                 vertex.directLight = light->value;
                 if (light->sentShadowRay) vertex.shadowRay = light->shadowRay;
+                const PathProbe probe{PathProbe::Value::DirectLight, vertex.index};
                 vertex.throughput =
-                    measuredWeight(replayer, sampleIndex, base,
-                                   {PathProbe::Value::DirectLight, vertex.index}, light->value);
+                    measuredWeight(replayer, sampleIndex, base, probe, light->value);
+                if (vertex.throughput)
+                    vertex.linear = linearAt(replayer, sampleIndex, base, probe, light->value,
+                                             *vertex.throughput);
             }
             vertex.emissionWeight =
                 measuredWeight(replayer, sampleIndex, base,
@@ -225,7 +269,8 @@ InspectedSample inspectSample(const SampleReplayer& replayer, const InspectionRe
     for (InspectedVertex& vertex : vertices) {
         if (vertex.parent < 0) continue;
         InspectedVertex& from = vertices[static_cast<size_t>(vertex.parent)];
-        from.continuedBy.push_back({vertex.index, vertex.arrivedBy, dividedBy(from, vertex)});
+        from.continuedBy.push_back({vertex.index, vertex.arrivedBy, dividedBy(from, vertex),
+                                    weightedByOther(from, vertex)});
     }
     if (request.usesRoulette)
         for (InspectedVertex& vertex : vertices)

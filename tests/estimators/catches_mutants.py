@@ -12,7 +12,8 @@ failed):
 - with the solutions as the student's labs, every lab's tests pass;
 - with the stubs, every lab's tests fail, saying the lab renders direct light only;
 - with a mutant, the tests of its lab (tagged [LAB]) fail and a failure message names its step
-  ("TODO STEP"); the tests of the other labs, which are the solutions, pass;
+  ("TODO STEP"), each failing furnace test naming a cause or saying that none is known; the
+  tests of the other labs, which are the solutions, pass;
 - with a mutant whose lab never returns (--endless-loop), the tests of its lab end, within a
   bounded time, with the renders' watchdog line naming the lab's file and the likely cause (the
   watchdog shortened to 2 s through PATHLAB_TEST_WATCHDOG_SECONDS, tests/support).
@@ -102,6 +103,9 @@ def main():
         check(not passed, f"{name}: the {lab} tests fail")
         check(any(f"TODO {step}" in line for line in lines),
               f"{name}: a failure of the {lab} tests names TODO {step}")
+        furnaces = [line for line in lines if "furnace" in line and "expected" in line]
+        check(all("match" in line or "No bug the grader knows" in line for line in furnaces),
+              f"{name}: each failing furnace test names a cause or says none is known")
         for other in LABS:
             if other != lab:
                 passed, lines = run_lab_tests(executable, other)

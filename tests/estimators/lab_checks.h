@@ -50,4 +50,35 @@ void checkFurnace(const LabRun& run, double expected, const std::string& formula
 /// reference's standard errors combined.
 void checkAgainstReference(const LabRun& run, const grader::Expectation& reference);
 
+/// Region by region, as the grader compares a scene: `runs` are independent renders (seeds) of
+/// one scene, and each region of their images (the whole image and each of `tiles` × `tiles`
+/// tiles), per channel, is compared with the reference by a two-sided Student t-test of the
+/// renders' mean (the spread between renders is the standard error, which holds where a few
+/// rare bright samples make the pixels' own variances mislead), the reference's standard error
+/// combined, and a relative floor of 1e-5 for regions that every sample sees alike; alpha 1e-5
+/// divided among the tests (Bonferroni); and a difference of at least MinRelativeDifference. A
+/// failure names the tiles that differ and then `likelyCause`, the grader's words for what this
+/// scene shows.
+void checkRegionsAgainstReference(const std::vector<LabRun>& runs,
+                                  const grader::Expectation& reference, int tiles,
+                                  const std::string& likelyCause);
+
+/// Each region and channel that check compares (flat [region][channel]): its t, and its mean's
+/// difference from the reference's relative to the reference's.
+struct RegionDifference {
+    double t = 0, relative = 0;
+};
+std::vector<RegionDifference> regionDifferences(const std::vector<LabRun>& runs,
+                                                const grader::Expectation& reference, int tiles);
+
+/// The critical value of |t|, and the smallest relative difference that counts: the grader's own
+/// check has its seeds and retries for small differences; these tests are for bugs that change a
+/// region by tens of percent, and a heavy-tailed lab's t over 16 renders is only roughly
+/// Student's (its few bright samples skew it).
+double regionCritical(size_t renders, size_t tests);
+constexpr double MinRelativeDifference = 0.05;
+
+/// Whether a region and channel differs: beyond both.
+bool differs(const RegionDifference& d, double critical);
+
 } // namespace pathlab::test

@@ -19,11 +19,19 @@ Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
   grader options must appear in `grader --help`, make targets must exist (`make -n`), ctest
   selections must select tests (`ctest -N`), scripts must exist and be executable;
 - every TODO(labN.M) of labs/*.cpp has a section of that name in the handout the lab file names,
-  in the same order, and every labN.M section of a handout is a TODO of labs/.
+  in the same order, and every labN.M section of a handout is a TODO of labs/;
+- the figures of handouts/figures/ are by CPU time: every row of roulette_sweep.csv,
+  depth_sweep.csv, convergence.csv and estimators.csv has its samples per CPU-second (and the
+  wall clock's figures beside them), and its efficiency is 1/(relative MSE × CPU seconds), within
+  the CSV's rounding; `make sweep` and `make convergence` read them as the handout's rows
+  (scripts/sweep.py, scripts/convergence.py); and, in the kit (make_figures.py is not in the
+  release), each generated block of the handouts is what make_figures.py makes of those numbers.
 Needs no display.
 """
 import argparse
+import csv
 import glob
+import importlib
 import json
 import os
 import re
@@ -323,6 +331,183 @@ def check_rubric_numbers(source, readme):
               + (f" (quotes {found})" if found else ""))
 
 
+def close(a, b, relative=3e-3, absolute=1e-4):
+    """Equal within the CSVs' rounding: 4 significant digits, or 4 decimals for efficiencies."""
+    return abs(a - b) <= max(relative * max(abs(a), abs(b)), absolute)
+
+
+def csv_rows(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def positive(row, *columns):
+    try:
+        return all(float(row[c]) > 0 for c in columns)
+    except (KeyError, TypeError, ValueError):
+        return False
+
+
+def check_figure_tables(source):
+    """The CSVs of handouts/figures/: figures by CPU time, the wall clock's beside them, and
+    efficiency per CPU-second, each row consistent with itself."""
+    figures = os.path.join(source, "handouts", "figures")
+    sweep = csv_rows(os.path.join(figures, "roulette_sweep.csv"))
+    check(sweep and all(positive(r, "samples_per_cpu_second", "cpu_seconds", "seconds",
+                                 "samples_per_second") for r in sweep),
+          f"roulette_sweep.csv: samples per CPU-second and CPU seconds in every row ({len(sweep)})")
+    off = [(r["continue_prob"], r["efficiency"]) for r in sweep if positive(r, "cpu_seconds") and
+           not close(float(r["efficiency"]),
+                     1 / (float(r["relative_rmse"]) ** 2 * float(r["cpu_seconds"])))]
+    check(sweep and not off,
+          f"roulette_sweep.csv: efficiency is 1/(relative MSE × CPU seconds) {off[:3] or ''}")
+    depth = csv_rows(os.path.join(figures, "depth_sweep.csv"))
+    off = [(r["lab"], r["max_depth"]) for r in depth if not positive(r, "cpu_seconds", "noise") or
+           not close(float(r["efficiency"]), 1 / (float(r["noise"]) ** 2 * float(r["cpu_seconds"])))]
+    check(depth and all(positive(r, "samples_per_cpu_second", "samples_per_second") for r in depth)
+          and not off,
+          f"depth_sweep.csv: samples per CPU-second, and efficiency 1/(noise² × CPU seconds), in "
+          f"every row {off[:3] or ''}")
+    convergence = csv_rows(os.path.join(figures, "convergence.csv"))
+    off = [(r["estimator"], r["spp"]) for r in convergence
+           if not positive(r, "cpu_seconds", "seconds", "samples_per_cpu_second", "relative_rmse")
+           or not close(float(r["efficiency"]),
+                        1 / (float(r["relative_rmse"]) ** 2 * float(r["cpu_seconds"])))]
+    check(convergence and not off,
+          f"convergence.csv: CPU and wall seconds, samples per CPU-second, and efficiency "
+          f"1/(relative MSE × CPU seconds) in every row {off[:3] or ''}")
+    with open(os.path.join(figures, "run.json")) as f:
+        window = json.load(f)["parameters"]["window_size"]
+    estimators = csv_rows(os.path.join(figures, "estimators.csv"))
+    off = [r["estimator"] for r in estimators
+           if not positive(r, "samples_per_cpu_second", "window_samples_per_cpu_second", "noise",
+                           "frame_rate", "efficiency_wall")
+           or not close(float(r["efficiency"]), float(r["window_samples_per_cpu_second"]) /
+                        (float(r["noise"]) ** 2 * float(r["noise_spp"]) * window * window))]
+    check(estimators and not off,
+          f"estimators.csv: the window's frame rate and samples per CPU-second, and efficiency "
+          f"per CPU-second, in every row {off or ''}")
+
+
+def import_script(folder, name):
+    """A script of the kit as a module (make sweep's, make convergence's, make_figures.py)."""
+    if folder not in sys.path:
+        sys.path.insert(0, folder)
+    return importlib.import_module(name)
+
+
+def check_handout_rows(source):
+    """make sweep and make convergence draw the handout's figures beside a student's: they read
+    handouts/figures/ by CPU time."""
+    sweep = import_script(os.path.join(source, "scripts"), "sweep")
+    for lab, estimate in sweep.labs_and_estimates().items():
+        parameter = next(p for p in sweep.PARAMETERS.values() if p.estimate == estimate)
+        rows = sweep.handout_rows(sweep.Sweep(lab, parameter, parameter.defaults,
+                                              sweep.DEFAULT_SIZE, sweep.DEFAULT_SPP, False))
+        check(len(rows) >= 2 and all(positive(r, "samples_per_cpu_second", "efficiency")
+                                     for r in rows),
+              f"make sweep LAB={lab} reads the handout's {len(rows)} rows of {parameter.label}, "
+              "with their samples per CPU-second")
+    convergence = import_script(os.path.join(source, "scripts"), "convergence")
+    rows = convergence.handout_rows()
+    labs = {lab for lab, _, _ in convergence.LABS}
+    check({r["lab"] for r in rows} == labs and
+          all(positive(r, "cpu_seconds_256", "samples_per_cpu_second") for r in rows),
+          f"make convergence reads the handout's curves of the four labs by CPU time "
+          f"({len(rows)} rows)")
+
+
+def check_generated_blocks(source, handouts):
+    """Each generated block of the handouts is what make_figures.py makes of handouts/figures/
+    (its tables rewritten after the numbers changed). make_figures.py is not in the release."""
+    tools = os.path.join(source, "handouts", "tools")
+    if not os.path.exists(os.path.join(tools, "make_figures.py")):
+        print("skipped: the generated blocks against handouts/figures/ (the student release has "
+              "no make_figures.py)", flush=True)
+        return
+    blocks = import_script(tools, "make_figures").generated_blocks(
+        os.path.join(source, "handouts", "figures"))
+    for path in handouts:
+        found = re.findall(r"<!-- BEGIN generated: ([\w-]+) -->\n(.*?)\n<!-- END generated: \1 -->",
+                           read(path), re.S)
+        if not found:
+            continue
+        stale = [name for name, text in found if name in blocks and blocks[name] != text]
+        check(not stale, f"{os.path.basename(path)}: its generated blocks are those of "
+                         f"handouts/figures/ (make_figures.py --blocks-only) {stale or ''}")
+
+
+def inspect_solution(source, build, lab, x, y, samples, *extra):
+    """The reference solution's inspection of pixel (x, y) of the VI2 box, as JSON."""
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "inspection.json")
+        scene = os.path.join(source, "models", "cornell_box_VI2_Specular.ecs")
+        run = subprocess.run([os.path.join(build, "viewer"), "-c", scene, "--lab", lab,
+                              "--solution", "--inspect", str(x), str(y),
+                              "--inspect-samples", str(samples), "--inspect-out", out, *extra],
+                             capture_output=True, text=True, timeout=120,
+                             env={k: v for k, v in os.environ.items() if k != "DISPLAY"})
+        if run.returncode != 0:
+            return None
+        return json.load(open(out))
+
+
+def first_vertices(source, build, lab, x, y):
+    inspection = inspect_solution(source, build, lab, x, y, 4)
+    return [s["vertices"][0] for s in (inspection or {}).get("samples", [])]
+
+
+# The pixels the handouts inspect, by the words that say what they show: (document, pattern of
+# the pixel, what the text says, whether the reference solution's first vertex shows it). The
+# VI2 box's .obj: the back wall is the plane z = 559.2, the floor y = 0, the red wall x = 550
+# or so (it leans); the glass sphere is Ks 0.1 Kt 0.9, the floor Kd with a mirror Ks.
+NAMED_PIXELS = [
+    ("handouts/01-branching.md", r"the glass sphere:\s*```sh\s*make inspect LAB=\w+ X=(\d+) Y=(\d+)",
+     "the glass sphere", lambda v: max(v["material"]["Kt"]) > 0),
+    ("handouts/01-branching.md", r"back wall \(`X=(\d+) Y=(\d+)`\)", "the back wall, lit",
+     lambda v: abs(v["position"][2] - 559.2) < 0.1 and max(v["direct_light"]) > 0),
+    ("handouts/02-uniform-pick.md", r"The floor has a diffuse and a mirror component:\s*```sh\s*"
+     r"make inspect LAB=\w+ X=(\d+) Y=(\d+)", "the floor, diffuse and mirror",
+     lambda v: abs(v["position"][1]) < 0.1 and max(v["material"]["Kd"]) > 0
+     and max(v["material"]["Ks"]) > 0),
+    ("handouts/03-importance-pick.md", r"The same pixel of the floor as in lab 2[^`]*```sh\s*"
+     r"make inspect LAB=\w+ X=(\d+) Y=(\d+)", "the floor, diffuse and mirror",
+     lambda v: abs(v["position"][1]) < 0.1 and max(v["material"]["Kd"]) > 0
+     and max(v["material"]["Ks"]) > 0),
+    ("handouts/04-russian-roulette.md", r"Pixel \((\d+), (\d+)\) of the red wall", "the red wall",
+     lambda v: v["position"][0] > 540 and v["material"]["Kd"][0] > 2 * v["material"]["Kd"][1]),
+]
+
+
+def check_inspected_pixels(source, build):
+    """What the handouts say of the pixels they inspect holds for the reference solutions (each
+    named pixel's first vertex, in every one of 4 samples, is on the surface the text names), and
+    handout 4's seeds have a path that survives three bounces at continueProb 0.1 among 256
+    samples."""
+    if not os.path.isdir(os.path.join(source, "solutions")):
+        return  # the student release has no --solution
+    for document, pattern, says, shows in NAMED_PIXELS:
+        found = re.search(pattern, read(os.path.join(source, document)))
+        check(found is not None, f"{document} names a pixel of {says}")
+        if not found:
+            continue
+        x, y = found.groups()
+        firsts = first_vertices(source, build, "branching", x, y)
+        check(firsts and all(v["found"] and shows(v) for v in firsts),
+              f"{document}: pixel ({x}, {y}) shows {says} (first vertex at "
+              f"{[[round(c, 1) for c in v['position']] for v in firsts[:1]]}, material "
+              f"{firsts[0]['material'] if firsts else None})")
+    four = read(os.path.join(source, "handouts", "04-russian-roulette.md"))
+    seeds = re.search(r"the reference solution has one at seeds (\d+) and (\d+)", four)
+    check(seeds is not None, "handout 4 names the seeds with a path of three bounces")
+    for seed in seeds.groups() if seeds else []:
+        inspection = inspect_solution(source, build, "roulette", 30, 256, 256, "--continue-prob", "0.1",
+                                      "--seed", seed)
+        longest = max((len(s["vertices"]) for s in (inspection or {}).get("samples", [])), default=0)
+        check(longest >= 4, f"handout 4: at seed {seed}, a path of pixel (30, 256) reaches vertex 3 "
+                            f"at continueProb 0.1 (longest: {longest} vertices)")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--build", required=True)
@@ -343,6 +528,10 @@ def main():
         check_commands(source, build, handouts + [readme], scratch)
     check_todos(source, handouts)
     check_rubric_numbers(source, readme)
+    check_figure_tables(source)
+    check_handout_rows(source)
+    check_generated_blocks(source, handouts)
+    check_inspected_pixels(source, build)
     return exit_code()
 
 

@@ -28,7 +28,7 @@ PixelInspection rouletteSample(const Material& first, int vertices, std::vector<
         if (i > 0) v.material.Kd = {0.5f, 0.5f, 0.5f}, v.material.Ke = {};
         const bool last = i == vertices - 1;
         if (!last) {
-            v.continuedBy.push_back({i + 1, "diffuse", 0.4f});
+            v.continuedBy.push_back({i + 1, "diffuse", 0.4f, ""});
             v.roulette = RouletteDraw{0.25f, 0.8f, true};
         } else if (!endDraws.empty()) {
             v.roulette = RouletteDraw{endDraws.front(), 0.8f, false};
@@ -89,4 +89,36 @@ TEST_CASE("the replay: a lab 4 path that ends at maxDepth without a draw, where 
 
     // The same draws on both sides: nothing to say.
     CHECK(!comparePaths(reference, reference).divergence);
+}
+
+TEST_CASE("the replay: a lab that bounces without drawing from ctx.sampler is told where its "
+          "numbers come from; a stub that never bounces is told what it does not trace",
+          "[inspector]") {
+    const PixelInspection reference = rouletteSample(greyWall(), 4, {0.9f});
+    PixelInspection ownNumbers = rouletteSample(greyWall(), 4, {});
+    for (InspectedCall& call : ownNumbers.samples[0].calls) call.drawsBefore.clear();
+    const PathComparison bouncing = comparePaths(ownNumbers, reference);
+    REQUIRE(bouncing.divergence);
+    CHECK(bouncing.divergence->kind == "own-random");
+
+    // The camera ray alone, no draw: a stub, whose first difference is the bounce it lacks.
+    const PathComparison stub = comparePaths(rouletteSample(greyWall(), 1, {}), reference);
+    REQUIRE(stub.divergence);
+    CHECK(stub.divergence->kind != "own-random");
+    CHECK(stub.divergence->text.find("drew no random number") == std::string::npos);
+}
+
+TEST_CASE("the inspector's table: a roulette draw just below 1 is not shown as 1, and a ray "
+          "weighted by another component's colour says so rather than a division",
+          "[inspector]") {
+    const std::string high = inspectionTable(rouletteSample(greyWall(), 1, {0.9996f}));
+    CHECK(high.find("(roulette 0.9996 >= 0.8)") != std::string::npos);
+    const std::string near = inspectionTable(rouletteSample(greyWall(), 1, {0.79999f}));
+    CHECK(near.find("(roulette 0.79999 < 0.8)") != std::string::npos);
+
+    PixelInspection weighted = rouletteSample(greyWall(), 2, {0.9f});
+    weighted.samples[0].vertices[0].continuedBy[0] = {1, "mirror", 0.111f, "Kt"};
+    const std::string table = inspectionTable(weighted);
+    CHECK(table.find("mirror→1 weighted by Kt") != std::string::npos);
+    CHECK(table.find("/0.111") == std::string::npos);
 }

@@ -10,7 +10,10 @@ any failed. Fixed seeds throughout.
   (r/2)^2 / ((r/2)^2 + 0.01), computed here from the render's own pixels.
 - Bad input (a reference of another size, a missing or unreadable one, --error-image without
   --reference, a map that is neither .exr nor .png, --noise-image at 1 spp, an unknown --view)
-  is one line naming the option, exit status 2, and nothing written.
+  is one line naming the option, exit status 2, and nothing written; so is --efficiency-image at
+  1 spp and a --map-range that is no log scale or has no map to draw.
+- The efficiency map is 1/(relative standard error^2 x CPU-seconds) of the same run's noise map;
+  --map-range LO HI colours two renders' PNGs on that one scale.
 - The noise map's PNG, read here pixel by pixel: beneath the image a scale bar that runs through
   the palette (black, blue, green, yellow, red) from left to right, with its end values written
   under it; the printed scale is whole decades around the values of the map's EXR (written in
@@ -147,6 +150,10 @@ def bad_input_writes_nothing(tmp, ref):
         (["--reference", ref, "--error-image", "E.pfm"], "--error-image"),
         (["--noise-image", "N.hdr"], "--noise-image"),
         (["--noise-image", "N.png", "--spp", "1"], "--noise-image"),
+        (["--efficiency-image", "E.png", "--spp", "1"], "--efficiency-image"),
+        (["--noise-image", "N.png", "--map-range", "0", "1"], "--map-range"),
+        (["--noise-image", "N.png", "--map-range", "1", "0.1"], "--map-range"),
+        (["--map-range", "0.01", "1"], "--map-range"),
         (["--view", "sideways"], "--view"),
     ]
     for extra, option in cases:
@@ -182,13 +189,7 @@ def noise_png_has_its_scale(tmp):
     width, height, rows = read_png(png)
     check(width == WIDTH and height > HEIGHT + 8, f"the PNG is the map with a strip beneath "
                                                   f"({width}x{height})")
-    off = 0
-    for y in range(HEIGHT):
-        for x in range(WIDTH):
-            v = values[y * WIDTH + x]
-            want = (128, 128, 128) if v <= 0 else heat(math.log10(v / low) / decades)
-            got = rows[y][x]
-            off += max(abs(a - b) for a, b in zip(want, got)) > 2
+    off = pixels_off_scale(values, rows, low, high)
     check(off == 0, f"every pixel has the palette's colour at its value's place on the scale "
                     f"({off} of {WIDTH * HEIGHT} differ)")
     bar = None
@@ -207,6 +208,52 @@ def noise_png_has_its_scale(tmp):
              if rgb == (255, 255, 255)]
     check(any(x < WIDTH // 3 for x, _ in white) and any(x > 2 * WIDTH // 3 for x, _ in white),
           f"the bar's two ends are labelled beneath it ({len(white)} label pixels)")
+
+
+def pixels_off_scale(values, rows, low, high):
+    """How many pixels of a map's PNG are not the palette's colour at their EXR value's place on
+    the log scale low..high (grey for no value)."""
+    decades = math.log10(high / low)
+    off = 0
+    for y in range(HEIGHT):
+        for x in range(WIDTH):
+            v = values[y * WIDTH + x]
+            want = (128, 128, 128) if v <= 0 else heat(math.log10(v / low) / decades)
+            off += max(abs(a - b) for a, b in zip(want, rows[y][x])) > 2
+    return off
+
+
+def efficiency_map_and_fixed_range(tmp):
+    """--efficiency-image is 1/(relative standard error^2 x CPU-seconds) of the noise map of the
+    same run, computed here from the two EXRs and --stats' cpu_seconds; --map-range puts two
+    renders' PNGs on the one scale it names."""
+    noise, efficiency = os.path.join(tmp, "n2.exr"), os.path.join(tmp, "e2.exr")
+    stats = os.path.join(tmp, "e2.json")
+    run = viewer(*COMMON, "--spp", "16", "-o", os.path.join(tmp, "e2.pfm"), "--noise-image", noise,
+                 "--efficiency-image", efficiency, "--stats", stats)
+    check(run.returncode == 0 and os.path.exists(efficiency) and "CPU-seconds per sample" in run.stdout,
+          f"--efficiency-image writes the map, charged by CPU time: {run.stdout.strip()[-200:]!r}")
+    if run.returncode != 0:
+        return
+    cpu = json.load(open(stats))["cpu_seconds"]
+    pairs = list(zip(exr_values(noise), exr_values(efficiency)))
+    wrong = [(n, e) for n, e in pairs
+             if (n > 0 and abs(e - 1 / (n * n * cpu)) > 1e-3 * e) or (n <= 0 and e != 0)]
+    check(cpu > 0 and not wrong and any(n > 0 for n, _ in pairs),
+          f"each pixel's efficiency is 1/(noise^2 x {cpu:.3g} CPU-s) ({len(wrong)} of "
+          f"{len(pairs)} differ: {wrong[:3]})")
+    for spp in ("4", "64"):
+        exr, png = os.path.join(tmp, f"r{spp}.exr"), os.path.join(tmp, f"r{spp}.png")
+        run = viewer(*COMMON, "--spp", spp, "-o", os.path.join(tmp, f"r{spp}.pfm"),
+                     "--noise-image", exr, "--noise-image", png, "--map-range", "0.001", "1")
+        check(run.returncode == 0 and "log scale 0.001 (black) to 1 (red) as --map-range set"
+              in run.stdout, f"--map-range 0.001 1 at {spp} spp: the PNG's scale is the one given "
+                             f"({run.stdout.strip()[-160:]!r})")
+        if run.returncode != 0:
+            continue
+        _, _, rows = read_png(png)
+        off = pixels_off_scale(exr_values(exr), rows, 0.001, 1)
+        check(off == 0, f"... and at {spp} spp every pixel is coloured on it ({off} differ)")
 
 
 def window_maps(tmp):
@@ -255,6 +302,7 @@ def main():
         ref = reference_figures(tmp)
         bad_input_writes_nothing(tmp, ref)
         noise_png_has_its_scale(tmp)
+        efficiency_map_and_fixed_range(tmp)
         window_maps(tmp)
     sys.exit(exit_code())
 

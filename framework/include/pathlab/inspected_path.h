@@ -25,6 +25,10 @@ struct PathContinuation {
     /// strongest channel) over the weight the lab gave the ray. In lab 4 it includes
     /// continueProb. Unknown when a throughput could not be measured.
     std::optional<float> probability;
+    /// Another component whose colour the lab weighted the ray by ("Kt" for a mirror ray given
+    /// Kt's weight), when the weight is exactly that colour and not the ray's own component's:
+    /// then `probability` is no division the lab made. Empty otherwise.
+    std::string weightedBy;
 };
 
 /// Russian roulette at a vertex, for a lab that uses continueProb: the lab's first random number
@@ -50,6 +54,9 @@ struct InspectedVertex {
     /// direct light (or, where the lab called no directLight, on the emission). Unknown when
     /// neither was measurable.
     std::optional<Color> throughput;
+    /// Whether the sample's value is linear in the direct light found here (measured with two
+    /// sizes of change): where it is not (a clamp), `throughput` is no weight the lab gave.
+    bool linear = true;
     std::optional<Color> emissionWeight; ///< the weight of `emitted` in the sample (0: not added)
     Color emissionAdded;                 ///< emissionWeight × emitted
     bool directLightCalled = false;

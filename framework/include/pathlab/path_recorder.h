@@ -28,10 +28,15 @@ struct PathProbe {
     Value value = Value::None;
     int vertex = -1; ///< the trace() that found the vertex, counted from 0
 
-    /// What the lab receives instead of `actual`: each channel 65537 times as large, or 65536
-    /// where it is 0. A colour that was not black stays so; a black one does not, and the
-    /// replay checks that the lab then made the same calls.
-    static Color changed(const Color& actual);
+    /// How large the change is: the weight is measured at the default scale, and again at a
+    /// smaller one to tell whether the lab is linear in the light at all (a clamp is not).
+    static constexpr float DefaultScale = 65536;
+    float scale = DefaultScale;
+
+    /// What the lab receives instead of `actual`: each channel 1 + `scale` times as large, or
+    /// `scale` where it is 0. A colour that was not black stays so; a black one does not, and
+    /// the replay checks that the lab then made the same calls.
+    static Color changed(const Color& actual, float scale = DefaultScale);
 };
 
 /// One call a lab made, in the order made.
