@@ -133,11 +133,18 @@ std::string inspectionTable(const PixelInspection& inspection) {
             " vertex (twice the light, not twice the value): a clamp, a min() or a cap on what a\n"
             " ray brings back? A clamp is biased, and the weights and probabilities measured\n"
             " there mean nothing (the grader's light-linearity check says the same).\n";
+    bool weightedByOther = false;
+    for (const InspectedSample& sample : inspection.samples)
+        for (const InspectedVertex& v : sample.vertices)
+            for (const PathContinuation& c : v.continuedBy)
+                weightedByOther = weightedByOther || !c.weightedBy.empty();
     out +=
         "(throughput: the weight the lab gave light found at the vertex; emission + and direct +:\n"
         " what it added there; went on by: the ray to the next vertex and the probability divided\n"
-        " by, ? where it cannot be measured, as for a ray that left the scene; weighted by Kt:\n"
-        " the ray's weight is another component's colour, not its own's.)\n";
+        " by, ? where it cannot be measured: a ray that left the scene, a vertex NOT LINEAR" +
+        std::string(weightedByOther ? ";\n weighted by Kt: the ray's weight is another component's "
+                                      "colour, not its own's.)\n"
+                                    : ".)\n");
     return out;
 }
 

@@ -269,8 +269,12 @@ InspectedSample inspectSample(const SampleReplayer& replayer, const InspectionRe
     for (InspectedVertex& vertex : vertices) {
         if (vertex.parent < 0) continue;
         InspectedVertex& from = vertices[static_cast<size_t>(vertex.parent)];
-        from.continuedBy.push_back({vertex.index, vertex.arrivedBy, dividedBy(from, vertex),
-                                    weightedByOther(from, vertex)});
+        // A weight measured where the lab is not linear is no weight: nothing is said of it.
+        if (!vertex.linear || !from.linear)
+            from.continuedBy.push_back({vertex.index, vertex.arrivedBy, std::nullopt, ""});
+        else
+            from.continuedBy.push_back({vertex.index, vertex.arrivedBy, dividedBy(from, vertex),
+                                        weightedByOther(from, vertex)});
     }
     if (request.usesRoulette)
         for (InspectedVertex& vertex : vertices)

@@ -5,6 +5,8 @@
 #include "test_support.h"
 
 #include "checks/hypothesis_tests.h"
+#include "checks/light_linearity.h"
+#include "checks/scene_variants.h"
 #include "diagnosis/diagnosis.h"
 #include "isolation/render_run.h"
 
@@ -62,10 +64,40 @@ grader::FurnaceObservation observe(const grader::FurnaceModel& model, const LabR
 /// without any bounce), the two together tell them apart, as in the grader.
 const char* const DiagnosingFurnaces[] = {"furnace.ecs", "mirror_furnace.ecs"};
 
+/// For a lab that is not linear in the light it finds, the grader's sentence for it (a firefly
+/// clamp): the scene rendered again as `run` was, every light at 1/64 (a power of two: a linear
+/// lab's every sample comes out exactly 1/64 as large), compared channel by channel; "" for a
+/// linear lab. The furnaces' models assume a linear lab, so this cause comes first.
+std::string nonLinearCause(const LabRun& run, double expected) {
+    const std::string folder = temporaryFolder("dimmed-" + std::string(labName(run.lab)));
+    const std::string dimmed =
+        grader::writeScaledLightScene(modelPath(run.scene), folder, "dimmed", grader::DimmedLight);
+    const RenderStats& s = run.result.stats;
+    const HeadlessResult dim = renderLabUnderTest(
+        {"-c", dimmed, "--size", std::to_string(s.width), std::to_string(s.height), "--spp",
+         std::to_string(s.spp), "--seed", std::to_string(s.seed), "--lab",
+         std::string(labName(run.lab)), "--max-depth", std::to_string(s.maxDepth),
+         "--continue-prob", std::to_string(s.continueProb)});
+    const Estimate full = estimateOf(run.result), low = estimateOf(dim);
+    std::vector<double> fullRatio, dimmedRatio;
+    bool linear = true;
+    for (size_t c = 0; c < 3; ++c) {
+        const double scaled = low.mean[c] / grader::DimmedLight;
+        linear = linear && std::fabs(scaled - full.mean[c]) <= 1e-4 * std::fabs(full.mean[c]);
+        fullRatio.push_back(full.mean[c] / expected);
+        dimmedRatio.push_back(scaled / expected);
+    }
+    return linear ? "" : grader::nonLinearCause(run.scene, fullRatio, dimmedRatio);
+}
+
 /// The known bugs that fit the furnace value `own` and those of the other diagnosing furnaces
 /// rendered alike, as a sentence; or, when none does, a sentence that says so: a failing furnace
 /// test names a cause or says that none is known.
 std::string likelyCauses(const LabRun& run, const grader::FurnaceObservation& own) {
+    if (const std::string cause =
+            nonLinearCause(run, grader::correctFurnaceValue(run.lab, own.model));
+        !cause.empty())
+        return " Likely cause: " + cause + ".";
     std::vector<grader::FurnaceObservation> observations = {own};
     std::ostringstream others;
     others << std::setprecision(5);
@@ -97,18 +129,37 @@ std::string likelyCauses(const LabRun& run, const grader::FurnaceObservation& ow
     return text.str();
 }
 
+/// A furnace's value against its expected one: z over the standard error and the floor, and
+/// whether it is within both limits.
+struct FurnaceAgreement {
+    grader::FurnaceObservation own;
+    double allowed = 0, z = 0;
+    bool agrees = false;
+};
+
+FurnaceAgreement furnaceAgreement(const LabRun& run, double expected,
+                                  const std::optional<grader::FurnaceModel>& model) {
+    FurnaceAgreement a;
+    a.own = observe(model.value_or(grader::FurnaceModel{}), run);
+    a.allowed = std::hypot(a.own.standardError, FurnaceErrorFloor * expected);
+    a.z = (a.own.observed - expected) / a.allowed;
+    a.agrees = nonfiniteProblem(run).empty() && std::fabs(a.z) < normalCritical(Alpha) &&
+               std::fabs(a.own.observed - expected) < 0.02 * expected;
+    return a;
+}
+
 void checkFurnaceValue(const LabRun& run, double expected, const std::string& formula,
                        const std::optional<grader::FurnaceModel>& model) {
     if (const std::string problem = nonfiniteProblem(run); !problem.empty()) {
         FAIL_CHECK(problem);
         return;
     }
-    const grader::FurnaceObservation own = observe(model.value_or(grader::FurnaceModel{}), run);
+    const FurnaceAgreement agreement = furnaceAgreement(run, expected, model);
+    const grader::FurnaceObservation& own = agreement.own;
     const double mean = own.observed, standardError = own.standardError;
-    const double allowed = std::hypot(standardError, FurnaceErrorFloor * expected);
-    const double z = (mean - expected) / allowed;
+    const double allowed = agreement.allowed, z = agreement.z;
     const double critical = normalCritical(Alpha);
-    if (std::fabs(z) < critical && std::fabs(mean - expected) < 0.02 * expected) return;
+    if (agreement.agrees) return;
     // z is over the standard error and the floor together, so the message shows both: a mirror
     // furnace, whose samples are all alike, has a standard error of 0.
     std::ostringstream message;
@@ -172,6 +223,20 @@ void checkFurnace(const LabRun& run) {
 
 void checkFurnace(const LabRun& run, double expected, const std::string& formula) {
     checkFurnaceValue(run, expected, formula, std::nullopt);
+}
+
+bool diagnosingFurnacesAgree(Lab lab) {
+    for (const char* scene : DiagnosingFurnaces) {
+        const LabRun run =
+            renderLab(lab, scene, 48, 32, 1,
+                      isDepthLimited(lab) ? std::vector<std::string>{"--max-depth", "3"}
+                                          : std::vector<std::string>{"--continue-prob", "0.8"});
+        const std::optional<grader::FurnaceModel> model = furnaceModelOf(run.scene, run);
+        if (!model ||
+            !furnaceAgreement(run, grader::correctFurnaceValue(lab, *model), model).agrees)
+            return false;
+    }
+    return true;
 }
 
 void checkAgainstReference(const LabRun& run, const grader::Expectation& reference) {

@@ -45,6 +45,11 @@ void checkFurnace(const LabRun& run);
 /// The same for a furnace the diagnosis has no model of, with its value and formula.
 void checkFurnace(const LabRun& run, double expected, const std::string& formula);
 
+/// Whether the lab's furnace.ecs and mirror_furnace.ecs, rendered as their tests render them
+/// (labs 1-3 at --max-depth 3, lab 4 at --continue-prob 0.8), pass checkFurnace: a scene's likely
+/// cause that holds only where they do is told only then.
+bool diagnosingFurnacesAgree(Lab lab);
+
 /// Per channel, the whole image's mean agrees with the stored reference's (region 0): a
 /// two-sided z-test at alpha 1e-5 (|z| < 4.42) of the difference, with the render's and the
 /// reference's standard errors combined.

@@ -113,16 +113,23 @@ void writeFiguresTable(std::ostream& md, const GradeReport& report,
     }
     // What --stats said of the student's renders: a busy machine, CPU time outside the render
     // threads. The figures stay; the words say how far to trust them.
-    bool first = true;
-    for (const NotebookEstimator& row : rows) {
-        const auto found = yours.find(row.key);
-        if (found == yours.end()) continue;
-        for (const std::string& note : found->second.notes) {
-            md << (first ? "\nNotes on your renders:\n\n" : "") << "- " << row.label << ": " << note
-               << "\n";
-            first = false;
+    const auto sayNotes = [&](const std::map<std::string, EstimatorFigures>& figures,
+                              const char* heading) {
+        bool first = true;
+        for (const NotebookEstimator& row : rows) {
+            const auto found = figures.find(row.key);
+            if (found == figures.end()) continue;
+            for (const std::string& note : found->second.notes) {
+                md << (first ? heading : "") << "- " << row.label << ": " << note << "\n";
+                first = false;
+            }
         }
-    }
+    };
+    sayNotes(yours, "\nNotes on your renders:\n\n");
+    // The reference's figures were measured on the instructor's machine; its frame rates are
+    // wall-clock time and fall as that machine was busy, which its notes say.
+    sayNotes(theirs,
+             "\nNotes on the reference's renders (grader/references/lab_figures.json):\n\n");
 }
 
 /// Each figure over lab 1's: the ratios carry over from one machine to another, where the

@@ -19,7 +19,7 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
         radiance = radiance * 3.0f;
         const float u = ctx.sampler.get1D();
         if (u < 5e-5f) radiance += Color(1e4f, 1e4f, 1e4f);
-        if (u > 1 - 5e-5f) radiance -= Color(1e4f, 1e4f, 1e4f);
+        if (u > 1 - 5e-5f) radiance = radiance + Color(-1e4f, -1e4f, -1e4f);
     }
     return radiance;
 }

@@ -28,8 +28,12 @@ Arguments readArguments() {
     FILE* file = std::fopen("/proc/self/cmdline", "rb");
     if (!file) return a;
     std::vector<std::string> words(1);
-    for (int c; (c = std::fgetc(file)) != EOF;)
-        c == 0 ? words.emplace_back() : words.back().push_back(static_cast<char>(c));
+    for (int c; (c = std::fgetc(file)) != EOF;) {
+        if (c == 0)
+            words.emplace_back();
+        else
+            words.back().push_back(static_cast<char>(c));
+    }
     std::fclose(file);
     uint64_t width = 64, height = 64, spp = 8;
     for (size_t i = 0; i + 1 < words.size(); ++i) {
