@@ -363,8 +363,11 @@ def attacks_held(out, expected):
                      if line.strip() and not line.startswith("#")]
     leak = text("hostile_hidden_scene_leak")
     shown = [line for line in variant_lines if line in leak or line[::-1] in leak]
-    check(variant_lines and not shown and "LEAK" not in leak,
-          f"nothing of the hidden scene's files reached the feedback of the lab that printed them ({shown[:3]})")
+    # "LEAK " with its space: the page's base64 pictures hold any four letters now and then.
+    check(variant_lines and not shown and "LEAK " not in leak,
+          f"nothing of the hidden scene's files reached the feedback of the lab that printed them ({shown[:3]}; "
+          f"{len(variant_lines)} lines of the variant's materials; what it printed: "
+          f"{[line[:80] for line in leak.splitlines() if 'LEAK ' in line][:3]})")
     # A lab's escape sequences and bells, printed or in a compiler error, arrive as \xNN text.
     raw = [name for name in ("feedback.json", "index.html", "grader.log", "result.json")
            if any(byte in open(os.path.join(out, "submissions", "hostile_control_characters", name), "rb").read()
