@@ -79,15 +79,15 @@ std::string nonLinearCause(const LabRun& run, double expected) {
          std::string(labName(run.lab)), "--max-depth", std::to_string(s.maxDepth),
          "--continue-prob", std::to_string(s.continueProb)});
     const Estimate full = estimateOf(run.result), low = estimateOf(dim);
+    const std::vector<double> fullMeans = {full.mean[0], full.mean[1], full.mean[2]};
+    const std::vector<double> dimmedMeans = {low.mean[0], low.mean[1], low.mean[2]};
+    if (grader::scalesWithLight(fullMeans, dimmedMeans)) return "";
     std::vector<double> fullRatio, dimmedRatio;
-    bool linear = true;
     for (size_t c = 0; c < 3; ++c) {
-        const double scaled = low.mean[c] / grader::DimmedLight;
-        linear = linear && std::fabs(scaled - full.mean[c]) <= 1e-4 * std::fabs(full.mean[c]);
-        fullRatio.push_back(full.mean[c] / expected);
-        dimmedRatio.push_back(scaled / expected);
+        fullRatio.push_back(fullMeans[c] / expected);
+        dimmedRatio.push_back(dimmedMeans[c] / grader::DimmedLight / expected);
     }
-    return linear ? "" : grader::nonLinearCause(run.scene, fullRatio, dimmedRatio);
+    return grader::nonLinearCause(run.scene, fullRatio, dimmedRatio);
 }
 
 /// The known bugs that fit the furnace value `own` and those of the other diagnosing furnaces
@@ -280,20 +280,18 @@ std::vector<RegionDifference> regionDifferences(const std::vector<LabRun>& runs,
     }
     REQUIRE(!means.empty());
     REQUIRE(reference.mean.size() == means.front().size());
-    const double k = static_cast<double>(means.size());
     std::vector<RegionDifference> differences;
     for (size_t i = 0; i < reference.mean.size(); ++i) {
-        double sum = 0, squares = 0;
-        for (const std::vector<double>& m : means) sum += m[i];
-        const double mean = sum / k;
-        for (const std::vector<double>& m : means) squares += (m[i] - mean) * (m[i] - mean);
-        const double batchVariance = squares / (k - 1) / k;
+        std::vector<double> values;
+        for (const std::vector<double>& m : means) values.push_back(m[i]);
+        const grader::MeanEstimate estimate = grader::batchMean(values);
+        const double mean = estimate.mean;
         // Regions every sample sees alike (the blue of the refraction check) differ from the
-        // reference only by float rounding, which this relative floor covers.
-        const double rounding = 1e-5 * std::fabs(reference.mean[i]);
-        const double se =
-            std::sqrt(batchVariance + reference.standardError[i] * reference.standardError[i] +
-                      rounding * rounding);
+        // reference only by float rounding, which this relative floor covers (as the grader's).
+        const double rounding = grader::floatRoundingFloor * std::fabs(reference.mean[i]);
+        const double se = std::sqrt(estimate.standardError * estimate.standardError +
+                                    reference.standardError[i] * reference.standardError[i] +
+                                    rounding * rounding);
         const double t =
             se > 0 ? (mean - reference.mean[i]) / se : (mean == reference.mean[i] ? 0.0 : INFINITY);
         const double relative = reference.mean[i] != 0

@@ -19,6 +19,16 @@ constexpr double Unequal = 1e-6;
 
 } // namespace
 
+bool scalesWithLight(const std::vector<double>& fullLight, const std::vector<double>& dimmedLight) {
+    if (fullLight.size() != dimmedLight.size()) return false;
+    for (size_t i = 0; i < fullLight.size(); ++i) {
+        const double scaled = dimmedLight[i] / DimmedLight;
+        const double size = std::max(std::fabs(fullLight[i]), std::fabs(scaled));
+        if (std::fabs(scaled - fullLight[i]) > Unequal * size + 1e-30) return false;
+    }
+    return true;
+}
+
 std::string nonLinearCause(const std::string& scene, const std::vector<double>& fullRatio,
                            const std::vector<double>& dimmedRatio) {
     const auto ratios = [](const std::vector<double>& r) {
@@ -55,11 +65,7 @@ LinearityFinding checkLightLinearity(const GraderSetup& setup, Lab lab, const Gr
     for (double& m : dimmedLight) m /= static_cast<double>(result.images.size());
     if (dimmedLight.size() != fullLight.size()) return finding;
     finding.measured = true;
-    for (size_t i = 0; i < fullLight.size(); ++i) {
-        const double scaled = dimmedLight[i] / DimmedLight;
-        const double size = std::max(std::fabs(fullLight[i]), std::fabs(scaled));
-        if (std::fabs(scaled - fullLight[i]) > Unequal * size + 1e-30) finding.linear = false;
-    }
+    finding.linear = scalesWithLight(fullLight, dimmedLight);
     if (finding.linear) return finding;
     std::vector<double> full(3), dim(3);
     for (int c = 0; c < 3; ++c) {

@@ -34,6 +34,11 @@ LinearityFinding checkLightLinearity(const GraderSetup& setup, Lab lab, const Gr
                                      uint64_t seedBase, const std::vector<double>& fullLight,
                                      const Expectation& expected);
 
+/// Whether means of a render at full light and of the same render with every light at
+/// DimmedLight (the same layout, any number of values) agree as a linear lab's do: each dimmed
+/// mean times 64 equal to the full one, up to far less than any clamp changes.
+bool scalesWithLight(const std::vector<double>& fullLight, const std::vector<double>& dimmedLight);
+
 /// The sentence for a lab that is not linear, from whole-image observed/expected per channel at
 /// full light and with the lights dimmed (each [red, green, blue]).
 std::string nonLinearCause(const std::string& scene, const std::vector<double>& fullRatio,
