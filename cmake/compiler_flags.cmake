@@ -37,7 +37,7 @@ endif()
 
 # Source files named from the kit's folder in the programs (__FILE__ in a failed check's message):
 # no host path is compiled into the viewer that the grader copies into a submission's sandbox,
-# where a lab could read it. framework/src/check.cpp finds the file from where the program runs.
+# where a lab could read it. framework/src/support/check.cpp finds the file from where the program runs.
 check_cxx_compiler_flag(-ffile-prefix-map=a=b PATHLAB_HAS_FILE_PREFIX_MAP)
 if(PATHLAB_HAS_FILE_PREFIX_MAP)
     add_compile_options(-ffile-prefix-map=${PROJECT_SOURCE_DIR}/=)

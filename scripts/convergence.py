@@ -45,6 +45,8 @@ import sys
 import tempfile
 import time
 
+import headless_viewer
+
 KIT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENE = os.path.join(KIT, "models", "cornell_box_VI2_Specular.ecs")
 REFERENCES = os.path.join(KIT, "grader", "references")
@@ -69,8 +71,7 @@ class UsageError(Exception):
     """Bad input: said in one line, exit status 2, nothing written."""
 
 
-class RenderFailed(Exception):
-    pass
+RenderFailed = headless_viewer.RenderFailed
 
 
 def checked_spp(text):
@@ -109,22 +110,13 @@ def reference_image(kind):
 def render(viewer, lab, spp, solution, reference, size, folder):
     """One headless render against `reference`; returns its --stats as a dict."""
     image, stats = os.path.join(folder, f"{lab}-{spp}.exr"), os.path.join(folder, f"{lab}-{spp}.json")
-    command = [viewer, "-c", SCENE, "--lab", lab, *(["--solution"] if solution else []),
+    options = ["-c", SCENE, "--lab", lab, *(["--solution"] if solution else []),
                "--spp", str(spp), "--size", str(size[0]), str(size[1]), "--seed", "0",
-               "-o", image, "--stats", stats, "--reference", reference]
+               "--reference", reference]
     if lab == "roulette":
-        command += ["--continue-prob", str(GRADED_CONTINUE_PROB)]
-    run = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
-                         errors="replace")
-    problems = [line for line in run.stderr.splitlines() if "is not done yet" not in line]
-    if run.returncode != 0:
-        raise RenderFailed("\n".join(problems + [
-            f"make convergence: the render of {lab} at {spp} spp failed "
-            f"(viewer exit status {run.returncode})"]))
-    for line in problems:
-        print(f"  {line}", file=sys.stderr)
-    with open(stats) as f:
-        return json.load(f)
+        options += ["--continue-prob", str(GRADED_CONTINUE_PROB)]
+    return headless_viewer.render(viewer, options, image, stats,
+                                  f"make convergence: the render of {lab} at {spp} spp failed")
 
 
 def row(lab, label, kind, stats):

@@ -31,7 +31,6 @@ and nothing written. Python 3 standard library and gnuplot (scripts/install-deps
 """
 import argparse
 import csv
-import json
 import math
 import os
 import shutil
@@ -39,6 +38,8 @@ import subprocess
 import sys
 import tempfile
 import time
+
+import headless_viewer
 
 KIT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENE = os.path.join(KIT, "models", "cornell_box_VI2_Specular.ecs")
@@ -161,36 +162,22 @@ def checked_sweep(args):
     return Sweep(lab, parameter, values, size, spp, args.solution)
 
 
-def viewer_command(viewer, sweep, value, spp, image, stats, size=None):
+def viewer_options(sweep, value, spp, size=None):
     size = size or sweep.size
-    return [viewer, "-c", SCENE, "--lab", sweep.lab, *(["--solution"] if sweep.solution else []),
+    return ["-c", SCENE, "--lab", sweep.lab, *(["--solution"] if sweep.solution else []),
             f"--{sweep.parameter.option}", f"{value:g}", "--spp", str(spp),
-            "--size", str(size), str(size), "--seed", "0", "-o", image, "--stats", stats]
+            "--size", str(size), str(size), "--seed", "0"]
 
 
-class RenderFailed(Exception):
-    pass
+RenderFailed = headless_viewer.RenderFailed
 
 
 def render(viewer, sweep, value, spp, folder, name, size=None):
-    """One headless render; returns its --stats as a dict, "wall_seconds" added."""
+    """One headless render; returns its --stats as a dict, "wall_seconds" added. The TODO
+    warnings are summed up once, before the renders (todo_line)."""
     image, stats = os.path.join(folder, name + ".png"), os.path.join(folder, name + ".json")
-    start = time.monotonic()
-    run = subprocess.run(viewer_command(viewer, sweep, value, spp, image, stats, size),
-                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
-                         errors="replace")
-    # The TODO warnings are summed up once, before the renders (todo_line).
-    problems = [line for line in run.stderr.splitlines() if "is not done yet" not in line]
-    if run.returncode != 0:
-        raise RenderFailed("\n".join(problems + [
-            f"make sweep: the render at {sweep.describe(value)} failed "
-            f"(viewer exit status {run.returncode})"]))
-    for line in problems:
-        print(f"  {line}", file=sys.stderr)
-    with open(stats) as f:
-        result = json.load(f)
-    result["wall_seconds"] = time.monotonic() - start
-    return result
+    return headless_viewer.render(viewer, viewer_options(sweep, value, spp, size), image, stats,
+                                  f"make sweep: the render at {sweep.describe(value)} failed")
 
 
 def todo_line(sweep):

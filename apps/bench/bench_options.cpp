@@ -1,7 +1,7 @@
 #include "bench_options.h"
 
-#include "pathlab/input_error.h"
-#include "pathlab/parse_number.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/support/parse_number.h"
 
 #include <charconv>
 #include <cmath>

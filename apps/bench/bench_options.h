@@ -1,7 +1,7 @@
 #pragma once
 /// What `bench` measures and how, from its command line.
 
-#include "pathlab/lab_parameters.h"
+#include "pathlab/render/lab_parameters.h"
 
 #include <string>
 #include <vector>

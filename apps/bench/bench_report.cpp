@@ -2,7 +2,7 @@
 
 #include "busy_machine.h"
 
-#include "pathlab/cpu_clock.h"
+#include "pathlab/support/cpu_clock.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,8 +1,8 @@
 #include "bench_scene.h"
 
-#include "pathlab/input_error.h"
-#include "pathlab/parse_number.h"
-#include "pathlab/scene_script.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/support/parse_number.h"
+#include "pathlab/scene_io/scene_script.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -1,7 +1,7 @@
 #pragma once
 /// The scenes the benchmark renders, as viewer-style arguments.
 
-#include "pathlab/render_options.h"
+#include "pathlab/render/render_options.h"
 
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 #include "busy_machine.h"
 
-#include "pathlab/renderer.h"
+#include "pathlab/render/renderer.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -9,12 +9,12 @@
 #include "scaling_measurement.h"
 #include "scene_measurement.h"
 
-#include "pathlab/input_error.h"
-#include "pathlab/program_main.h"
-#include "pathlab/renderer.h"
-#include "pathlab/render_stats.h"
-#include "pathlab/this_process.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/support/program_main.h"
+#include "pathlab/render/renderer.h"
+#include "pathlab/render/render_stats.h"
+#include "pathlab/support/this_process.h"
+#include "pathlab/support/whole_file.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -4,8 +4,8 @@
 
 #include "process/child_process.h"
 
-#include "pathlab/false_colour.h"
-#include "pathlab/render_options.h"
+#include "pathlab/images/false_colour.h"
+#include "pathlab/render/render_options.h"
 
 #include <chrono>
 #include <cstdio>

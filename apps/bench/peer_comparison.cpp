@@ -6,8 +6,8 @@
 
 #include "process/child_process.h"
 
-#include "pathlab/accumulation_buffer.h"
-#include "pathlab/renderer.h"
+#include "pathlab/render/accumulation_buffer.h"
+#include "pathlab/render/renderer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,8 +2,8 @@
 
 #include "runner/lab_tables.h"
 
-#include "pathlab/accumulation_buffer.h"
-#include "pathlab/renderer.h"
+#include "pathlab/render/accumulation_buffer.h"
+#include "pathlab/render/renderer.h"
 
 #include <chrono>
 

@@ -1,13 +1,13 @@
 #pragma once
 /// How fast a lab renders, measured as the viewer renders: whole passes over the image.
 
-#include "pathlab/camera.h"
-#include "pathlab/lab_parameters.h"
-#include "pathlab/lab_registry.h"
-#include "pathlab/renderer.h"
-#include "pathlab/ray_counters.h"
-#include "pathlab/ray_log.h"
-#include "pathlab/render_scene.h"
+#include "pathlab/scene_io/camera.h"
+#include "pathlab/render/lab_parameters.h"
+#include "pathlab/render/lab_registry.h"
+#include "pathlab/render/renderer.h"
+#include "pathlab/render/ray_counters.h"
+#include "pathlab/render/ray_log.h"
+#include "pathlab/render/render_scene.h"
 
 namespace pathlab::bench {
 

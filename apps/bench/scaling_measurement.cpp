@@ -1,7 +1,7 @@
 #include "scaling_measurement.h"
 
-#include "pathlab/accumulation_buffer.h"
-#include "pathlab/render_options.h"
+#include "pathlab/render/accumulation_buffer.h"
+#include "pathlab/render/render_options.h"
 
 #include <algorithm>
 #include <chrono>

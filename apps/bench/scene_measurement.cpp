@@ -1,6 +1,6 @@
 #include "scene_measurement.h"
 
-#include "pathlab/render_options.h"
+#include "pathlab/render/render_options.h"
 
 namespace pathlab::bench {
 

@@ -1,7 +1,7 @@
 #include "traversal_timing.h"
 
-#include "pathlab/cpu_clock.h"
-#include "pathlab/embree_rays.h"
+#include "pathlab/support/cpu_clock.h"
+#include "pathlab/render/embree_rays.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -1,8 +1,8 @@
 #pragma once
 /// Embree's raw speed: the rays a render traced, traced again with nothing else around them.
 
-#include "pathlab/ray_log.h"
-#include "pathlab/render_scene.h"
+#include "pathlab/render/ray_log.h"
+#include "pathlab/render/render_scene.h"
 
 #include <cstddef>
 

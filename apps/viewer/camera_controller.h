@@ -1,7 +1,7 @@
 #pragma once
 /// Mouse-drag orbit and WASD/arrow-key movement of the camera, as in Embree's tutorials.
 
-#include "pathlab/camera.h"
+#include "pathlab/scene_io/camera.h"
 
 #include <string>
 

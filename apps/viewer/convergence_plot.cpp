@@ -2,7 +2,7 @@
 
 #include "runner/progressive_renderer.h"
 
-#include "pathlab/relative_mse.h"
+#include "pathlab/images/relative_mse.h"
 
 #include <imgui.h>
 

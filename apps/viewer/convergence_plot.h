@@ -8,7 +8,7 @@
 
 #include "runner/convergence_history.h"
 
-#include "pathlab/camera.h"
+#include "pathlab/scene_io/camera.h"
 
 #include <string>
 #include <utility>

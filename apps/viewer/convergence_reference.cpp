@@ -1,6 +1,6 @@
 #include "convergence_reference.h"
 
-#include "pathlab/this_process.h"
+#include "pathlab/support/this_process.h"
 
 #include <exception>
 #include <system_error>

@@ -3,8 +3,8 @@
 /// `make reference` caches beside the viewer for the scene and the window's size; or, when
 /// there is none, how to make one.
 
-#include "pathlab/image_io.h"
-#include "pathlab/render_options.h"
+#include "pathlab/images/image_io.h"
+#include "pathlab/render/render_options.h"
 
 #include <filesystem>
 #include <string>

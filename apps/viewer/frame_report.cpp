@@ -3,8 +3,8 @@
 #include "runner/frame_rate.h"
 #include "runner/progressive_renderer.h"
 
-#include "pathlab/input_error.h"
-#include "pathlab/render_stats.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/render/render_stats.h"
 
 #include <algorithm>
 #include <chrono>

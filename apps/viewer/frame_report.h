@@ -2,7 +2,7 @@
 /// What the window tells scripts about its frames: --print-frame-rate's lines and --stats' file.
 /// Their texts are read by scripts (the tests, the bench, the grader): keep them as they are.
 
-#include "pathlab/render_options.h"
+#include "pathlab/render/render_options.h"
 
 namespace pathlab {
 struct Frame;

@@ -2,9 +2,9 @@
 
 #include "runner/progressive_renderer.h"
 
-#include "pathlab/false_colour.h"
-#include "pathlab/pixel_efficiency_map.h"
-#include "pathlab/pixel_noise_map.h"
+#include "pathlab/images/false_colour.h"
+#include "pathlab/images/pixel_efficiency_map.h"
+#include "pathlab/images/pixel_noise_map.h"
 
 #include <GLFW/glfw3.h>
 
@@ -23,7 +23,7 @@ std::vector<float> splitImage(const Frame& frame) {
     return composed;
 }
 
-/// The noise or efficiency view's values, one per pixel (pathlab/pixel_noise_map.h,
+/// The noise or efficiency view's values, one per pixel (pathlab/images/pixel_noise_map.h,
 /// pixel_efficiency_map.h).
 std::vector<float> mapValues(const Frame& frame, ViewMode mode) {
     std::vector<float> noise =

@@ -2,8 +2,8 @@
 /// The frame shown: its image as the view mode shows it, in an OpenGL texture that fills the
 /// window.
 
-#include "pathlab/false_colour.h"
-#include "pathlab/image_io.h"
+#include "pathlab/images/false_colour.h"
+#include "pathlab/images/image_io.h"
 #include "view_mode.h"
 
 #include <optional>

@@ -1,6 +1,6 @@
 #include "inspection_job.h"
 
-#include "pathlab/render_scene.h"
+#include "pathlab/render/render_scene.h"
 
 #include <chrono>
 #include <exception>

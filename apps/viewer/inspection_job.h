@@ -6,7 +6,7 @@
 #include "runner/pixel_replay.h"
 #include "runner/progressive_renderer.h"
 
-#include "pathlab/render_options.h"
+#include "pathlab/render/render_options.h"
 
 #include <future>
 #include <optional>

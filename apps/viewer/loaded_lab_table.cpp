@@ -6,8 +6,8 @@
 
 #include "runner/lab_tables.h"
 
-#include "pathlab/input_error.h"
-#include "pathlab/this_process.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/support/this_process.h"
 
 #include <csignal>
 #include <cstdlib>

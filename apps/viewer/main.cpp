@@ -9,16 +9,16 @@
 #include "runner/headless_render.h"
 #include "runner/pixel_replay.h"
 
-#include "pathlab/image_io.h"
-#include "pathlab/inspection_json.h"
-#include "pathlab/input_error.h"
-#include "pathlab/pixel_efficiency_map.h"
-#include "pathlab/pixel_noise_map.h"
-#include "pathlab/relative_error_map.h"
-#include "pathlab/program_main.h"
-#include "pathlab/render_options.h"
-#include "pathlab/render_scene.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/images/image_io.h"
+#include "pathlab/inspect/inspection_json.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/images/pixel_efficiency_map.h"
+#include "pathlab/images/pixel_noise_map.h"
+#include "pathlab/images/relative_error_map.h"
+#include "pathlab/support/program_main.h"
+#include "pathlab/render/render_options.h"
+#include "pathlab/render/render_scene.h"
+#include "pathlab/support/whole_file.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -1,8 +1,8 @@
 #include "map_files.h"
 
-#include "pathlab/false_colour.h"
-#include "pathlab/image_io.h"
-#include "pathlab/scale_bar.h"
+#include "pathlab/images/false_colour.h"
+#include "pathlab/images/image_io.h"
+#include "pathlab/images/scale_bar.h"
 
 #include <algorithm>
 #include <cctype>

@@ -3,8 +3,8 @@
 #include "map_files.h"
 #include "window_options.h"
 
-#include "pathlab/image_io.h"
-#include "pathlab/input_error.h"
+#include "pathlab/images/image_io.h"
+#include "pathlab/support/input_error.h"
 
 #include <cmath>
 #include <string>

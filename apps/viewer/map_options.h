@@ -2,8 +2,8 @@
 /// The maps a headless render writes beside its image: --error-image (against --reference),
 /// --noise-image and --efficiency-image, on their own scale or on --map-range's.
 
-#include "pathlab/false_colour.h"
-#include "pathlab/render_options.h"
+#include "pathlab/images/false_colour.h"
+#include "pathlab/render/render_options.h"
 
 #include <optional>
 #include <string>

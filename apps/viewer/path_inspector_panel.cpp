@@ -4,7 +4,7 @@
 
 #include "runner/lab_tables.h"
 
-#include "pathlab/inspection_table.h"
+#include "pathlab/inspect/inspection_table.h"
 
 #include <imgui.h>
 
@@ -23,8 +23,8 @@ int divergingVertex(const PixelReplay& replay, size_t sample) {
     return d.sample == sample ? d.vertex : -1;
 }
 
-/// The text table of one sample (pathlab/inspection_table.h, as `viewer --inspect` prints it),
-/// its row of `marked` in the divergence's colour. ImGui's font has no arrow: "->" instead.
+/// The text table of one sample (pathlab/inspect/inspection_table.h, as `viewer --inspect` prints
+/// it), its row of `marked` in the divergence's colour. ImGui's font has no arrow: "->" instead.
 void drawSampleTable(const PixelInspection& inspection, size_t sample, int marked) {
     PixelInspection one = inspection;
     one.samples = {inspection.samples[sample]};

@@ -11,7 +11,7 @@ namespace pathlab::viewer {
 CameraProjection::CameraProjection(const CameraSettings& camera, int width, int height)
     : eye_(camera.position), width_(static_cast<float>(width)),
       height_(static_cast<float>(height)) {
-    // The same frame as pathlab::Camera's constructor (framework/src/camera.cpp).
+    // The same frame as pathlab::Camera's constructor (framework/src/scene_io/camera.cpp).
     forward_ = normalize(camera.lookAt - camera.position);
     right_ = normalize(cross(forward_, camera.up));
     up_ = cross(right_, forward_);

@@ -3,8 +3,8 @@
 /// camera (the render's, so the paths stay on the surfaces as the camera moves), each segment
 /// coloured by the kind of ray it was, shadow rays dashed.
 
-#include "pathlab/camera.h"
-#include "pathlab/inspected_path.h"
+#include "pathlab/scene_io/camera.h"
+#include "pathlab/inspect/inspected_path.h"
 
 #include <imgui.h>
 

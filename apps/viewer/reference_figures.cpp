@@ -1,7 +1,7 @@
 #include "reference_figures.h"
 
-#include "pathlab/input_error.h"
-#include "pathlab/relative_mse.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/images/relative_mse.h"
 
 #include <cstdio>
 

@@ -2,8 +2,8 @@
 /// A headless render against --reference: the reference read and checked before rendering, the
 /// figures after.
 
-#include "pathlab/image_io.h"
-#include "pathlab/render_stats.h"
+#include "pathlab/images/image_io.h"
+#include "pathlab/render/render_stats.h"
 
 #include <string>
 #include <vector>
@@ -14,7 +14,7 @@ namespace pathlab::viewer {
 /// `width` × `height`.
 Image readReferenceOfSize(const std::string& path, int width, int height);
 
-/// relMSE and the relative RMSE of `image` against `reference` (pathlab/relative_mse.h).
+/// relMSE and the relative RMSE of `image` against `reference` (pathlab/images/relative_mse.h).
 ReferenceFigures compareWithReference(const std::string& file, const std::vector<float>& image,
                                       const Image& reference);
 

@@ -2,8 +2,8 @@
 
 #include "runner/progressive_renderer.h"
 
-#include "pathlab/image_io.h"
-#include "pathlab/input_error.h"
+#include "pathlab/images/image_io.h"
+#include "pathlab/support/input_error.h"
 
 #include <GLFW/glfw3.h>
 

@@ -5,7 +5,7 @@
 
 #include "runner/progressive_renderer.h"
 
-#include "pathlab/scale_bar.h"
+#include "pathlab/images/scale_bar.h"
 
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
@@ -25,7 +25,7 @@ std::string firstNonfiniteText(const RenderStats& stats) {
            "), sample " + std::to_string(f.sampleIndex);
 }
 
-/// The heat palette's five stops (pathlab/false_colour.h), as ImGui colours.
+/// The heat palette's five stops (pathlab/images/false_colour.h), as ImGui colours.
 ImU32 paletteStop(int stop) {
     unsigned char rgba[4];
     heatColour(static_cast<float>(stop) / 4, rgba);

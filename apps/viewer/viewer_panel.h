@@ -1,7 +1,7 @@
 #pragma once
 /// The panel over the image: the figures a student writes down, and the keys on request (h).
 
-#include "pathlab/false_colour.h"
+#include "pathlab/images/false_colour.h"
 #include "view_mode.h"
 
 #include <functional>

@@ -15,8 +15,8 @@
 #include "runner/lab_tables.h"
 #include "runner/progressive_renderer.h"
 
-#include "pathlab/image_io.h"
-#include "pathlab/render_scene.h"
+#include "pathlab/images/image_io.h"
+#include "pathlab/render/render_scene.h"
 
 #include <GLFW/glfw3.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 /// The progressive path-tracing window.
 
-#include "pathlab/render_options.h"
+#include "pathlab/render/render_options.h"
 #include "window_options.h"
 
 /// Opens the window and runs until it is closed (or --frames are done). Returns the exit status;

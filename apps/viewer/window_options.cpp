@@ -2,7 +2,7 @@
 
 #include "runner/lab_tables.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/support/input_error.h"
 
 namespace pathlab::viewer {
 

@@ -1,9 +1,10 @@
 #pragma once
-/// The options of the interactive window, read beside the shared ones (pathlab/render_options.h).
+/// The options of the interactive window, read beside the shared ones
+/// (pathlab/render/render_options.h).
 
 #include "view_mode.h"
 
-#include "pathlab/render_options.h"
+#include "pathlab/render/render_options.h"
 
 #include <optional>
 #include <string>

@@ -31,7 +31,7 @@ clock's. Writes into handouts/figures/ (each plot beside the .csv of its numbers
                                         measures a student's lab (scripts/sweep.py), whose plot
                                         draws these beside the student's
 
-Errors are relative, as the viewer's noise figure is (framework/include/pathlab/image_noise.h):
+Errors are relative, as the viewer's noise figure is (framework/include/pathlab/images/image_noise.h):
 an RMSE over the reference image's mean radiance. The noise figure estimates that same relative
 RMSE from a render's own samples, so the two columns of convergence.csv can be compared.
   references.json, run.json             the two references, and the machine and its load (how

@@ -1,5 +1,4 @@
 """Runs PathLab's viewer for the figures: headless renders, and the window under Xvfb."""
-import json
 import os
 import re
 import subprocess
@@ -7,6 +6,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+import headless_viewer  # noqa: E402
 from virtual_display import start_xvfb  # noqa: E402,F401  (make_figures imports it from here)
 
 
@@ -36,12 +36,10 @@ class Viewer:
         "image" set to the image's path."""
         image = os.path.join(self.work, f"{name}.{extension}")
         stats = os.path.join(self.work, f"{name}.json")
-        command = [self.executable, *self.estimator_options(lab, continue_prob, max_depth),
-                   "--spp", str(spp), "--size", str(size), str(size), "--seed", str(seed),
-                   "-o", image, "--stats", stats]
-        subprocess.run(command, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-        with open(stats) as f:
-            result = json.load(f)
+        options = [*self.estimator_options(lab, continue_prob, max_depth), "--spp", str(spp),
+                   "--size", str(size), str(size), "--seed", str(seed)]
+        result = headless_viewer.render(self.executable, options, image, stats,
+                                        f"the figure's render {name} failed")
         result["image"] = image
         self.cpu_record.append({"name": name, "seconds": result["seconds"],
                                 "cpu_share": result.get("cpu_share", 0),

@@ -2,11 +2,11 @@
 
 #include "runner/lab_tables.h"
 
-#include "pathlab/camera.h"
-#include "pathlab/render_progress_line.h"
-#include "pathlab/render_scene.h"
-#include "pathlab/render_watchdog.h"
-#include "pathlab/renderer.h"
+#include "pathlab/scene_io/camera.h"
+#include "pathlab/render/render_progress_line.h"
+#include "pathlab/render/render_scene.h"
+#include "pathlab/render/render_watchdog.h"
+#include "pathlab/render/renderer.h"
 
 #include <chrono>
 #include <optional>

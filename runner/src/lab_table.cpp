@@ -5,7 +5,7 @@
 #include "runner/lab_tables.h"
 
 #include "pathlab/lab.h"
-#include "pathlab/this_process.h"
+#include "pathlab/support/this_process.h"
 
 namespace pathlab::PATHLAB_IMPL {
 

@@ -2,7 +2,7 @@
 // that runs submitted labs (which must not hold the reference solutions its labs could call).
 #include "runner/lab_tables.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/support/input_error.h"
 
 namespace pathlab::solution {
 

@@ -2,14 +2,14 @@
 
 #include "runner/lab_tables.h"
 
-#include "pathlab/camera.h"
-#include "pathlab/input_error.h"
-#include "pathlab/inspection_table.h"
-#include "pathlab/pixel_inspector.h"
-#include "pathlab/render_progress.h"
-#include "pathlab/render_scene.h"
-#include "pathlab/render_watchdog.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/scene_io/camera.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/inspect/inspection_table.h"
+#include "pathlab/inspect/pixel_inspector.h"
+#include "pathlab/render/render_progress.h"
+#include "pathlab/render/render_scene.h"
+#include "pathlab/render/render_watchdog.h"
+#include "pathlab/support/whole_file.h"
 
 namespace pathlab {
 

@@ -46,8 +46,8 @@ ProgressiveRenderer::ProgressiveRenderer(const RenderScene& scene, int threads,
           return WatchedLab{passLab_.load(), passImplementation_.load()};
       }) {
     thread_ = std::thread([this] {
-        // A lab's broken check (pathlab/check.h) or any other error ends the rendering, not the
-        // program: the window reports it (failure()) and closes.
+        // A lab's broken check (pathlab/support/check.h) or any other error ends the rendering, not
+        // the program: the window reports it (failure()) and closes.
         try {
             run();
         } catch (const std::exception& error) {

@@ -57,7 +57,7 @@ FORBIDDEN = [
     ("make a context of its own", "PathContext other(*(const RenderScene*)nullptr, {});",
      r"private|PathContext|incomplete"),
     ("use a camera packet", "CameraPacket packet; (void)packet;", r"incomplete|CameraPacket"),
-    ("include the renderer's side", "#include \"pathlab/path_driver.h\"",
+    ("include the renderer's side", "#include \"pathlab/render/path_driver.h\"",
      r"path_driver.h is the renderer's side"),
     ("include the lab tables", "#include \"runner/lab_tables.h\"", r"lab_tables.h"),
 ]
@@ -133,6 +133,12 @@ def main():
     status, output = compile_lab(command, directory, DOCUMENTED_LAB, extra=["-H"])
     included = [os.path.join(directory, line.lstrip(". ").strip()) for line in output.splitlines()
                 if line.startswith(".") and "/pathlab/" in line]
+    # The student API is pathlab/ itself: a header of a folder in it (pathlab/render/, ...) is
+    # the framework's side, which lab.h must not bring in.
+    outside = sorted({path for path in included
+                      if os.path.basename(os.path.dirname(os.path.normpath(path))) != "pathlab"})
+    check(not outside, "every header a lab file sees is one of pathlab/*.h, none of its folders'"
+          + ("" if not outside else f": {outside}"))
     seen = {os.path.basename(path) for path in included}
     extra_headers, missing = sorted(seen - DOCUMENTED_HEADERS), sorted(DOCUMENTED_HEADERS - seen)
     ok = status == 0 and not extra_headers and not missing

@@ -153,11 +153,11 @@ class Tree:
 # A document that names one file of each kind that exists and one of each that does not: the
 # checker must report exactly the latter.
 SELF_TEST = """
-`framework/src/renderer.cpp:Renderer::renderPass`, `pathlab/lab.h`, `labs/NAME.cpp`,
+`framework/src/render/renderer.cpp:Renderer::renderPass`, `pathlab/lab.h`, `labs/NAME.cpp`,
 `renderer.cpp`, `docs/instructor-guide.md`, `grader/src/checks/*_check.cpp`, `make test`,
 `build/viewer`, [the kit](../README.md#quick-start), `/proc/self/exe`, `grader/hidden_scenes/`,
 `OUT/.canary/`, `runner/lab_tables.h`, `process/child_process.h`, `runner/src/lab_table.cpp`.
-`framework/src/no_such_renderer.cpp`, `framework/src/renderer.cpp:noSuchFunction`,
+`framework/src/no_such_renderer.cpp`, `framework/src/render/renderer.cpp:noSuchFunction`,
 `pathlab/no_such_header.h`, `labs/NAME.hpp`, `no_such_file.cpp`, [a link](no_such_page.md),
 [an anchor](../README.md#no-such-heading), `tests/no_such_folder/`, `runner/no_such_table.h`.
 """

@@ -32,7 +32,7 @@ from checks import LABS as LAB_NAMES, check, exit_code  # noqa: E402
 
 # The lab tests tag each lab by its number: [lab1] is the first lab of the list.
 LABS = tuple(f"lab{number}" for number in range(1, len(LAB_NAMES) + 1))
-# What the renders' watchdog says of a lab that never returns (framework/src/render_watchdog.cpp).
+# What the renders' watchdog says of a lab that never returns (framework/src/render/render_watchdog.cpp).
 STUCK = "an endless loop, or recursion that never ends?"
 
 

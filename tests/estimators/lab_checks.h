@@ -8,7 +8,7 @@
 
 #include "runner/headless_render.h"
 
-#include "pathlab/lab_registry.h"
+#include "pathlab/render/lab_registry.h"
 
 #include <cstdint>
 #include <string>

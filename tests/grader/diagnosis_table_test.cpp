@@ -6,7 +6,7 @@
 #include "diagnosis/diagnosis.h"
 #include "diagnosis/diagnosis_table.h"
 
-#include "pathlab/whole_file.h"
+#include "pathlab/support/whole_file.h"
 
 #include <algorithm>
 #include <filesystem>

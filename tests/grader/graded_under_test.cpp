@@ -10,7 +10,7 @@
 #include "reports/gradebook.h"
 #include "reports/submission_time.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/support/input_error.h"
 
 #include <nlohmann/json.hpp>
 

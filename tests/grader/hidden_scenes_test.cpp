@@ -6,7 +6,7 @@
 #include "checks/rubric.h"
 #include "reports/reports.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/support/input_error.h"
 
 #include <nlohmann/json.hpp>
 

@@ -6,7 +6,7 @@
 #include "checks/kit_ray_cost.h"
 #include "checks/local_speed_estimate.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/support/input_error.h"
 
 #include <cmath>
 

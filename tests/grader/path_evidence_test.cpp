@@ -6,7 +6,7 @@
 
 #include "checks/path_evidence.h"
 
-#include "pathlab/image_io.h"
+#include "pathlab/images/image_io.h"
 
 #include <random>
 #include <string>

@@ -5,7 +5,7 @@
 
 #include "checks/rubric.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/support/input_error.h"
 
 #include <nlohmann/json.hpp>
 

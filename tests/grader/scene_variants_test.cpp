@@ -8,7 +8,7 @@
 #include "checks/scene_variants.h"
 #include "common/scene_files.h"
 
-#include "pathlab/whole_file.h"
+#include "pathlab/support/whole_file.h"
 
 #include <filesystem>
 #include <sstream>

@@ -15,7 +15,7 @@ endless-loop mutant, the render tests). A race
 report makes the program exit 66, which fails the test.
 
 libtbb is not instrumented, so TSan does not see TBB hand a task to a worker and back: the
-renderer tells it of its own data's hand-off (framework/src/renderer.cpp), and
+renderer tells it of its own data's hand-off (framework/src/render/renderer.cpp), and
 tests/platforms/tsan.supp suppresses the reports on TBB's own task objects, and on Embree's and
 Mesa's memory (also uninstrumented), each entry saying why.
 

@@ -1,11 +1,11 @@
-// The checks where a lab's bugs first show (pathlab/check.h): a helper given a missed hit, a ray
-// that is not unit length, and the report of the first non-finite sample of a render.
+// The checks where a lab's bugs first show (pathlab/support/check.h): a helper given a missed hit,
+// a ray that is not unit length, and the report of the first non-finite sample of a render.
 #include "catch.h"
 #include "test_support.h"
 
-#include "pathlab/check.h"
-#include "pathlab/path_driver.h"
-#include "pathlab/renderer.h"
+#include "pathlab/support/check.h"
+#include "pathlab/render/path_driver.h"
+#include "pathlab/render/renderer.h"
 #include "pathlab/scattering.h"
 
 #include <cmath>

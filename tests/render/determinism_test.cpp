@@ -4,7 +4,7 @@
 
 #include "runner/lab_tables.h"
 
-#include "pathlab/renderer.h"
+#include "pathlab/render/renderer.h"
 
 #include <cstring>
 

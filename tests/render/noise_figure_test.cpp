@@ -1,14 +1,14 @@
-// The noise figure (pathlab/image_noise.h): its definition on samples whose statistics are known,
-// and its one promise on the labs' scene, that it halves when the samples quadruple.
+// The noise figure (pathlab/images/image_noise.h): its definition on samples whose statistics are
+// known, and its one promise on the labs' scene, that it halves when the samples quadruple.
 #include "catch.h"
 #include "test_support.h"
 
 #include "runner/lab_tables.h"
 
-#include "pathlab/accumulation_buffer.h"
-#include "pathlab/image_noise.h"
-#include "pathlab/pcg32.h"
-#include "pathlab/renderer.h"
+#include "pathlab/render/accumulation_buffer.h"
+#include "pathlab/images/image_noise.h"
+#include "pathlab/support/pcg32.h"
+#include "pathlab/render/renderer.h"
 
 #include <cmath>
 

@@ -2,7 +2,7 @@
 #include "catch.h"
 #include "test_support.h"
 
-#include "pathlab/image_io.h"
+#include "pathlab/images/image_io.h"
 
 #include <nlohmann/json.hpp>
 

@@ -4,7 +4,7 @@
 #include "test_support.h"
 
 #include "pathlab/lab.h"
-#include "pathlab/renderer.h"
+#include "pathlab/render/renderer.h"
 
 #include <chrono>
 #include <condition_variable>

@@ -2,8 +2,8 @@
 // vertex where the roulette draw and the path's going on disagree for a good reason, or a bad one.
 #include "catch.h"
 
-#include "pathlab/inspection_table.h"
-#include "pathlab/path_comparison.h"
+#include "pathlab/inspect/inspection_table.h"
+#include "pathlab/inspect/path_comparison.h"
 
 #include <string>
 

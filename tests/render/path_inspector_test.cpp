@@ -14,8 +14,8 @@
 
 #include "runner/pixel_replay.h"
 
-#include "pathlab/inspection_json.h"
-#include "pathlab/render_scene.h"
+#include "pathlab/inspect/inspection_json.h"
+#include "pathlab/render/render_scene.h"
 
 #include <cmath>
 #include <string>

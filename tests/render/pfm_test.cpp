@@ -5,9 +5,9 @@
 #include "messages.h"
 #include "test_support.h"
 
-#include "pathlab/image_io.h"
-#include "pathlab/input_error.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/images/image_io.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/support/whole_file.h"
 
 #include <cstdint>
 #include <cstring>

@@ -1,16 +1,16 @@
-// Error against a reference (pathlab/relative_mse.h, relative_error_map.h) and the per-pixel
+// Error against a reference (pathlab/images/relative_mse.h, relative_error_map.h) and the per-pixel
 // noise and efficiency maps (pixel_noise_map.h, pixel_efficiency_map.h), against values computed
 // here by hand from their definitions; and the log scale the maps' PNGs are coloured on.
 #include "catch.h"
 #include "test_support.h"
 
-#include "pathlab/accumulation_buffer.h"
-#include "pathlab/false_colour.h"
-#include "pathlab/pixel_efficiency_map.h"
-#include "pathlab/pixel_noise_map.h"
-#include "pathlab/relative_error_map.h"
-#include "pathlab/relative_mse.h"
-#include "pathlab/scale_bar.h"
+#include "pathlab/render/accumulation_buffer.h"
+#include "pathlab/images/false_colour.h"
+#include "pathlab/images/pixel_efficiency_map.h"
+#include "pathlab/images/pixel_noise_map.h"
+#include "pathlab/images/relative_error_map.h"
+#include "pathlab/images/relative_mse.h"
+#include "pathlab/images/scale_bar.h"
 
 #include <cmath>
 

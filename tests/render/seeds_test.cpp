@@ -3,7 +3,7 @@
 #include "catch.h"
 #include "test_support.h"
 
-#include "pathlab/whole_file.h"
+#include "pathlab/support/whole_file.h"
 
 using namespace pathlab;
 

@@ -3,7 +3,7 @@
 #include "statistics.h"
 
 #include "pathlab/cosine_hemisphere.h"
-#include "pathlab/pcg32.h"
+#include "pathlab/support/pcg32.h"
 
 #include <vector>
 

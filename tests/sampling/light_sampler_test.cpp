@@ -3,8 +3,8 @@
 #include "statistics.h"
 
 #include "pathlab/constants.h"
-#include "pathlab/light_sampler.h"
-#include "pathlab/pcg32.h"
+#include "pathlab/render/light_sampler.h"
+#include "pathlab/support/pcg32.h"
 
 #include <vector>
 

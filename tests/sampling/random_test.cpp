@@ -3,10 +3,10 @@
 #include "catch.h"
 #include "statistics.h"
 
-#include "pathlab/path_driver.h"
-#include "pathlab/pcg32.h"
+#include "pathlab/render/path_driver.h"
+#include "pathlab/support/pcg32.h"
 #include "pathlab/random_stream.h"
-#include "pathlab/triangle_sampling.h"
+#include "pathlab/render/triangle_sampling.h"
 
 #include <array>
 #include <cmath>

@@ -2,7 +2,7 @@
 #include "catch.h"
 
 #include "pathlab/lab.h"
-#include "pathlab/specular.h"
+#include "pathlab/render/specular.h"
 
 using namespace pathlab;
 

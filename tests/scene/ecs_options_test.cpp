@@ -5,7 +5,7 @@
 #include "test_support.h"
 
 #include "pathlab/constants.h"
-#include "pathlab/render_options.h"
+#include "pathlab/render/render_options.h"
 
 #include <algorithm>
 #include <cmath>

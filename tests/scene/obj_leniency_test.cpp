@@ -5,8 +5,8 @@
 #include "catch.h"
 #include "test_support.h"
 
-#include "pathlab/image_io.h"
-#include "pathlab/obj_loader.h"
+#include "pathlab/images/image_io.h"
+#include "pathlab/scene_io/obj_loader.h"
 
 #include <algorithm>
 #include <fstream>

@@ -2,9 +2,9 @@
 #include "catch.h"
 #include "test_support.h"
 
-#include "pathlab/obj_loader.h"
-#include "pathlab/polygon_triangulation.h"
-#include "pathlab/scene.h"
+#include "pathlab/scene_io/obj_loader.h"
+#include "pathlab/scene_io/polygon_triangulation.h"
+#include "pathlab/scene_io/scene.h"
 
 #include <fstream>
 

@@ -3,12 +3,12 @@
 #include "catch.h"
 #include "test_support.h"
 
-#include "pathlab/bounding_box.h"
+#include "pathlab/scene_io/bounding_box.h"
 #include "pathlab/constants.h"
-#include "pathlab/image_io.h"
-#include "pathlab/model_coverage.h"
-#include "pathlab/render_options.h"
-#include "pathlab/scene_defaults.h"
+#include "pathlab/images/image_io.h"
+#include "pathlab/scene_io/model_coverage.h"
+#include "pathlab/render/render_options.h"
+#include "pathlab/scene_io/scene_defaults.h"
 
 #include <cmath>
 #include <fstream>

@@ -2,8 +2,8 @@
 #include "catch.h"
 #include "test_support.h"
 
-#include "pathlab/obj_loader.h"
-#include "pathlab/render_options.h"
+#include "pathlab/scene_io/obj_loader.h"
+#include "pathlab/render/render_options.h"
 
 #include <filesystem>
 #include <fstream>

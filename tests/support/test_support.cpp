@@ -2,7 +2,7 @@
 
 #include "runner/lab_tables.h"
 
-#include "pathlab/this_process.h"
+#include "pathlab/support/this_process.h"
 
 #include <cmath>
 #include <cstdlib>

@@ -17,7 +17,7 @@ std::string modelPath(const std::string& name);
 std::string temporaryFolder(const std::string& name);
 
 /// Renders in-process with viewer-style arguments, e.g. {"-c", modelPath(...), "--spp", "4"}.
-/// The render's watchdog (pathlab/render_watchdog.h) waits its default, or the seconds that
+/// The render's watchdog (pathlab/render/render_watchdog.h) waits its default, or the seconds that
 /// the environment variable PATHLAB_TEST_WATCHDOG_SECONDS gives: the kit's test of the lab
 /// tests (estimators/catches_mutants.py) shortens it to see it stop an endless loop.
 HeadlessResult render(const std::vector<std::string>& arguments);

@@ -18,7 +18,7 @@ any failed. Fixed seeds throughout.
   the palette (black, blue, green, yellow, red) from left to right, with its end values written
   under it; the printed scale is whole decades around the values of the map's EXR (written in
   the same run), and every pixel's colour is the palette's at its EXR value's place on that log
-  scale, the palette evaluated here from its definition (pathlab/false_colour.h).
+  scale, the palette evaluated here from its definition (pathlab/images/false_colour.h).
 - The window's noise and efficiency views (--view) under a virtual X server (Xvfb), captured
   with --capture-window: the image is on the palette (or grey where there is no value), and the
   panel shows the scale bar.

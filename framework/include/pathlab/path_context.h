@@ -19,8 +19,8 @@ struct RayLog;
 class PathRecorder;
 
 /// The scene to trace against, the path's random numbers and the lab's parameters. The renderer
-/// makes one per tile and drives it through a PathDriver (its own side, pathlab/path_driver.h);
-/// a lab only calls what is public here.
+/// makes one per tile and drives it through a PathDriver (its own side,
+/// pathlab/render/path_driver.h); a lab only calls what is public here.
 class PathContext {
 public:
     /// The closest surface along `ray` (one closest-hit ray through Embree). `ray.direction`

@@ -5,7 +5,7 @@
 #include "checks/check_kind.h"
 #include "checks/rays_per_sample.h"
 
-#include "pathlab/lab_registry.h"
+#include "pathlab/render/lab_registry.h"
 
 #include <string>
 #include <vector>

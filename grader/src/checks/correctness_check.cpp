@@ -14,7 +14,7 @@
 #include "checks/worst_tile_replay.h"
 #include "diagnosis/diagnosis.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/support/input_error.h"
 #include "pathlab/todo.h"
 
 #include <algorithm>

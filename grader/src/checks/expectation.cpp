@@ -7,10 +7,10 @@
 #include "common/content_hash.h"
 #include "common/scene_files.h"
 
-#include "pathlab/image_io.h"
-#include "pathlab/input_error.h"
-#include "pathlab/render_stats.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/images/image_io.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/render/render_stats.h"
+#include "pathlab/support/whole_file.h"
 
 #include <nlohmann/json.hpp>
 

@@ -6,7 +6,7 @@
 #include "common/by_lab.h"
 #include "isolation/render_run.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/support/input_error.h"
 
 #include <functional>
 #include <string>

@@ -10,8 +10,8 @@
 #include "diagnosis/diagnosis.h"
 #include "isolation/render_run.h"
 
-#include "pathlab/lab_parameters.h"
-#include "pathlab/lab_registry.h"
+#include "pathlab/render/lab_parameters.h"
+#include "pathlab/render/lab_registry.h"
 
 #include <cstdint>
 #include <functional>

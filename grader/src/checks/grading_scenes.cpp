@@ -4,8 +4,8 @@
 #include "common/content_hash.h"
 #include "common/scene_files.h"
 
-#include "pathlab/input_error.h"
-#include "pathlab/progress_bar.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/support/progress_bar.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -1,13 +1,13 @@
 #include "checks/kit_ray_cost.h"
 
-#include "pathlab/accumulation_buffer.h"
-#include "pathlab/camera.h"
-#include "pathlab/cpu_clock.h"
+#include "pathlab/render/accumulation_buffer.h"
+#include "pathlab/scene_io/camera.h"
+#include "pathlab/support/cpu_clock.h"
 #include "pathlab/path_context.h"
 #include "pathlab/scattering.h"
-#include "pathlab/render_options.h"
-#include "pathlab/render_scene.h"
-#include "pathlab/renderer.h"
+#include "pathlab/render/render_options.h"
+#include "pathlab/render/render_scene.h"
+#include "pathlab/render/renderer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,8 +3,8 @@
 #include "checks/noise_check.h"
 #include "checks/speed_check.h"
 
-#include "pathlab/image_io.h"
-#include "pathlab/input_error.h"
+#include "pathlab/images/image_io.h"
+#include "pathlab/support/input_error.h"
 
 #include <filesystem>
 

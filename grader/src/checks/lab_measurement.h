@@ -7,7 +7,7 @@
 #include "checks/check_result.h"
 #include "checks/rubric.h"
 
-#include "pathlab/ray_counters.h"
+#include "pathlab/render/ray_counters.h"
 
 #include <nlohmann/json.hpp>
 

@@ -5,8 +5,8 @@
 /// come from the lab's own process, so the grader explains with them and never scores by them
 /// alone.
 
-#include "pathlab/lab_registry.h"
-#include "pathlab/ray_counters.h"
+#include "pathlab/render/lab_registry.h"
+#include "pathlab/render/ray_counters.h"
 
 #include <string>
 

@@ -2,7 +2,7 @@
 
 #include "common/content_hash.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/support/input_error.h"
 
 #include <nlohmann/json.hpp>
 

@@ -4,7 +4,7 @@
 #include "checks/check_kind.h"
 #include "common/by_lab.h"
 
-#include "pathlab/lab_registry.h"
+#include "pathlab/render/lab_registry.h"
 
 #include <string>
 #include <vector>

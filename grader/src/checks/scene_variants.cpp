@@ -4,8 +4,8 @@
 #include "common/scene_files.h"
 #include "diagnosis/diagnosis.h"
 
-#include "pathlab/input_error.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/support/whole_file.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -1,8 +1,8 @@
 #pragma once
 /// The noise check's statistic: how noisy one sample of a lab is, measured from the images of
 /// independent seeds alone, robustly. It is not the noise figure students read off the panel
-/// (pathlab/image_noise.h). The grader takes nothing from a lab's process but its images, never
-/// the figures it reports about itself, so it measures the variance from the spread of
+/// (pathlab/images/image_noise.h). The grader takes nothing from a lab's process but its images,
+/// never the figures it reports about itself, so it measures the variance from the spread of
 /// independent seeds' images; and it decides a verdict between two labs, which one rare firefly
 /// must not decide.
 

@@ -7,7 +7,7 @@
 #include "checks/run_limits.h"
 #include "isolation/timing_lock.h"
 
-#include "pathlab/renderer.h"
+#include "pathlab/render/renderer.h"
 
 #include <algorithm>
 #include <cmath>

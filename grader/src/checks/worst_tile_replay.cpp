@@ -2,9 +2,9 @@
 
 #include "checks/run_limits.h"
 
-#include "pathlab/input_error.h"
-#include "pathlab/inspection_json.h"
-#include "pathlab/path_comparison.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/inspect/inspection_json.h"
+#include "pathlab/inspect/path_comparison.h"
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 #pragma once
 /// The side-by-side replay in a failed lab's feedback: one pixel of the scene's worst tile, its
 /// samples through the lab and through the reference solution on the same random numbers, and
-/// the first vertex where they part (pathlab/path_comparison.h).
+/// the first vertex where they part (pathlab/inspect/path_comparison.h).
 
 #include "checks/grader_setup.h"
 

@@ -2,9 +2,9 @@
 
 #include "checks/grading_scenes.h"
 
-#include "pathlab/input_error.h"
-#include "pathlab/parse_number.h"
-#include "pathlab/this_process.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/support/parse_number.h"
+#include "pathlab/support/this_process.h"
 
 #include <filesystem>
 #include <functional>

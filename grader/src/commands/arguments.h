@@ -1,7 +1,7 @@
 #pragma once
 /// The grader's command line: one command and its options.
 
-#include "pathlab/lab_registry.h"
+#include "pathlab/render/lab_registry.h"
 
 #include <cstdint>
 #include <string>

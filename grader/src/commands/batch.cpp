@@ -1,4 +1,4 @@
-// grader submission / batch: submitted labs, graded in the sandbox (Linux only; batch_merge.cpp
+// grader batch: a class of submitted labs, graded in the sandbox (Linux only; batch_merge.cpp
 // merges the gradebooks of batch shards anywhere).
 //
 // A batch grades each submission in a child `grader submission` process of its own, so one
@@ -8,12 +8,17 @@
 // Fair timing while other work goes on: the first core the grader may use is kept for timed
 // runs, taken by one grading at a time (an exclusive lock on /tmp/pathlab-timing-core-N.lock for
 // a lab's whole interleaved series, one thread per timed render, shared by every batch on the
-// machine); compiling and the correctness renders of every job share the other cores.
+// machine); compiling and the correctness renders of every job share the other cores
+// (batch_cores.h). The jobs are batch_jobs.h's, the canary that goes first batch_canary.h's.
 #include "checks/grading_scenes.h"
 #include "checks/scene_variants.h"
 #include "checks/speed_check.h"
+#include "commands/batch_canary.h"
+#include "commands/batch_cores.h"
+#include "commands/batch_jobs.h"
 #include "commands/batch_selection.h"
 #include "commands/commands.h"
+#include "commands/grading_host.h"
 #include "commands/output_lock.h"
 #include "commands/rescore.h"
 #include "commands/submission_grading.h"
@@ -22,63 +27,25 @@
 #include "reports/submission_time.h"
 #include "similarity/class_similarity.h"
 
-#include "process/child_process.h"
-
-#include "pathlab/input_error.h"
-#include "pathlab/progress_bar.h"
-#include "pathlab/render_stats.h"
-#include "pathlab/this_process.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/render/render_stats.h"
+#include "pathlab/support/this_process.h"
+#include "pathlab/support/whole_file.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <exception>
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sched.h>
-#include <unistd.h>
 
 namespace pathlab::grader {
 
 namespace {
 
 namespace fs = std::filesystem;
-
-LabBuild labBuildOfThisGrader() {
-    return loadLabBuild((thisProgram().parent_path() / "lab_library_build.json").string());
-}
-
-void requireSandbox() {
-    const std::string reason = sandboxUnavailableReason();
-    if (!reason.empty()) throw InputError("the sandbox: " + reason);
-}
-
-/// The cores this process may use, in order.
-std::vector<int> allowedCpus() {
-    cpu_set_t set;
-    std::vector<int> cpus;
-    if (::sched_getaffinity(0, sizeof set, &set) == 0)
-        for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
-            if (CPU_ISSET(cpu, &set)) cpus.push_back(cpu);
-    return cpus;
-}
-
-std::string joinCpus(const std::vector<int>& cpus) {
-    std::string text;
-    for (int cpu : cpus) text += (text.empty() ? "" : ",") + std::to_string(cpu);
-    return text;
-}
-
-std::string timestamp() {
-    char text[32];
-    const std::time_t now = std::time(nullptr);
-    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S", std::localtime(&now));
-    return text;
-}
 
 /// The options a child `grader submission` shares with the batch.
 std::vector<std::string> sharedOptions(const Arguments& a) {
@@ -90,23 +57,6 @@ std::vector<std::string> sharedOptions(const Arguments& a) {
     if (!a.speed) options.push_back("--no-speed");
     if (!a.raceCheck) options.push_back("--no-race-check");
     return options;
-}
-
-/// The most a submission can score under this rubric, as this batch grades (speed or not).
-double maxScoreNow(const Rubric& rubric, bool speed) {
-    double max = 0;
-    for (Lab lab : AllLabs) {
-        const LabPoints& p = rubric.forLab(lab).points;
-        max += p.correctness + p.noise + (speed ? p.speed : 0);
-    }
-    return max;
-}
-
-/// One lock per timing core for the whole machine: batches on one machine (two shards on one
-/// node, two classes) that time on the same core take turns, as the jobs of one batch do.
-std::string timingLockFor(const std::vector<int>& timingCpus) {
-    const std::string core = timingCpus.empty() ? "any" : std::to_string(timingCpus.front());
-    return (fs::temp_directory_path() / ("pathlab-timing-core-" + core + ".lock")).string();
 }
 
 /// What a batch's gradebook is written against; stored in OUT/batch.json for `grader merge`.
@@ -135,114 +85,6 @@ std::string earlierSetting(const std::string& out, const char* key) {
     std::ifstream in(out + "/batch.json");
     const nlohmann::json j = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
     return j.is_object() ? j.value(key, "") : "";
-}
-
-/// A child grading one submission.
-struct Job {
-    ChildProcess child;
-    Submission submission;
-    std::chrono::steady_clock::time_point start;
-};
-
-/// Starts `grader submission` (argv) for `s`, writing what it prints to `log`.
-Job startJob(const std::vector<std::string>& argv, const Submission& s, const std::string& log) {
-    ChildSetup setup;
-    setup.dieWithParent = true; // a killed batch leaves no grading behind
-    setup.outputFile = log;
-    return {ChildProcess(argv, setup), s, std::chrono::steady_clock::now()};
-}
-
-/// What the canary is judged by: the grading now, without speed.
-GradingNow canaryGrading(GradingNow now, const Rubric& rubric) {
-    now.measuresSpeed = false;
-    now.maxScore = maxScoreNow(rubric, false);
-    return now;
-}
-
-/// Before anyone is graded: the reference solutions, graded as a submission on every scene (speed
-/// left out: against themselves it measures only the machine), must get full marks, or the
-/// references, the scenes or the rubric are wrong and every grade would be too. Skipped while
-/// the grading it passed is unchanged (OUT/.canary/passed holds its fingerprint); judged again
-/// from its measurements where only the rubric's points or thresholds changed since (a
-/// threshold can fail the solutions too); otherwise graded, once `prepare` has made ready what
-/// a grading needs.
-void runCanary(const std::vector<std::string>& childBase, const std::string& solutions,
-               const std::string& out, const GradingNow& now, const Rubric& rubric,
-               const std::string& references, const std::function<void()>& prepare,
-               std::ofstream& log) {
-    // `childBase` is the gradings' command line once `prepare` has run.
-    const std::string folder = out + "/.canary";
-    const std::string fingerprint = now.rubricHash + " " + now.scenesHash + " " + PATHLAB_VERSION;
-    {
-        std::ifstream passed(folder + "/passed");
-        std::string previous;
-        if (passed && std::getline(passed, previous) && previous == fingerprint) return;
-    }
-    const auto start = std::chrono::steady_clock::now();
-    std::string how = "graded";
-    std::ifstream stored(folder + "/result.json");
-    const nlohmann::json earlier =
-        stored ? nlohmann::json::parse(stored, nullptr, false) : nlohmann::json();
-    stored.close();
-    // Only a canary that passed is judged again: one that failed measured against what was wrong.
-    if (fs::exists(folder + "/passed") && earlier.is_object() &&
-        regradeNeeded(earlier, canaryGrading(now, rubric)) == Regrade::Rescore &&
-        rescoreSubmission(rubric, false, references, {solutions, "canary"}, folder).done) {
-        how = "re-scored";
-    } else {
-        prepare();
-        std::fprintf(stderr, "canary: grading the reference solutions on every scene ...\n");
-        fs::remove_all(folder);
-        fs::create_directories(folder);
-        std::vector<std::string> argv = childBase;
-        argv.insert(argv.end(), {solutions, "--out", folder, "--no-speed"});
-        Job job = startJob(argv, {solutions, "canary"}, folder + "/grader.log");
-        job.child.wait();
-    }
-    std::ifstream in(folder + "/result.json");
-    const nlohmann::json result = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!result.is_object())
-        throw InputError("canary: the reference solutions could not be graded (see " + folder +
-                         "/grader.log); nothing was graded");
-    const double score = result.value("score", 0.0), max = result.value("max_score", 0.0);
-    log << timestamp() << " canary: reference solutions " << score << " / " << max << ", " << how
-        << ", " << std::lround(seconds) << " s\n"
-        << std::flush;
-    if (score != max || max == 0) {
-        std::string why;
-        for (const auto& d : result.value("diagnoses", nlohmann::json::array()))
-            why += "\n  " + d.value("lab", "") + " " + d.value("check", "") + ": " +
-                   d.value("diagnosis", "");
-        char points[64];
-        std::snprintf(points, sizeof points, "%g / %g", score, max);
-        log << timestamp() << " canary: refused the batch: nothing was graded" << why << "\n"
-            << std::flush;
-        throw InputError(
-            "canary: the reference solutions score " + std::string(points) +
-            " on this grading, so its references, scenes or rubric are wrong; nothing was "
-            "graded. What failed:" +
-            why +
-            "\n  A threshold the reference solutions fail (the noise check's max_ratio, the "
-            "speed check's min_ratio) is tighter than their own spread from one grading to the "
-            "next: loosen it in the rubric (docs/instructor-guide.md, The canary)."
-            "\n  (details: " +
-            folder + "/index.html)");
-    }
-    writeFileAtomically(folder + "/passed", fingerprint + "\n");
-}
-
-/// The wall time since `start`, for the log and the last line.
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-/// The ids, in order, as the gradebook and the similarity check name submissions.
-std::vector<std::string> idsOf(const std::vector<Submission>& submissions) {
-    std::vector<std::string> ids;
-    for (const Submission& s : submissions) ids.push_back(s.id);
-    return ids;
 }
 
 /// The deadline and the submission times (a CSV's path) a batch's gradebook is written against.
@@ -333,19 +175,6 @@ struct LogsAnError {
     }
 };
 
-/// The cores of a batch, by what runs on them.
-struct Cores {
-    std::vector<int> timing, work;
-};
-
-/// The first core for timed runs, the rest for everything else.
-Cores splitCores(const std::vector<int>& cpus) {
-    Cores cores;
-    cores.timing = cpus.empty() ? std::vector<int>{} : std::vector<int>{cpus[0]};
-    cores.work = cpus.size() > 1 ? std::vector<int>(cpus.begin() + 1, cpus.end()) : cpus;
-    return cores;
-}
-
 /// Shared by every grading: the compiled kit, and the references of hidden scenes (kept with
 /// this batch's output, measured again when a scene's files change).
 struct SharedFiles {
@@ -406,66 +235,6 @@ void writeBatchJson(const std::string& out, const std::string& rubricFile,
                                                  "\n");
 }
 
-/// The gradebook's rows: each submission's stored result, pending while `queued` names it.
-std::vector<GradebookEntry> gradebookEntries(const std::string& out,
-                                             const std::vector<Submission>& submissions,
-                                             const std::vector<std::string>& queued) {
-    std::vector<GradebookEntry> list;
-    for (const Submission& s : submissions) {
-        list.push_back(readGradebookEntry(out, s.id, s.path));
-        list.back().pending = std::find(queued.begin(), queued.end(), s.id) != queued.end();
-    }
-    return list;
-}
-
-/// Starts grading `s` into OUT/submissions/ID; its earlier grading goes first, kept as an
-/// attempt, since a job's result.json is the sign that it is done.
-Job startGrading(const std::vector<std::string>& childBase, const Submission& s,
-                 const std::string& out, std::ofstream& log) {
-    const std::string folder = out + "/submissions/" + s.id;
-    fs::create_directories(folder);
-    archiveAttempt(folder);
-    std::vector<std::string> argv = childBase;
-    argv.insert(argv.end(), {s.path, "--out", folder});
-    Job job = startJob(argv, s, folder + "/grader.log");
-    log << timestamp() << " start " << s.id << " (" << s.path << ")\n" << std::flush;
-    return job;
-}
-
-/// A job still running after far longer than any grading takes has hit a grader fault.
-void killOverdue(std::vector<Job>& running, std::chrono::steady_clock::time_point now) {
-    const double jobSeconds = 3600; // far beyond any grading: only a grader fault gets here
-    for (Job& j : running)
-        if (std::chrono::duration<double>(now - j.start).count() > jobSeconds)
-            j.child.kill(); // reaped on a later turn (nothing if it already has been)
-}
-
-/// A job's end in the batch's log: its status and score, or why it was not graded, its time and
-/// where that went.
-void logJobEnd(std::ofstream& log, const Job& job, const GradebookEntry& entry, double seconds) {
-    log << timestamp() << " done " << job.submission.id << ": ";
-    if (entry.result.is_null())
-        log << "not graded, " << entry.problem;
-    else
-        log << entry.result.value("status", "") << ", " << entry.result.value("score", 0.0) << " / "
-            << entry.result.value("max_score", 0.0);
-    log << ", " << std::lround(seconds) << " s";
-    const nlohmann::json phases = entry.result.is_null()
-                                      ? nlohmann::json()
-                                      : entry.result.value("seconds_by_phase", nlohmann::json());
-    if (phases.is_object()) {
-        log << " (";
-        for (const char* phase : {"intake", "compile", "correctness", "race_check", "speed"}) {
-            char text[64];
-            std::snprintf(text, sizeof text, "%s%s %.1f s", phase[0] == 'i' ? "" : ", ", phase,
-                          phases.value(phase, 0.0));
-            log << text;
-        }
-        log << ")";
-    }
-    log << "\n" << std::flush;
-}
-
 /// Each graded submission's lab files as they are now, taken in as a grading takes them, so
 /// that one changed since it was graded is graded again.
 std::map<std::string, SubmittedFiles> submittedFiles(const std::vector<Submission>& submissions,
@@ -515,51 +284,6 @@ std::vector<Submission> rescoreAll(const Arguments& a, const Rubric& rubric,
     return measureInstead;
 }
 
-/// How a batch's jobs ended.
-struct JobCounts {
-    size_t done = 0, failed = 0; ///< failed: not graded (no result.json)
-};
-
-/// Grades `todo`, `jobs` at a time; after each job the gradebook is written again, those queued
-/// or being graded in it as pending (similarity waits until all are graded).
-JobCounts gradeInJobs(int jobs, const std::vector<std::string>& childBase,
-                      const std::vector<Submission>& todo,
-                      const std::vector<Submission>& submissions, const std::string& out,
-                      const GradingNow& grading, std::ofstream& log) {
-    std::vector<std::string> queued = idsOf(todo);
-    writeGradebook(out, gradebookEntries(out, submissions, queued), grading, std::nullopt);
-    JobCounts counts;
-    if (todo.empty()) return counts; // no progress bar counting to 0 of 0
-    ProgressBar progress("grading", "submissions");
-    std::vector<Job> running;
-    size_t next = 0;
-    progress.update(0, static_cast<int>(todo.size()));
-    while (next < todo.size() || !running.empty()) {
-        while (next < todo.size() && static_cast<int>(running.size()) < jobs)
-            running.push_back(startGrading(childBase, todo[next++], out, log));
-        // The first job found to have ended, reaped; the others on later turns.
-        const auto job =
-            std::find_if(running.begin(), running.end(), [](Job& j) { return j.child.poll(); });
-        const auto now = std::chrono::steady_clock::now();
-        killOverdue(running, now);
-        if (job == running.end()) {
-            ::usleep(50000);
-            continue;
-        }
-        queued.erase(std::find(queued.begin(), queued.end(), job->submission.id));
-        const GradebookEntry entry =
-            readGradebookEntry(out, job->submission.id, job->submission.path);
-        ++counts.done;
-        if (entry.result.is_null()) ++counts.failed;
-        logJobEnd(log, *job, entry, std::chrono::duration<double>(now - job->start).count());
-        running.erase(job);
-        writeGradebook(out, gradebookEntries(out, submissions, queued), grading, std::nullopt);
-        progress.update(static_cast<int>(counts.done), static_cast<int>(todo.size()),
-                        counts.failed > 0 ? std::to_string(counts.failed) + " not graded" : "");
-    }
-    return counts;
-}
-
 /// The batch's arguments with its hidden scenes settled: the instructor's where there are any;
 /// else (unless --scenes none, or the rubric's hidden_scenes.variants is 0) the rubric's variants
 /// of the public scenes, written into OUT/.variants from the seed kept there (scene_variants.h).
@@ -580,40 +304,6 @@ Arguments withHiddenScenes(const Arguments& a, const Rubric& rubric, const std::
 }
 
 } // namespace
-
-int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
-    requireSandbox();
-    const OutputLock lock(a.out, "grading of a submission");
-    SubmissionGrader g;
-    g.build = labBuildOfThisGrader();
-    g.rubric = rubric;
-    g.workCpus = a.workCpus;
-    g.kit = a.kit.empty()
-                ? buildLabKit(g.build, a.out + "/kit", {a.workCpus, sandboxUserForThisProcess()})
-                : existingLabKit(a.kit);
-    // References of hidden scenes come from the solutions, linked into this build's viewer.
-    const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
-    std::vector<std::string> notes;
-    g.scenes = gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden},
-                             solution, scratch, notes);
-    g.scenesHash = scenesHash(rubric, a.scenesDir);
-    g.timing = {a.timingCpus, a.timingLock, a.timingCpus.empty() ? 0 : 1};
-    g.threads = a.workCpus.empty() ? a.threads : static_cast<int>(a.workCpus.size());
-    g.seedBase = a.seed;
-    g.measureSpeed = a.speed;
-    if (a.raceCheck) {
-        g.raceCheck = raceCheckRuntime(g.build, {a.workCpus, sandboxUserForThisProcess()});
-        if (!g.raceCheck.available())
-            std::fprintf(stderr, "race check skipped: %s\n", g.raceCheck.unavailable.c_str());
-    }
-    SubmissionOutcome outcome = gradeSubmission(g, a.inputs[0], a.out, scratch);
-    outcome.report.notes.insert(outcome.report.notes.begin(), notes.begin(), notes.end());
-    std::printf("%s: %s\n", outcome.id.c_str(), outcome.status.c_str());
-    std::fputs(terminalReport(outcome.report, false).c_str(), stdout);
-    writeReports(a, rubric, outcome.report);
-    // As every command that grades: 1 when a check failed (or a lab was not graded).
-    return outcome.report.score() == outcome.report.maxScore() ? 0 : 1;
-}
 
 int runBatch(const Arguments& given, const Rubric& rubric, const std::string& scratch) {
     requireSandbox();

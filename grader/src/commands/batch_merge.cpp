@@ -6,7 +6,7 @@
 #include "reports/submission_time.h"
 #include "similarity/class_similarity.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/support/input_error.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -4,7 +4,7 @@
 
 #include "isolation/submission_intake.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/support/input_error.h"
 
 #include <algorithm>
 #include <cstdio>

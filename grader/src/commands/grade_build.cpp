@@ -10,10 +10,10 @@
 #include "reports/reports.h"
 #include "reports/sweep_figures.h"
 
-#include "pathlab/input_error.h"
-#include "pathlab/progress_bar.h"
-#include "pathlab/render_stats.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/support/progress_bar.h"
+#include "pathlab/render/render_stats.h"
+#include "pathlab/support/whole_file.h"
 
 #include <algorithm>
 #include <chrono>

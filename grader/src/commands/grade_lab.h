@@ -8,7 +8,7 @@
 #include "checks/rubric.h"
 #include "isolation/start_up_times.h"
 
-#include "pathlab/lab_registry.h"
+#include "pathlab/render/lab_registry.h"
 
 #include <string>
 #include <vector>

@@ -5,7 +5,7 @@
 #include "checks/rubric_text.h"
 #include "commands/commands.h"
 
-#include "pathlab/program_main.h"
+#include "pathlab/support/program_main.h"
 
 #include <cerrno>
 #include <csignal>

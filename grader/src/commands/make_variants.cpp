@@ -4,8 +4,8 @@
 #include "checks/scene_variants.h"
 #include "commands/commands.h"
 
-#include "pathlab/input_error.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/support/whole_file.h"
 
 #include <cstdio>
 #include <filesystem>

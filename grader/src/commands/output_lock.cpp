@@ -1,7 +1,7 @@
 // POSIX (flock): Linux and macOS.
 #include "commands/output_lock.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/support/input_error.h"
 
 #include <cerrno>
 #include <cstring>

@@ -4,7 +4,7 @@
 #include "checks/grading_scenes.h"
 #include "commands/submission_grading.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/support/input_error.h"
 
 #include <filesystem>
 #include <fstream>

@@ -4,7 +4,7 @@
 #include "commands/commands.h"
 #include "isolation/sandbox.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/support/input_error.h"
 
 namespace pathlab::grader {
 

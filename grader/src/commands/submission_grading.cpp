@@ -4,8 +4,8 @@
 #include "common/content_hash.h"
 #include "reports/reports.h"
 
-#include "pathlab/render_stats.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/render/render_stats.h"
+#include "pathlab/support/whole_file.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,7 +1,7 @@
 #pragma once
 /// One value per lab, looked up by Lab, so that no caller turns a Lab into an index itself.
 
-#include "pathlab/lab_registry.h"
+#include "pathlab/render/lab_registry.h"
 
 #include <array>
 #include <cstddef>

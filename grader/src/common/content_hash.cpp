@@ -1,6 +1,6 @@
 #include "common/content_hash.h"
 
-#include "pathlab/whole_file.h"
+#include "pathlab/support/whole_file.h"
 
 #include <cstdio>
 

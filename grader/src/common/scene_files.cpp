@@ -2,10 +2,10 @@
 
 #include "common/content_hash.h"
 
-#include "pathlab/input_error.h"
-#include "pathlab/input_notes.h"
-#include "pathlab/obj_reading.h"
-#include "pathlab/render_options.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/scene_io/input_notes.h"
+#include "pathlab/scene_io/obj_reading.h"
+#include "pathlab/render/render_options.h"
 
 #include <filesystem>
 

@@ -4,7 +4,7 @@
 
 #include "diagnosis/diagnosis_table.h"
 
-#include "pathlab/lab_registry.h"
+#include "pathlab/render/lab_registry.h"
 
 #include <optional>
 #include <string>

@@ -4,7 +4,7 @@
 
 #include "common/by_lab.h"
 
-#include "pathlab/lab_registry.h"
+#include "pathlab/render/lab_registry.h"
 
 #include <optional>
 #include <string>

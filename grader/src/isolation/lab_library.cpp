@@ -1,8 +1,8 @@
 #include "isolation/lab_library.h"
 
-#include "pathlab/input_error.h"
-#include "pathlab/printable_text.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/support/printable_text.h"
+#include "pathlab/support/whole_file.h"
 
 #include <nlohmann/json.hpp>
 

@@ -7,7 +7,7 @@
 #include "common/by_lab.h"
 #include "isolation/sandbox.h"
 
-#include "pathlab/lab_registry.h"
+#include "pathlab/render/lab_registry.h"
 
 #include <string>
 #include <vector>

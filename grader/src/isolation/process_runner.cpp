@@ -1,7 +1,7 @@
 // POSIX: Linux and macOS (the grader is not built with MSVC). Pinning to cores is Linux only.
 #include "isolation/process_runner.h"
 
-#include "pathlab/printable_text.h"
+#include "pathlab/support/printable_text.h"
 
 #include "process/child_process.h"
 

@@ -2,9 +2,9 @@
 
 #include "common/scene_files.h"
 
-#include "pathlab/image_io.h"
-#include "pathlab/input_error.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/images/image_io.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/support/whole_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -27,7 +27,7 @@ constexpr const char* ReplayFile = "replay.json";
 constexpr size_t RenderOutputBytes = 4u << 20;
 
 /// The start of the line the viewer's watchdog prints when a lab finishes no sample
-/// (pathlab/render_watchdog.h).
+/// (pathlab/render/render_watchdog.h).
 constexpr const char* WatchdogWords = "render watchdog: ";
 
 std::vector<std::string> viewerArguments(const RenderRequest& r, const std::string& scene,

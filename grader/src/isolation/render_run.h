@@ -6,8 +6,8 @@
 #include "isolation/process_runner.h"
 #include "isolation/sandbox.h"
 
-#include "pathlab/lab_registry.h"
-#include "pathlab/ray_counters.h"
+#include "pathlab/render/lab_registry.h"
+#include "pathlab/render/ray_counters.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -6,9 +6,9 @@
 #include "reports/reports.h"
 #include "reports/submission_time.h"
 
-#include "pathlab/lab_registry.h"
-#include "pathlab/render_stats.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/render/lab_registry.h"
+#include "pathlab/render/render_stats.h"
+#include "pathlab/support/whole_file.h"
 
 #include <algorithm>
 #include <cmath>

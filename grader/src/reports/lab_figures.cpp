@@ -2,10 +2,10 @@
 
 #include "checks/run_limits.h"
 
-#include "pathlab/image_noise.h"
-#include "pathlab/input_error.h"
-#include "pathlab/render_stats.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/images/image_noise.h"
+#include "pathlab/support/input_error.h"
+#include "pathlab/render/render_stats.h"
+#include "pathlab/support/whole_file.h"
 
 #include <nlohmann/json.hpp>
 

@@ -3,9 +3,9 @@
 #include "reports/page_style.h"
 #include "reports/tile_z_map.h"
 
-#include "pathlab/image_io.h"
-#include "pathlab/render_stats.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/images/image_io.h"
+#include "pathlab/render/render_stats.h"
+#include "pathlab/support/whole_file.h"
 
 #include <nlohmann/json.hpp>
 

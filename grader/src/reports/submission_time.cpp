@@ -1,6 +1,6 @@
 #include "reports/submission_time.h"
 
-#include "pathlab/input_error.h"
+#include "pathlab/support/input_error.h"
 
 #include <cstdio>
 #include <ctime>

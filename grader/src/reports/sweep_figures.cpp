@@ -1,6 +1,6 @@
 #include "reports/sweep_figures.h"
 
-#include "pathlab/parse_number.h"
+#include "pathlab/support/parse_number.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -1,6 +1,6 @@
 #include "reports/tile_z_map.h"
 
-#include "pathlab/false_colour.h"
+#include "pathlab/images/false_colour.h"
 
 #include <cmath>
 

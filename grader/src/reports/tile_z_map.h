@@ -27,8 +27,8 @@ double zScoreOfP(double p, double t);
 double tileZ(const std::vector<double>& regionT, const std::vector<double>& regionP, int tile);
 
 /// The map at the render's size, RGB8 ready for writeDisplayImage: every pixel the colour of the
-/// tile regionMeans puts it in (pathlab/false_colour.h's diverging palette, ±tileZSaturation at
-/// its ends); a tile without a z-score grey. Empty when the statistics do not hold
+/// tile regionMeans puts it in (pathlab/images/false_colour.h's diverging palette, ±tileZSaturation
+/// at its ends); a tile without a z-score grey. Empty when the statistics do not hold
 /// `tilesPerSide`² tiles.
 std::vector<unsigned char> tileZImage(const std::vector<double>& regionT,
                                       const std::vector<double>& regionP, int tilesPerSide,

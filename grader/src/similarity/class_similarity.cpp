@@ -2,8 +2,8 @@
 
 #include "similarity/similarity.h"
 
-#include "pathlab/lab_registry.h"
-#include "pathlab/whole_file.h"
+#include "pathlab/render/lab_registry.h"
+#include "pathlab/support/whole_file.h"
 
 #include <filesystem>
 #include <map>

@@ -11,7 +11,7 @@
 
 namespace pathlab {
 
-/// One frame against the reference (pathlab/relative_mse.h).
+/// One frame against the reference (pathlab/images/relative_mse.h).
 struct ConvergencePoint {
     int spp = 0;
     double seconds = 0; ///< rendering time of all the run's passes so far

@@ -1,9 +1,9 @@
 #pragma once
 /// A whole headless render: load, trace, measure. The viewer's -o and the grader share it.
 
-#include "pathlab/accumulation_buffer.h"
-#include "pathlab/render_options.h"
-#include "pathlab/render_stats.h"
+#include "pathlab/render/accumulation_buffer.h"
+#include "pathlab/render/render_options.h"
+#include "pathlab/render/render_stats.h"
 
 namespace pathlab {
 

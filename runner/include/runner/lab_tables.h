@@ -1,8 +1,8 @@
 #pragma once
 /// The tables that map each lab to its pathTrace, one per implementation.
 
-#include "pathlab/lab_registry.h"
-#include "pathlab/renderer.h"
+#include "pathlab/render/lab_registry.h"
+#include "pathlab/render/renderer.h"
 
 #include <array>
 

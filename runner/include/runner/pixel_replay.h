@@ -3,9 +3,9 @@
 /// reference solutions and the lab is the student's, through the reference on the same random
 /// numbers, compared.
 
-#include "pathlab/inspected_path.h"
-#include "pathlab/path_comparison.h"
-#include "pathlab/render_options.h"
+#include "pathlab/inspect/inspected_path.h"
+#include "pathlab/inspect/path_comparison.h"
+#include "pathlab/render/render_options.h"
 
 #include <optional>
 

@@ -1,14 +1,14 @@
 #pragma once
 /// Renders frame after frame on a thread of its own, so the window never waits for a frame.
 
-#include "pathlab/accumulation_buffer.h"
-#include "pathlab/camera.h"
-#include "pathlab/lab_parameters.h"
-#include "pathlab/lab_registry.h"
-#include "pathlab/render_scene.h"
-#include "pathlab/render_stats.h"
-#include "pathlab/render_watchdog.h"
-#include "pathlab/renderer.h"
+#include "pathlab/render/accumulation_buffer.h"
+#include "pathlab/scene_io/camera.h"
+#include "pathlab/render/lab_parameters.h"
+#include "pathlab/render/lab_registry.h"
+#include "pathlab/render/render_scene.h"
+#include "pathlab/render/render_stats.h"
+#include "pathlab/render/render_watchdog.h"
+#include "pathlab/render/renderer.h"
 
 #include <atomic>
 #include <condition_variable>

@@ -1,0 +1,84 @@
+#pragma once
+/// Everything the command line (and the .ecs files it names) can set.
+
+#include "pathlab/scene_io/camera.h"
+#include "pathlab/render/lab_parameters.h"
+#include "pathlab/render/lab_registry.h"
+#include "pathlab/scene_io/option_reader.h"
+#include "pathlab/render/render_watchdog.h"
+#include "pathlab/scene_io/scene.h"
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pathlab {
+
+struct RenderOptions {
+    // Scene
+    std::string sceneName;                 ///< the .ecs or .obj named first, for reports
+    std::vector<std::string> sceneScripts; ///< -c files read, those they include as well
+    std::vector<std::string> objFiles;     ///< -i, resolved relative to the .ecs that named them
+    std::vector<PointLight> pointLights;   ///< --pointlight
+    std::vector<DirectionalLight> directionalLights; ///< --dirlight, --directionallight
+    CameraSettings camera;
+    bool cameraSet = false; ///< any of --vp/--vi/--vd/--vu/--fov was given
+    /// Which of them place the camera; loadScene() frames the model for what they leave open
+    /// (pathlab/scene_io/scene_defaults.h).
+    bool cameraPositionSet = false; ///< --vp
+    bool cameraLookAtSet = false;   ///< --vi or --vd
+    bool fovSet = false;            ///< --fov
+    /// --vd without --vp: look along it at the model (with --vp, camera.lookAt is --vp + --vd).
+    std::optional<Vec3> viewDirection;
+    int width = 512, height = 512; ///< --size
+
+    // Estimator
+    Lab lab = Lab::Branching;                                ///< --lab
+    Implementation implementation = Implementation::Student; ///< --solution
+    LabParameters parameters;                                ///< --max-depth, --continue-prob
+    uint64_t seed = 0;                                       ///< --seed
+    int threads = 0;                                         ///< --threads; 0 = all cores
+    /// --reverse-tiles: the last tile first. The image stays the same for a lab that takes its
+    /// random numbers from ctx.sampler alone; the grader's reproducibility check relies on that.
+    bool reverseTiles = false;
+    /// --watchdog: a render whose lab finishes no sample for this long ends (RenderWatchdog);
+    /// 0 = never.
+    double watchdogSeconds = RenderWatchdog::DefaultSeconds;
+
+    // Headless output
+    std::string outputImage; ///< -o
+    int spp = 16;            ///< --spp
+    std::string statsFile;   ///< --stats
+    int seedCount = 1;       ///< --seeds: that many images, for seeds seed, seed+1, ...
+    // Path inspector (headless; with -o, after the render)
+    bool inspect = false; ///< --inspect X Y
+    int inspectX = 0, inspectY = 0;
+    int inspectSamples = 8; ///< --inspect-samples
+    std::string inspectOut; ///< --inspect-out FILE.json; empty: print the table
+
+    bool help = false; ///< --help
+};
+
+/// Options a program reads beside these (the viewer's window options, apps/viewer): by name
+/// without dashes, what reads the option's values.
+using ExtraOptions =
+    std::map<std::string, std::function<void(OptionReader& in, const Token& option)>>;
+
+/// Parses the command line; -c files are read in place, as if their tokens had been typed there.
+/// Throws InputError naming the option (and file:line for .ecs files) on anything it cannot use.
+/// Embree's options PathLab has no meaning for are skipped with one warning per script on
+/// stderr (pathlab/scene_io/embree_only_options.h).
+RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraOptions& extra = {});
+
+/// The summary of these options, for --help.
+std::string renderOptionsHelp();
+
+/// Loads the scene files the options name and adds their lights and camera. Where they give no
+/// camera, or no light at all, it adds its own with a note on stderr
+/// (pathlab/scene_io/scene_defaults.h): a scene from loadScene() always has a camera.
+Scene loadScene(const RenderOptions& options);
+
+} // namespace pathlab

@@ -1,0 +1,185 @@
+#include "pathlab/inspect/inspection_json.h"
+
+#include "pathlab/support/input_error.h"
+
+#include <nlohmann/json.hpp>
+
+namespace pathlab {
+
+namespace {
+
+using nlohmann::json;
+
+json rgb(const Color& c) { return json::array({c.r, c.g, c.b}); }
+json xyz(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
+template <typename T> json optional(const std::optional<T>& value) {
+    return value ? json(*value) : json(nullptr);
+}
+json optionalColor(const std::optional<Color>& c) { return c ? rgb(*c) : json(nullptr); }
+
+Color colorOf(const json& j) {
+    return {j.at(0).get<float>(), j.at(1).get<float>(), j.at(2).get<float>()};
+}
+Vec3 vec3Of(const json& j) {
+    return {j.at(0).get<float>(), j.at(1).get<float>(), j.at(2).get<float>()};
+}
+std::optional<Color> optionalColorOf(const json& j) {
+    return j.is_null() ? std::nullopt : std::optional<Color>(colorOf(j));
+}
+
+json vertexJson(const InspectedVertex& v) {
+    json continued = json::array();
+    for (const PathContinuation& c : v.continuedBy)
+        continued.push_back({{"child", c.child},
+                             {"component", c.component},
+                             {"probability", optional(c.probability)},
+                             {"weighted_by", c.weightedBy.empty() ? json() : json(c.weightedBy)}});
+    json roulette = nullptr;
+    if (v.roulette)
+        roulette = {{"draw", v.roulette->draw},
+                    {"continue_prob", v.roulette->continueProb},
+                    {"went_on", v.roulette->wentOn}};
+    json shadow = nullptr;
+    if (v.shadowRay) shadow = {{"from", xyz(v.shadowRay->from)}, {"to", xyz(v.shadowRay->to)}};
+    const PathContinuation* first = v.continuedBy.empty() ? nullptr : &v.continuedBy.front();
+    return {{"index", v.index},
+            {"parent", v.parent},
+            {"depth", v.depth},
+            {"arrived_by", v.arrivedBy},
+            {"origin", xyz(v.ray.origin)},
+            {"direction", xyz(v.ray.direction)},
+            {"found", v.found},
+            {"position", xyz(v.position)},
+            {"material",
+             {{"Kd", rgb(v.material.Kd)},
+              {"Ks", rgb(v.material.Ks)},
+              {"Kt", rgb(v.material.Kt)},
+              {"Ke", rgb(v.material.Ke)},
+              {"Ni", v.material.Ni}}},
+            {"emitted", rgb(v.emitted)},
+            {"throughput", optionalColor(v.throughput)},
+            {"linear", v.linear},
+            {"emission_weight", optionalColor(v.emissionWeight)},
+            {"emission_added", rgb(v.emissionAdded)},
+            {"direct_light_called", v.directLightCalled},
+            {"direct_light", rgb(v.directLight)},
+            {"direct_light_added", rgb(v.directLightAdded)},
+            {"shadow_ray", shadow},
+            {"draws", v.draws},
+            {"component", first ? json(first->component) : json(nullptr)},
+            {"probability", first ? optional(first->probability) : json(nullptr)},
+            {"continued_by", continued},
+            {"roulette", roulette}};
+}
+
+json inspectionObject(const PixelInspection& inspection) {
+    json samples = json::array();
+    for (const InspectedSample& s : inspection.samples) {
+        json vertices = json::array(), calls = json::array();
+        for (const InspectedVertex& v : s.vertices) vertices.push_back(vertexJson(v));
+        for (const InspectedCall& c : s.calls)
+            calls.push_back({{"type", c.type}, {"vertex", c.vertex}, {"draws", c.drawsBefore}});
+        samples.push_back({{"index", s.index},
+                           {"contribution", rgb(s.contribution)},
+                           {"vertices", vertices},
+                           {"calls", calls}});
+    }
+    return {{"lab", inspection.lab},
+            {"impl", inspection.implementation},
+            {"pixel", {inspection.x, inspection.y}},
+            {"seed", inspection.seed},
+            {"max_depth", inspection.maxDepth},
+            {"continue_prob", inspection.continueProb},
+            {"uses_roulette", inspection.usesRoulette},
+            {"samples", samples}};
+}
+
+InspectedVertex vertexOf(const json& j) {
+    InspectedVertex v;
+    v.index = j.at("index").get<int>();
+    v.parent = j.at("parent").get<int>();
+    v.depth = j.at("depth").get<int>();
+    v.arrivedBy = j.at("arrived_by").get<std::string>();
+    v.ray = {vec3Of(j.at("origin")), vec3Of(j.at("direction")), RayKind::Camera};
+    v.found = j.at("found").get<bool>();
+    v.position = vec3Of(j.at("position"));
+    const json& m = j.at("material");
+    v.material = {colorOf(m.at("Kd")), colorOf(m.at("Ks")), colorOf(m.at("Kt")),
+                  m.at("Ni").get<float>(), colorOf(m.at("Ke"))};
+    v.emitted = colorOf(j.at("emitted"));
+    v.throughput = optionalColorOf(j.at("throughput"));
+    v.linear = j.value("linear", true);
+    v.emissionWeight = optionalColorOf(j.at("emission_weight"));
+    v.emissionAdded = colorOf(j.at("emission_added"));
+    v.directLightCalled = j.at("direct_light_called").get<bool>();
+    v.directLight = colorOf(j.at("direct_light"));
+    v.directLightAdded = colorOf(j.at("direct_light_added"));
+    if (!j.at("shadow_ray").is_null())
+        v.shadowRay = ShadowSegment{vec3Of(j.at("shadow_ray").at("from")),
+                                    vec3Of(j.at("shadow_ray").at("to"))};
+    v.draws = j.at("draws").get<std::vector<float>>();
+    for (const json& c : j.at("continued_by"))
+        v.continuedBy.push_back(
+            {c.at("child").get<int>(), c.at("component").get<std::string>(),
+             c.at("probability").is_null() ? std::nullopt
+                                           : std::optional<float>(c.at("probability").get<float>()),
+             c.value("weighted_by", json()).is_string() ? c.at("weighted_by").get<std::string>()
+                                                        : std::string()});
+    if (!j.at("roulette").is_null())
+        v.roulette = RouletteDraw{j.at("roulette").at("draw").get<float>(),
+                                  j.at("roulette").at("continue_prob").get<float>(),
+                                  j.at("roulette").at("went_on").get<bool>()};
+    return v;
+}
+
+} // namespace
+
+std::string inspectionJson(const PixelInspection& lab, const PixelInspection* reference,
+                           const PathComparison* comparison) {
+    json out = inspectionObject(lab);
+    if (reference) out["reference"] = inspectionObject(*reference);
+    if (comparison) {
+        json divergence = nullptr;
+        if (const auto& d = comparison->divergence)
+            divergence = {{"sample", lab.samples[d->sample].index},
+                          {"vertex", d->vertex},
+                          {"kind", d->kind},
+                          {"step", d->step},
+                          {"text", d->text}};
+        out["comparison"] = {{"samples_compared", comparison->samplesCompared},
+                             {"comparable", comparison->comparable},
+                             {"divergence", divergence},
+                             {"summary", describeComparison(*comparison, lab)}};
+    }
+    return out.dump(1) + "\n";
+}
+
+PixelInspection readInspectionJson(const std::string& text, const std::string& source) {
+    try {
+        const json j = json::parse(text);
+        PixelInspection inspection;
+        inspection.lab = j.at("lab").get<std::string>();
+        inspection.implementation = j.at("impl").get<std::string>();
+        inspection.x = j.at("pixel").at(0).get<int>();
+        inspection.y = j.at("pixel").at(1).get<int>();
+        inspection.seed = j.at("seed").get<uint64_t>();
+        inspection.maxDepth = j.at("max_depth").get<int>();
+        inspection.continueProb = j.at("continue_prob").get<float>();
+        inspection.usesRoulette = j.at("uses_roulette").get<bool>();
+        for (const json& s : j.at("samples")) {
+            InspectedSample sample;
+            sample.index = s.at("index").get<uint64_t>();
+            sample.contribution = colorOf(s.at("contribution"));
+            for (const json& v : s.at("vertices")) sample.vertices.push_back(vertexOf(v));
+            for (const json& c : s.at("calls"))
+                sample.calls.push_back({c.at("type").get<std::string>(), c.at("vertex").get<int>(),
+                                        c.at("draws").get<std::vector<float>>()});
+            inspection.samples.push_back(std::move(sample));
+        }
+        return inspection;
+    } catch (const json::exception& error) {
+        throw InputError(source + ": not a path inspector's JSON (" + error.what() + ")");
+    }
+}
+
+} // namespace pathlab

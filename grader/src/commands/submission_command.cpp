@@ -1,0 +1,47 @@
+// grader submission: one submitted set of labs graded in the sandbox, its feedback written; the
+// command each job of `grader batch` runs (batch.cpp), and an instructor may run by hand.
+#include "checks/grading_scenes.h"
+#include "commands/commands.h"
+#include "commands/grading_host.h"
+#include "commands/output_lock.h"
+#include "commands/submission_grading.h"
+
+#include <cstdio>
+
+namespace pathlab::grader {
+
+int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
+    requireSandbox();
+    const OutputLock lock(a.out, "grading of a submission");
+    SubmissionGrader g;
+    g.build = labBuildOfThisGrader();
+    g.rubric = rubric;
+    g.workCpus = a.workCpus;
+    g.kit = a.kit.empty()
+                ? buildLabKit(g.build, a.out + "/kit", {a.workCpus, sandboxUserForThisProcess()})
+                : existingLabKit(a.kit);
+    // References of hidden scenes come from the solutions, linked into this build's viewer.
+    const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
+    std::vector<std::string> notes;
+    g.scenes = gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden},
+                             solution, scratch, notes);
+    g.scenesHash = scenesHash(rubric, a.scenesDir);
+    g.timing = {a.timingCpus, a.timingLock, a.timingCpus.empty() ? 0 : 1};
+    g.threads = a.workCpus.empty() ? a.threads : static_cast<int>(a.workCpus.size());
+    g.seedBase = a.seed;
+    g.measureSpeed = a.speed;
+    if (a.raceCheck) {
+        g.raceCheck = raceCheckRuntime(g.build, {a.workCpus, sandboxUserForThisProcess()});
+        if (!g.raceCheck.available())
+            std::fprintf(stderr, "race check skipped: %s\n", g.raceCheck.unavailable.c_str());
+    }
+    SubmissionOutcome outcome = gradeSubmission(g, a.inputs[0], a.out, scratch);
+    outcome.report.notes.insert(outcome.report.notes.begin(), notes.begin(), notes.end());
+    std::printf("%s: %s\n", outcome.id.c_str(), outcome.status.c_str());
+    std::fputs(terminalReport(outcome.report, false).c_str(), stdout);
+    writeReports(a, rubric, outcome.report);
+    // As every command that grades: 1 when a check failed (or a lab was not graded).
+    return outcome.report.score() == outcome.report.maxScore() ? 0 : 1;
+}
+
+} // namespace pathlab::grader
