@@ -6,6 +6,7 @@
 
 #include "pathlab/images/false_colour.h"
 #include "pathlab/render/render_options.h"
+#include "pathlab/render/scene_from_options.h"
 
 #include <chrono>
 #include <cstdio>

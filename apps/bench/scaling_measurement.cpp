@@ -2,6 +2,7 @@
 
 #include "pathlab/render/accumulation_buffer.h"
 #include "pathlab/render/render_options.h"
+#include "pathlab/render/scene_from_options.h"
 
 #include <algorithm>
 #include <chrono>

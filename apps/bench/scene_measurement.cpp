@@ -1,6 +1,7 @@
 #include "scene_measurement.h"
 
 #include "pathlab/render/render_options.h"
+#include "pathlab/render/scene_from_options.h"
 
 namespace pathlab::bench {
 

@@ -17,6 +17,7 @@
 #include "pathlab/images/relative_error_map.h"
 #include "pathlab/support/program_main.h"
 #include "pathlab/render/render_options.h"
+#include "pathlab/render/scene_from_options.h"
 #include "pathlab/render/render_scene.h"
 #include "pathlab/support/whole_file.h"
 

@@ -15,6 +15,7 @@
 #include "runner/lab_tables.h"
 #include "runner/progressive_renderer.h"
 
+#include "pathlab/render/scene_from_options.h"
 #include "pathlab/images/image_io.h"
 #include "pathlab/render/render_scene.h"
 

@@ -2,6 +2,7 @@
 
 #include "runner/lab_tables.h"
 
+#include "pathlab/render/scene_from_options.h"
 #include "pathlab/scene_io/camera.h"
 #include "pathlab/render/render_progress_line.h"
 #include "pathlab/render/render_scene.h"

@@ -3,6 +3,7 @@
 #include "catch.h"
 #include "test_support.h"
 
+#include "pathlab/render/scene_from_options.h"
 #include "pathlab/support/check.h"
 #include "pathlab/render/path_driver.h"
 #include "pathlab/render/renderer.h"

@@ -4,6 +4,7 @@
 
 #include "runner/lab_tables.h"
 
+#include "pathlab/render/scene_from_options.h"
 #include "pathlab/render/renderer.h"
 
 #include <cstring>

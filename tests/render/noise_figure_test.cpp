@@ -5,6 +5,7 @@
 
 #include "runner/lab_tables.h"
 
+#include "pathlab/render/scene_from_options.h"
 #include "pathlab/render/accumulation_buffer.h"
 #include "pathlab/images/image_noise.h"
 #include "pathlab/support/pcg32.h"

@@ -14,6 +14,7 @@
 
 #include "runner/pixel_replay.h"
 
+#include "pathlab/render/scene_from_options.h"
 #include "pathlab/inspect/inspection_json.h"
 #include "pathlab/render/render_scene.h"
 

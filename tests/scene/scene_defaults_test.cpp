@@ -8,6 +8,7 @@
 #include "pathlab/images/image_io.h"
 #include "pathlab/scene_io/model_coverage.h"
 #include "pathlab/render/render_options.h"
+#include "pathlab/render/scene_from_options.h"
 #include "pathlab/scene_io/scene_defaults.h"
 
 #include <cmath>

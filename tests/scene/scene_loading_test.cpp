@@ -4,6 +4,7 @@
 
 #include "pathlab/scene_io/obj_loader.h"
 #include "pathlab/render/render_options.h"
+#include "pathlab/render/scene_from_options.h"
 
 #include <filesystem>
 #include <fstream>

@@ -4,10 +4,20 @@
 #include "pathlab/constants.h"
 #include "pathlab/render/triangle_sampling.h"
 
+#include <utility>
+
 namespace pathlab {
 
-LightSampler::LightSampler(const Scene& scene) {
+namespace {
+
+/// A light and the power it sends out, by which it is picked.
+struct WeightedLights {
+    std::vector<LightSource> lights;
     std::vector<double> power;
+};
+
+void addPointLights(const Scene& scene, WeightedLights& out) {
+    auto& [lights, power] = out;
     for (size_t i = 0; i < scene.pointLights.size(); ++i) {
         const double p = 4.0 * Pi * average(scene.pointLights[i].intensity);
         if (p <= 0) continue;
@@ -16,9 +26,13 @@ LightSampler::LightSampler(const Scene& scene) {
         light.index = static_cast<uint32_t>(i);
         light.position = scene.pointLights[i].position;
         light.intensity = scene.pointLights[i].intensity;
-        lights_.push_back(light);
+        lights.push_back(light);
         power.push_back(p);
     }
+}
+
+void addEmittingTriangles(const Scene& scene, WeightedLights& out) {
+    auto& [lights, power] = out;
     for (size_t i = 0; i < scene.triangles.size(); ++i) {
         const Color& Ke = scene.materials[scene.triangleMaterials[i]].Ke;
         if (isBlack(Ke)) continue;
@@ -35,29 +49,46 @@ LightSampler::LightSampler(const Scene& scene) {
         light.c = scene.positions[t[2]];
         light.areaNormal = cross(light.b - light.a, light.c - light.a);
         light.Ke = Ke;
-        lights_.push_back(light);
+        lights.push_back(light);
         power.push_back(p);
     }
-    if (!scene.directionalLights.empty()) {
-        // A directional light's power is what crosses the disc the scene presents to it, of the
-        // radius of the sphere around the scene (as pbrt counts it).
-        const BoundingBox bounds = scene.bounds();
-        const float radius = bounds.radius();
-        for (size_t i = 0; i < scene.directionalLights.size(); ++i) {
-            const DirectionalLight& directional = scene.directionalLights[i];
-            const double p = Pi * double(radius) * radius * average(directional.irradiance);
-            if (p <= 0) continue;
-            LightSource light;
-            light.type = LightSource::Type::Directional;
-            light.index = static_cast<uint32_t>(i);
-            light.towardLight = -normalize(directional.direction);
-            light.irradiance = directional.irradiance;
-            // From a point inside the sphere, 2r reaches outside it; a little more clears it.
-            light.shadowDistance = 2.0f * radius * 1.01f + 1e-3f;
-            lights_.push_back(light);
-            power.push_back(p);
-        }
+}
+
+void addDirectionalLights(const Scene& scene, WeightedLights& out) {
+    auto& [lights, power] = out;
+    if (scene.directionalLights.empty()) return;
+    // A directional light's power is what crosses the disc the scene presents to it, of the
+    // radius of the sphere around the scene (as pbrt counts it).
+    const BoundingBox bounds = scene.bounds();
+    const float radius = bounds.radius();
+    for (size_t i = 0; i < scene.directionalLights.size(); ++i) {
+        const DirectionalLight& directional = scene.directionalLights[i];
+        const double p = Pi * double(radius) * radius * average(directional.irradiance);
+        if (p <= 0) continue;
+        LightSource light;
+        light.type = LightSource::Type::Directional;
+        light.index = static_cast<uint32_t>(i);
+        light.towardLight = -normalize(directional.direction);
+        light.irradiance = directional.irradiance;
+        // From a point inside the sphere, 2r reaches outside it; a little more clears it.
+        light.shadowDistance = 2.0f * radius * 1.01f + 1e-3f;
+        lights.push_back(light);
+        power.push_back(p);
     }
+}
+
+} // namespace
+
+LightSampler::LightSampler(const Scene& scene) {
+    WeightedLights weighted;
+    addPointLights(scene, weighted);
+    addEmittingTriangles(scene, weighted);
+    addDirectionalLights(scene, weighted);
+    lights_ = std::move(weighted.lights);
+    buildAliasTable(weighted.power);
+}
+
+void LightSampler::buildAliasTable(const std::vector<double>& power) {
     const size_t n = lights_.size();
     if (n == 0) return;
 

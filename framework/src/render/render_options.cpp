@@ -2,10 +2,8 @@
 
 #include "pathlab/scene_io/embree_only_options.h"
 #include "pathlab/support/input_error.h"
-#include "pathlab/scene_io/obj_loader.h"
 #include "pathlab/scene_io/option_reader.h"
 #include "pathlab/support/parse_number.h"
-#include "pathlab/scene_io/scene_defaults.h"
 #include "pathlab/scene_io/scene_script.h"
 #include "pathlab/scene_io/xml_scene.h"
 
@@ -30,52 +28,11 @@ std::string optionName(const std::string& text) {
     return {};
 }
 
-/// The options' camera, with what they leave open framed on the scene's model, and a note
-/// saying so.
-CameraSettings sceneCamera(const RenderOptions& options, const Scene& scene) {
-    if (options.cameraPositionSet && options.cameraLookAtSet) return options.camera;
-    GivenCamera given;
-    given.settings = options.camera;
-    given.position = options.cameraPositionSet;
-    given.lookAt = options.cameraLookAtSet;
-    given.fov = options.fovSet;
-    given.viewDirection = options.viewDirection;
-    const CameraSettings camera = framingCamera(
-        scene, given, static_cast<float>(options.width) / static_cast<float>(options.height));
-    const Vec3& at = camera.lookAt;
-    const Vec3& from = camera.position;
-    if (given.lookAt)
-        std::fprintf(stderr,
-                     "note: no --vp given: looking at (%g, %g, %g) from (%g, %g, %g), far enough "
-                     "back to see the whole model; set --vp X Y Z to choose\n",
-                     at.x, at.y, at.z, from.x, from.y, from.z);
-    else if (given.position)
-        std::fprintf(stderr,
-                     "note: no --vi given: looking at the model's centre (%g, %g, %g) from (%g, "
-                     "%g, %g); set --vi X Y Z to choose\n",
-                     at.x, at.y, at.z, from.x, from.y, from.z);
-    else if (given.viewDirection)
-        std::fprintf(stderr,
-                     "note: no --vp given: looking along --vd at the model (%g, %g, %g) from "
-                     "(%g, %g, %g), far enough back to see all of it; set --vp X Y Z to "
-                     "choose\n",
-                     at.x, at.y, at.z, from.x, from.y, from.z);
-    else
-        std::fprintf(stderr,
-                     "note: no camera given (--vp/--vi): looking at the model (%g, %g, "
-                     "%g) from (%g, %g, %g); set --vp X Y Z --vi X Y Z to choose\n",
-                     at.x, at.y, at.z, from.x, from.y, from.z);
-    return camera;
-}
+using Handler = std::function<void(const Token&)>;
+using Handlers = std::map<std::string, Handler>;
 
-} // namespace
-
-RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraOptions& extra) {
-    RenderOptions o;
-    OptionReader in(commandLineTokens(argc, argv));
-    int scriptDepth = 0;
-    IgnoredOptions ignored;
-    using Handler = std::function<void(const Token&)>;
+/// The scene's options: its files, camera, lights and image size. -c reads a script in place.
+Handlers sceneOptions(RenderOptions& o, OptionReader& in, int& scriptDepth) {
     // Embree's --directionallight, and its alias -dirlight, which Embree's scripts use.
     const Handler directionalLight = [&](const Token& t) {
         DirectionalLight light;
@@ -88,7 +45,7 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
         light.irradiance = {e.x, e.y, e.z};
         o.directionalLights.push_back(light);
     };
-    const std::map<std::string, Handler> handlers = {
+    return {
         {"c",
          [&](const Token& t) {
              const std::string path = in.path(t);
@@ -151,6 +108,12 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
              o.width = in.positive(t, "a width in pixels", 16384);
              o.height = in.positive(t, "a height in pixels", 16384);
          }},
+    };
+}
+
+/// The estimator's options: which lab, whose code, its parameters, seed and threads.
+Handlers estimatorOptions(RenderOptions& o, OptionReader& in) {
+    return {
         {"lab",
          [&](const Token& t) {
              const Token& name = in.value(t, "a lab name");
@@ -198,6 +161,12 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
                                            in.current().text);
              o.watchdogSeconds = seconds;
          }},
+    };
+}
+
+/// The headless outputs' options (-o, --stats, --seeds, the inspector's) and --help.
+Handlers outputOptions(RenderOptions& o, OptionReader& in) {
+    return {
         {"o", [&](const Token& t) { o.outputImage = in.value(t, "an image file name").text; }},
         {"spp", [&](const Token& t) { o.spp = in.positive(t, "samples per pixel", 1 << 24); }},
         {"stats", [&](const Token& t) { o.statsFile = in.value(t, "a .json file name").text; }},
@@ -216,6 +185,18 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
         {"help", [&](const Token&) { o.help = true; }},
         {"h", [&](const Token&) { o.help = true; }},
     };
+}
+
+} // namespace
+
+RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraOptions& extra) {
+    RenderOptions o;
+    OptionReader in(commandLineTokens(argc, argv));
+    int scriptDepth = 0;
+    IgnoredOptions ignored;
+    Handlers handlers = sceneOptions(o, in, scriptDepth);
+    handlers.merge(estimatorOptions(o, in));
+    handlers.merge(outputOptions(o, in));
 
     while (!in.done()) {
         const Token& token = in.take();
@@ -249,27 +230,6 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
     for (const std::string& warning : ignored.warnings())
         std::fprintf(stderr, "%s\n", warning.c_str());
     return o;
-}
-
-Scene loadScene(const RenderOptions& options) {
-    if (options.objFiles.empty())
-        throw InputError("no scene given: use -c FILE.ecs or -i FILE.obj");
-    Scene scene;
-    for (const std::string& obj : options.objFiles) loadObj(obj, scene);
-    for (const PointLight& light : options.pointLights) scene.pointLights.push_back(light);
-    for (const DirectionalLight& light : options.directionalLights)
-        scene.directionalLights.push_back(light);
-    scene.camera = sceneCamera(options, scene);
-    if (!hasLight(scene)) {
-        const PointLight light = headlight(*scene.camera);
-        std::fprintf(stderr,
-                     "note: the scene has no light (no Ke material, no --pointlight, no "
-                     "--dirlight): added a point light of %g W/sr at the camera; give "
-                     "--pointlight X Y Z R G B or --dirlight DX DY DZ R G B instead\n",
-                     light.intensity.r);
-        scene.pointLights.push_back(light);
-    }
-    return scene;
 }
 
 std::string renderOptionsHelp() {

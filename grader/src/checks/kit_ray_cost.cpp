@@ -6,6 +6,7 @@
 #include "pathlab/path_context.h"
 #include "pathlab/scattering.h"
 #include "pathlab/render/render_options.h"
+#include "pathlab/render/scene_from_options.h"
 #include "pathlab/render/render_scene.h"
 #include "pathlab/render/renderer.h"
 

@@ -56,6 +56,9 @@ public:
     const LightSource& light(size_t i) const { return lights_[i]; }
 
 private:
+    /// Vose's construction of Walker's alias table, each light in proportion to its power.
+    void buildAliasTable(const std::vector<double>& power);
+
     std::vector<LightSource> lights_;
     std::vector<float> pmf_;
     std::vector<float> threshold_;

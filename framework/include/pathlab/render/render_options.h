@@ -1,5 +1,6 @@
 #pragma once
-/// Everything the command line (and the .ecs files it names) can set.
+/// Everything the command line (and the .ecs files it names) can set; the scene they name is
+/// loaded by scene_from_options.h.
 
 #include "pathlab/scene_io/camera.h"
 #include "pathlab/render/lab_parameters.h"
@@ -75,10 +76,5 @@ RenderOptions parseRenderOptions(int argc, const char* const* argv, const ExtraO
 
 /// The summary of these options, for --help.
 std::string renderOptionsHelp();
-
-/// Loads the scene files the options name and adds their lights and camera. Where they give no
-/// camera, or no light at all, it adds its own with a note on stderr
-/// (pathlab/scene_io/scene_defaults.h): a scene from loadScene() always has a camera.
-Scene loadScene(const RenderOptions& options);
 
 } // namespace pathlab

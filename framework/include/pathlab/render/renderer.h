@@ -74,6 +74,17 @@ public:
 
 private:
     struct Arena;
+    class FirstFailure;
+    class PassTiles;
+    /// The CPU time a pass took: the whole process's, and its render threads' (the process's
+    /// where the system has no clock per thread).
+    struct PassCpuTime {
+        double process = 0, threads = 0;
+    };
+    /// Renders every tile on the arena's threads; a lab's exception is kept in `failure`.
+    PassCpuTime renderTilesInParallel(PassTiles& tiles, const std::atomic<bool>* cancel,
+                                      FirstFailure& failure);
+
     const RenderScene& scene_;
     int threads_;
     std::unique_ptr<Arena> arena_;
