@@ -34,13 +34,10 @@ namespace {
 ViewSettings initialSettings(const RenderOptions& options, const WindowOptions& windowOptions,
                              GLFWwindow* window, const RenderScene& scene) {
     ViewSettings settings;
-    settings.lab = options.lab;
-    settings.implementation = options.implementation;
-    settings.parameters = options.parameters;
+    static_cast<RenderIdentity&>(settings) = options; // its size is the framebuffer's, below
     settings.camera = scene.scene().camera.value_or(scene.scene().framingCamera());
     glfwGetFramebufferSize(window, &settings.width, &settings.height);
     settings.sppPerFrame = windowOptions.sppPerFrame;
-    settings.seed = options.seed;
     return settings;
 }
 

@@ -43,10 +43,9 @@ HeadlessResult renderHeadless(const RenderOptions& options, const RenderScene& s
     }
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
 
-    result.stats = renderStats(
-        {options.sceneName, options.lab, options.implementation, options.parameters, options.seed},
-        result.image, renderer.threads(), elapsed.count(), renderer.rayCounters(),
-        renderer.firstNonfinite(), {renderer.cpuSeconds(), renderer.processCpuSeconds()});
+    result.stats = renderStats({options, options.sceneName}, result.image, renderer.threads(),
+                               elapsed.count(), renderer.rayCounters(), renderer.firstNonfinite(),
+                               {renderer.cpuSeconds(), renderer.processCpuSeconds()});
     setHeadlessFrameRate(result.stats);
     return result;
 }

@@ -13,13 +13,11 @@ bool ViewSettings::operator==(const ViewSettings& o) const {
     const auto same = [](const Vec3& a, const Vec3& b) {
         return a.x == b.x && a.y == b.y && a.z == b.z;
     };
-    return lab == o.lab && implementation == o.implementation &&
-           parameters.maxDepth == o.parameters.maxDepth &&
-           parameters.continueProb == o.parameters.continueProb &&
+    return static_cast<const RenderIdentity&>(*this) == o &&
            same(camera.position, o.camera.position) && same(camera.lookAt, o.camera.lookAt) &&
            same(camera.up, o.camera.up) && camera.fovDegrees == o.camera.fovDegrees &&
-           camera.leftHanded == o.camera.leftHanded && width == o.width && height == o.height &&
-           sppPerFrame == o.sppPerFrame && seed == o.seed && split == o.split;
+           camera.leftHanded == o.camera.leftHanded && sppPerFrame == o.sppPerFrame &&
+           split == o.split;
 }
 
 namespace {
@@ -210,10 +208,9 @@ Frame ProgressiveRenderer::frameFigures(const Accumulation& accumulation, double
     frame.frameSeconds = seconds;
     frame.medianFrameSeconds = accumulation.frameRate.medianSeconds();
     frame.raysPerSecond = static_cast<double>(traced.total()) / seconds;
-    frame.stats =
-        renderStats({"", settings.lab, settings.implementation, settings.parameters, settings.seed},
-                    accumulation.buffers[0], renderer_.threads(), accumulation.seconds[0],
-                    accumulation.rays, accumulation.firstNonfinite, accumulation.cpu);
+    frame.stats = renderStats({settings, ""}, accumulation.buffers[0], renderer_.threads(),
+                              accumulation.seconds[0], accumulation.rays,
+                              accumulation.firstNonfinite, accumulation.cpu);
     return frame;
 }
 

@@ -136,7 +136,7 @@ TEST_CASE("the first non-finite sample is reported by sample index and pixel, wh
 
     // The line the viewer prints names all of it.
     RenderStats stats =
-        renderStats({"box", Lab::Roulette, Implementation::Student, {}, Seed}, buffer, 2, 1.0,
+        renderStats({{Lab::Roulette, Implementation::Student, {}, Seed}, "box"}, buffer, 2, 1.0,
                     renderer.rayCounters(), renderer.firstNonfinite());
     const std::string warning = stats.nonfiniteWarning();
     INFO(warning);

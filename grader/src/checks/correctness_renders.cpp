@@ -12,13 +12,8 @@ RenderRequest correctnessRequest(const GraderSetup& setup, const GradingScene& s
         scene.parameters.value_or(LabParameters{r.maxDepth, r.continueProb});
     return {&runner,
             scene.path,
-            lab,
-            r.width,
-            r.height,
+            requestedIdentity(runner, lab, parameters, seedBase, r.width, r.height),
             r.forLab(lab).correctnessSpp,
-            parameters.maxDepth,
-            parameters.continueProb,
-            seedBase,
             r.seeds,
             setup.threads,
             setup.scratch};

@@ -51,18 +51,14 @@ Reproducibility checkReproducibility(const GraderSetup& setup, Lab lab, const Se
     };
     std::vector<Render> renders = {{1, false, {}}, {2, true, {}}};
     for (Render& render : renders) {
-        RenderRequest request{&setup.student,
-                              scene.path,
-                              lab,
-                              r.width,
-                              r.height,
-                              r.forLab(lab).correctnessSpp,
-                              parameters.maxDepth,
-                              parameters.continueProb,
-                              seen.seed,
-                              1,
-                              render.threads,
-                              setup.scratch};
+        RenderRequest request{
+            &setup.student,
+            scene.path,
+            requestedIdentity(setup.student, lab, parameters, seen.seed, r.width, r.height),
+            r.forLab(lab).correctnessSpp,
+            1,
+            render.threads,
+            setup.scratch};
         request.reverseTiles = render.reverseTiles;
         const RenderResult result = renderLab(request, limitsOf(setup));
         if (!result.ok) return {}; // the correctness renders tell a crash or a hang

@@ -38,7 +38,7 @@ double startUpCpuSeconds(const GraderSetup& setup, const LabRunner& runner,
         std::vector<double> seconds;
         for (int i = 0; i < 3; ++i) {
             RenderRequest request = correctnessRequest(setup, scene, Lab::Branching, 1, runner);
-            request.width = request.height = request.spp = request.seeds = 1;
+            request.identity.width = request.identity.height = request.spp = request.seeds = 1;
             const RenderResult r = renderLab(request, limitsOf(setup));
             if (r.ok) seconds.push_back(r.process.cpuSeconds);
         }
@@ -61,7 +61,8 @@ TimedRun timedRun(const GraderSetup& setup, const GradingScene& scene, const Lab
         correctnessRequest(setup, scene, lab, firstSeedBase(setup), runner);
     TimedRun timed{renderLab(request, limitsOf(setup))};
     if (!timed.result.ok) return timed;
-    timed.samples = double(request.width) * request.height * request.spp * request.seeds;
+    timed.samples =
+        double(request.identity.width) * request.identity.height * request.spp * request.seeds;
     // A run's CPU time below its start-up's is the clock's resolution speaking, not the lab.
     timed.cpuSeconds =
         std::max(timed.result.process.cpuSeconds - startUp, 0.05 * timed.result.process.cpuSeconds);

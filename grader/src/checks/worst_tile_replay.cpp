@@ -24,13 +24,8 @@ RenderResult replayThrough(const GraderSetup& setup, const LabRunner& runner, La
         scene.parameters.value_or(LabParameters{r.maxDepth, r.continueProb});
     RenderRequest request{&runner,
                           scene.path,
-                          lab,
-                          r.width,
-                          r.height,
+                          requestedIdentity(runner, lab, parameters, seed, r.width, r.height),
                           1,
-                          parameters.maxDepth,
-                          parameters.continueProb,
-                          seed,
                           1,
                           setup.threads,
                           setup.scratch};

@@ -33,34 +33,18 @@ constexpr const char* WatchdogWords = "render watchdog: ";
 std::vector<std::string> viewerArguments(const RenderRequest& r, const std::string& scene,
                                          const std::string& image, const std::string& stats,
                                          const std::string& replay, const RenderLimits& limits) {
-    std::vector<std::string> argv = {"-c",
-                                     scene,
-                                     "--size",
-                                     std::to_string(r.width),
-                                     std::to_string(r.height),
-                                     "--spp",
-                                     std::to_string(r.spp),
-                                     "--lab",
-                                     std::string(labName(r.lab)),
-                                     "--max-depth",
-                                     std::to_string(r.maxDepth),
-                                     "--continue-prob",
-                                     std::to_string(r.continueProb),
-                                     "--seed",
-                                     std::to_string(r.seed),
-                                     "--seeds",
-                                     std::to_string(r.seeds),
-                                     "-o",
-                                     image,
-                                     "--stats",
-                                     stats};
+    // A submission's viewer runs its loaded library as its student table: never --solution.
+    RenderIdentity identity = r.identity;
+    if (r.runner->sandboxed()) identity.implementation = Implementation::Student;
+    std::vector<std::string> argv = {"-c", scene};
+    for (std::string& argument : renderIdentityArguments(identity)) argv.push_back(argument);
+    argv.insert(argv.end(), {"--spp", std::to_string(r.spp), "--seeds", std::to_string(r.seeds),
+                             "-o", image, "--stats", stats});
     // A lab that finishes no sample is stopped by the viewer's watchdog, which says so; one
     // that keeps finishing samples is stopped only by its CPU time (renderLab).
     char stall[32];
     std::snprintf(stall, sizeof stall, "%g", limits.stallSeconds);
     argv.insert(argv.end(), {"--watchdog", stall});
-    if (!r.runner->sandboxed() && r.runner->implementation == Implementation::Solution)
-        argv.push_back("--solution");
     if (r.threads > 0) argv.insert(argv.end(), {"--threads", std::to_string(r.threads)});
     if (r.reverseTiles) argv.push_back("--reverse-tiles");
     if (r.inspectSamples > 0)
@@ -110,11 +94,11 @@ std::string renderSandboxed(const RenderRequest& r, const RenderLimits& limits,
     run.command.insert(run.command.end(), arguments.begin(), arguments.end());
     // No image-file plug-in: the viewer writes the .pfm it is asked for without one.
     run.files = {{r.runner->viewer, "/pathlab/viewer"},
-                 {r.runner->libraryFor(r.lab), "/pathlab/labs.so"}};
+                 {r.runner->libraryFor(r.identity.lab), "/pathlab/labs.so"}};
     run.files.insert(run.files.end(), scene.files.begin(), scene.files.end());
     run.environment = {{"PATHLAB_LABS_LIBRARY", "/pathlab/labs.so"}};
     for (int k = 0; k < r.seeds; ++k) {
-        const auto [image, stats] = outputNames(r, r.seed + static_cast<uint64_t>(k));
+        const auto [image, stats] = outputNames(r, r.identity.seed + static_cast<uint64_t>(k));
         run.collect.insert(run.collect.end(), {image, stats});
     }
     if (r.inspectSamples > 0) run.collect.push_back(ReplayFile);
@@ -152,7 +136,7 @@ std::string readRendered(const RenderRequest& r, uint64_t seed, RenderedImage& r
         rendered.rays = {s.at("rays").at("intersect"), s.at("rays").at("occluded")};
         const Image read = readImage(r.scratch + "/" + imageName);
         // The lab runs in the process that writes this file: what it holds is checked, not trusted.
-        if (read.width != r.width || read.height != r.height)
+        if (read.width != r.identity.width || read.height != r.identity.height)
             throw std::runtime_error("the image is " + std::to_string(read.width) + "x" +
                                      std::to_string(read.height) + ", not the size asked for");
         rendered.rgb = read.rgb;
@@ -167,7 +151,8 @@ std::string readRendered(const RenderRequest& r, uint64_t seed, RenderedImage& r
 int seedsFinished(const RenderRequest& r) {
     int finished = 0;
     for (int k = 0; k < r.seeds; ++k)
-        if (fs::exists(r.scratch + "/" + outputNames(r, r.seed + static_cast<uint64_t>(k)).first))
+        if (fs::exists(r.scratch + "/" +
+                       outputNames(r, r.identity.seed + static_cast<uint64_t>(k)).first))
             ++finished;
     return finished;
 }
@@ -235,7 +220,7 @@ SandboxedScene sandboxedScene(const std::string& ecsPath) {
 RenderResult renderLab(const RenderRequest& r, const RenderLimits& limits) {
     RenderResult result;
     for (int k = 0; k < r.seeds; ++k) {
-        const auto [image, stats] = outputNames(r, r.seed + static_cast<uint64_t>(k));
+        const auto [image, stats] = outputNames(r, r.identity.seed + static_cast<uint64_t>(k));
         fs::remove(r.scratch + "/" + image);
         fs::remove(r.scratch + "/" + stats);
     }
@@ -264,7 +249,7 @@ RenderResult renderLab(const RenderRequest& r, const RenderLimits& limits) {
         return result;
     }
     for (int k = 0; k < r.seeds; ++k) {
-        result.failure = readRendered(r, r.seed + static_cast<uint64_t>(k),
+        result.failure = readRendered(r, r.identity.seed + static_cast<uint64_t>(k),
                                       result.images.emplace_back(), result.failureKind);
         if (!result.failure.empty()) return result;
     }
@@ -277,8 +262,8 @@ RenderResult renderLab(const RenderRequest& r, const RenderLimits& limits) {
             return result;
         }
     }
-    result.width = r.width;
-    result.height = r.height;
+    result.width = r.identity.width;
+    result.height = r.identity.height;
     result.ok = true;
     return result;
 }
@@ -300,6 +285,11 @@ std::vector<double> regionMeans(const std::vector<float>& image, int width, int 
     for (int region = 0; region < regions; ++region)
         for (int c = 0; c < 3; ++c) sums[3 * region + c] /= counts[region];
     return sums;
+}
+
+RenderIdentity requestedIdentity(const LabRunner& runner, Lab lab, const LabParameters& parameters,
+                                 uint64_t seed, int width, int height) {
+    return {lab, runner.implementation, parameters, seed, width, height};
 }
 
 } // namespace pathlab::grader

@@ -7,6 +7,7 @@
 #include "isolation/sandbox.h"
 
 #include "pathlab/render/lab_registry.h"
+#include "pathlab/render/render_identity.h"
 #include "pathlab/render/ray_counters.h"
 
 #include <algorithm>
@@ -41,12 +42,11 @@ struct LabRunner {
 struct RenderRequest {
     const LabRunner* runner = nullptr;
     std::string scene; ///< .ecs path
-    Lab lab = Lab::Branching;
-    int width = 64, height = 64, spp = 16;
-    int maxDepth = 3;
-    float continueProb = 0.8f;
-    uint64_t seed = 0;
-    int seeds = 1; ///< images for seeds seed .. seed+seeds-1, in one process
+    /// The lab, its parameters, the first seed and the size; the implementation is the
+    /// runner's (requestedIdentity).
+    RenderIdentity identity;
+    int spp = 16;
+    int seeds = 1; ///< images for seeds identity.seed .. identity.seed+seeds-1, in one process
     int threads = 0;
     std::string scratch;       ///< a folder for the images and stats
     bool reverseTiles = false; ///< the viewer's --reverse-tiles
@@ -54,6 +54,10 @@ struct RenderRequest {
     /// JSON of pixel (inspectX, inspectY) is then in RenderResult::replayJson.
     int inspectX = 0, inspectY = 0, inspectSamples = 0;
 };
+
+/// The identity a request for `lab` by `runner` renders: its parameters, first seed and size.
+RenderIdentity requestedIdentity(const LabRunner& runner, Lab lab, const LabParameters& parameters,
+                                 uint64_t seed, int width, int height);
 
 /// One seed's image, and where the viewer's --stats for it are. Those come from the lab's own
 /// process, which could write anything there: points are earned by the images and the wall

@@ -108,9 +108,15 @@ std::optional<RenderStats> notebookRender(const LabRunner& runner, const Noteboo
     // Longer than a grading render: 64 spp of 512×512 is 1000 times the pixels of one.
     const RenderLimits limits = renderLimits(rubric, 4.0 * spp / NotebookSpp);
     // Seed 0, the viewer's default: the command a student types gives these very numbers.
-    const RenderRequest request{
-        &runner,          scene, row.lab, NotebookSize, NotebookSize, spp, rubric.maxDepth,
-        row.continueProb, 0,     1,       threads,      scratch};
+    const RenderRequest request{&runner,
+                                scene,
+                                requestedIdentity(runner, row.lab,
+                                                  {rubric.maxDepth, row.continueProb}, 0,
+                                                  NotebookSize, NotebookSize),
+                                spp,
+                                1,
+                                threads,
+                                scratch};
     const RenderResult result = renderLab(request, limits);
     if (!result.ok) {
         failure = result.failureKind;

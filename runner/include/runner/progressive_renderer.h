@@ -3,8 +3,7 @@
 
 #include "pathlab/render/accumulation_buffer.h"
 #include "pathlab/scene_io/camera.h"
-#include "pathlab/render/lab_parameters.h"
-#include "pathlab/render/lab_registry.h"
+#include "pathlab/render/render_identity.h"
 #include "pathlab/render/render_scene.h"
 #include "pathlab/render/render_stats.h"
 #include "pathlab/render/render_watchdog.h"
@@ -23,14 +22,11 @@
 namespace pathlab {
 
 /// What the window asks to be rendered. Any change restarts accumulation.
-struct ViewSettings {
-    Lab lab = Lab::Branching;
-    Implementation implementation = Implementation::Student;
-    LabParameters parameters;
+/// What the window asks the renderer for: the render's identity (its size the framebuffer's),
+/// and the camera, samples per frame and split view the keys change.
+struct ViewSettings : RenderIdentity {
     CameraSettings camera;
-    int width = 512, height = 512;
     int sppPerFrame = 1;
-    uint64_t seed = 0;
     bool split = false; ///< also render the other implementation, for the split view
 
     bool operator==(const ViewSettings& o) const;

@@ -3,8 +3,7 @@
 /// loaded by scene_from_options.h.
 
 #include "pathlab/scene_io/camera.h"
-#include "pathlab/render/lab_parameters.h"
-#include "pathlab/render/lab_registry.h"
+#include "pathlab/render/render_identity.h"
 #include "pathlab/scene_io/option_reader.h"
 #include "pathlab/render/render_watchdog.h"
 #include "pathlab/scene_io/scene.h"
@@ -18,7 +17,9 @@
 
 namespace pathlab {
 
-struct RenderOptions {
+/// The render's identity (lab, implementation, parameters, seed, size: RenderIdentity) and the
+/// rest the command line sets.
+struct RenderOptions : RenderIdentity {
     // Scene
     std::string sceneName;                 ///< the .ecs or .obj named first, for reports
     std::vector<std::string> sceneScripts; ///< -c files read, those they include as well
@@ -34,14 +35,9 @@ struct RenderOptions {
     bool fovSet = false;            ///< --fov
     /// --vd without --vp: look along it at the model (with --vp, camera.lookAt is --vp + --vd).
     std::optional<Vec3> viewDirection;
-    int width = 512, height = 512; ///< --size
 
     // Estimator
-    Lab lab = Lab::Branching;                                ///< --lab
-    Implementation implementation = Implementation::Student; ///< --solution
-    LabParameters parameters;                                ///< --max-depth, --continue-prob
-    uint64_t seed = 0;                                       ///< --seed
-    int threads = 0;                                         ///< --threads; 0 = all cores
+    int threads = 0; ///< --threads; 0 = all cores
     /// --reverse-tiles: the last tile first. The image stays the same for a lab that takes its
     /// random numbers from ctx.sampler alone; the grader's reproducibility check relies on that.
     bool reverseTiles = false;

@@ -3,8 +3,7 @@
 
 #include "pathlab/render/accumulation_buffer.h"
 #include "pathlab/color.h"
-#include "pathlab/render/lab_parameters.h"
-#include "pathlab/render/lab_registry.h"
+#include "pathlab/render/render_identity.h"
 #include "pathlab/render/nonfinite_sample.h"
 #include "pathlab/render/ray_counters.h"
 
@@ -74,12 +73,8 @@ struct RenderStats {
 /// What to say of one render: what was rendered (scene, lab, implementation, parameters, seed),
 /// the image so far (its size, spp and summary), and what it cost. The frame rate is left to the
 /// caller: the window measures its own, a headless render has setHeadlessFrameRate.
-struct RenderedWhat {
+struct RenderedWhat : RenderIdentity {
     std::string scene;
-    Lab lab;
-    Implementation implementation;
-    LabParameters parameters;
-    uint64_t seed;
 };
 /// What a render cost in CPU time (Renderer::cpuSeconds, processCpuSeconds); 0s: not measured.
 struct CpuTimes {
