@@ -49,7 +49,7 @@ def category(symbol, dso, lab):
     if f"pathlab::{lab}_solution::" in symbol or f"pathlab::{lab}::" in symbol:
         return "lab: pathTrace"
     if symbol.startswith("pathlab::"):
-        # pathlab::Renderer::renderPass(...)::{lambda(int)#1}::operator() -> Renderer::renderPass
+        # pathlab::Renderer::PassTiles::render(int) -> Renderer::PassTiles::render
         short = symbol[len("pathlab::"):]
         short = short.split("(")[0]
         return "framework: " + short

@@ -40,6 +40,9 @@ class Viewer:
                    "--size", str(size), str(size), "--seed", str(seed)]
         result = headless_viewer.render(self.executable, options, image, stats,
                                         f"the figure's render {name} failed")
+        # The figures keep the viewer's --stats only: a wall time would change the committed
+        # references.json at every run.
+        result.pop("wall_seconds")
         result["image"] = image
         self.cpu_record.append({"name": name, "seconds": result["seconds"],
                                 "cpu_share": result.get("cpu_share", 0),

@@ -97,22 +97,12 @@ RaceFinding checkRaces(const RaceCheckRun& run, Lab lab) {
         sandboxedScene(std::string(PATHLAB_MODELS_DIR) + "/" + RaceScene + ".ecs");
     std::vector<std::pair<std::string, std::string>> files = {{library, "/pathlab/labs.so"}};
     files.insert(files.end(), scene.files.begin(), scene.files.end());
-    const std::string size = std::to_string(RaceSize);
-    const std::vector<std::string> arguments = {"-c",
-                                                scene.ecs,
-                                                "--size",
-                                                size,
-                                                size,
-                                                "--spp",
-                                                std::to_string(RaceSpp),
-                                                "--lab",
-                                                std::string(labName(lab)),
-                                                "--seed",
-                                                std::to_string(run.seed),
-                                                "--threads",
-                                                std::to_string(RaceThreads),
-                                                "-o",
-                                                "render.pfm"};
+    // The lab at the viewer's default parameters: a race does not depend on them.
+    const RenderIdentity identity{lab, Implementation::Student, {}, run.seed, RaceSize, RaceSize};
+    std::vector<std::string> arguments = {"-c", scene.ecs};
+    for (std::string& argument : renderIdentityArguments(identity)) arguments.push_back(argument);
+    arguments.insert(arguments.end(), {"--spp", std::to_string(RaceSpp), "--threads",
+                                       std::to_string(RaceThreads), "-o", "render.pfm"});
     // Its two threads on the grading's own cores, even one: TSan sees a race by the order of the
     // accesses it records, not by their running at the same instant, and the renderer starts
     // the threads it is asked for on any number of cores. So the check neither waits for nor

@@ -28,9 +28,13 @@ std::string timingLockFor(const std::vector<int>& timingCpus) {
 }
 
 Cores splitCores(const std::vector<int>& cpus) {
+    // Element by element: GCC 14 takes the copy of a vector it knows to be this short for a
+    // memmove out of bounds (a false -Warray-bounds).
     Cores cores;
-    cores.timing = cpus.empty() ? std::vector<int>{} : std::vector<int>{cpus[0]};
-    cores.work = cpus.size() > 1 ? std::vector<int>(cpus.begin() + 1, cpus.end()) : cpus;
+    if (cpus.empty()) return cores; // any core, for both
+    cores.timing.push_back(cpus.front());
+    if (cpus.size() == 1) cores.work.push_back(cpus.front()); // one core: work shares it
+    for (size_t i = 1; i < cpus.size(); ++i) cores.work.push_back(cpus[i]);
     return cores;
 }
 

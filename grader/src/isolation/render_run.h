@@ -44,7 +44,7 @@ struct RenderRequest {
     std::string scene; ///< .ecs path
     /// The lab, its parameters, the first seed and the size; the implementation is the
     /// runner's (requestedIdentity).
-    RenderIdentity identity;
+    RenderIdentity identity{Lab::Branching, Implementation::Student, {3, 0.8f}, 0, 64, 64};
     int spp = 16;
     int seeds = 1; ///< images for seeds identity.seed .. identity.seed+seeds-1, in one process
     int threads = 0;

@@ -21,9 +21,9 @@
 
 namespace pathlab {
 
-/// What the window asks to be rendered. Any change restarts accumulation.
 /// What the window asks the renderer for: the render's identity (its size the framebuffer's),
-/// and the camera, samples per frame and split view the keys change.
+/// and the camera, samples per frame and split view the keys change. Any change restarts
+/// accumulation.
 struct ViewSettings : RenderIdentity {
     CameraSettings camera;
     int sppPerFrame = 1;
