@@ -160,9 +160,9 @@ void inspectPixel(const RenderOptions& options, const RenderScene& scene) {
                             inspectionJson(replay.lab,
                                            replay.reference ? &*replay.reference : nullptr,
                                            replay.comparison ? &*replay.comparison : nullptr));
-        std::printf("wrote %s: %zu sample(s) of pixel (%d, %d), lab %s (%s)%s\n",
+        std::printf("wrote %s: %zu sample(s) of pixel (%d, %d), lab %s%s\n",
                     options.inspectOut.c_str(), replay.lab.samples.size(), options.inspectX,
-                    options.inspectY, replay.lab.lab.c_str(), replay.lab.implementation.c_str(),
+                    options.inspectY, labAndImplementation(replay.lab.identity).c_str(),
                     replay.reference ? " beside the reference solution's" : "");
     }
     std::printf("%s", pixelReplayText(replay, !toFile).c_str());

@@ -63,9 +63,8 @@ bool PathInspectorPanel::poll() {
     if (!shown_->error.empty())
         std::printf("inspect pixel (%d, %d): %s\n", shown_->x, shown_->y, shown_->error.c_str());
     else
-        std::printf("inspected pixel (%d, %d): %zu sample(s), lab %s (%s)\n%s", shown_->x,
-                    shown_->y, samples, shown_->replay.lab.lab.c_str(),
-                    shown_->replay.lab.implementation.c_str(),
+        std::printf("inspected pixel (%d, %d): %zu sample(s), lab %s\n%s", shown_->x, shown_->y,
+                    samples, labAndImplementation(shown_->replay.lab.identity).c_str(),
                     pixelReplayText(shown_->replay, false).c_str());
     std::fflush(stdout);
     return true;
@@ -99,15 +98,16 @@ void PathInspectorPanel::drawPanel() {
             ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "pixel (%d, %d): %s", shown_->x, shown_->y,
                                shown_->error.c_str());
         } else if (!replay.lab.samples.empty()) {
-            ImGui::Text("pixel (%d, %d)  lab %s (%s)  seed %llu", shown_->x, shown_->y,
-                        replay.lab.lab.c_str(), replay.lab.implementation.c_str(),
-                        static_cast<unsigned long long>(replay.lab.seed));
+            const RenderIdentity& identity = replay.lab.identity;
+            ImGui::Text("pixel (%d, %d)  lab %s  seed %llu", shown_->x, shown_->y,
+                        labAndImplementation(identity).c_str(),
+                        static_cast<unsigned long long>(identity.seed));
             ImGui::SetNextItemWidth(160);
             ImGui::SliderInt("sample", &selectedSample_, 0,
                              static_cast<int>(replay.lab.samples.size()) - 1);
             ImGui::SameLine(0, 16);
-            ImGui::Text("maxDepth %d  continueProb %.2f", replay.lab.maxDepth,
-                        replay.lab.continueProb);
+            ImGui::Text("maxDepth %d  continueProb %.2f", identity.parameters.maxDepth,
+                        identity.parameters.continueProb);
             drawRayLegend(replay.comparison.has_value());
             const size_t sample = static_cast<size_t>(selectedSample_);
             const int marked = divergingVertex(replay, sample);

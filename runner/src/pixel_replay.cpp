@@ -34,15 +34,11 @@ namespace {
 PixelInspection inspect(const RenderOptions& options, const RenderScene& scene,
                         const Camera& camera, Implementation implementation) {
     InspectionRequest request;
+    request.identity = options;
+    request.identity.implementation = implementation;
     request.x = options.inspectX;
     request.y = options.inspectY;
-    request.width = options.width;
     request.samples = options.inspectSamples;
-    request.seed = options.seed;
-    request.parameters = options.parameters;
-    request.lab = labName(options.lab);
-    request.implementation = implementation == Implementation::Student ? "student" : "solution";
-    request.usesRoulette = options.lab == Lab::Roulette;
     // A lab that never returns hangs a replay as it hangs a render: the same watchdog ends it.
     RenderProgress progress;
     request.progress = &progress;
@@ -76,16 +72,17 @@ PixelReplay replayPixel(const RenderOptions& options, const RenderScene& scene,
 std::string pixelReplayText(const PixelReplay& replay, bool withTables) {
     std::string text;
     if (withTables) {
-        text +=
-            (replay.lab.implementation == "student" ? "Your lab: " : "The reference solution: ") +
-            inspectionTable(replay.lab);
+        text += (replay.lab.identity.implementation == Implementation::Student
+                     ? "Your lab: "
+                     : "The reference solution: ") +
+                inspectionTable(replay.lab);
         if (replay.reference)
             text += "\nThe reference solution: " + inspectionTable(*replay.reference);
         text += "\n";
     }
     if (replay.comparison)
         text += describeComparison(*replay.comparison, replay.lab) + "\n";
-    else if (replay.lab.implementation == "student")
+    else if (replay.lab.identity.implementation == Implementation::Student)
         text += "The reference solution is not in this build (the student release has none): "
                 "the table shows your lab alone.\n";
     return text;

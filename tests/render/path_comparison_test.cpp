@@ -15,9 +15,8 @@ namespace {
 /// on a grey wall, the last vertex ending with `endDraws` random numbers drawn before the end.
 PixelInspection rouletteSample(const Material& first, int vertices, std::vector<float> endDraws) {
     PixelInspection p;
-    p.lab = "roulette";
-    p.maxDepth = 3;
-    p.continueProb = 0.8f;
+    p.identity.lab = Lab::Roulette;
+    p.identity.parameters = {3, 0.8f};
     p.usesRoulette = true;
     InspectedSample s;
     for (int i = 0; i < vertices; ++i) {

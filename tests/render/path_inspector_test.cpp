@@ -17,6 +17,7 @@
 #include "pathlab/render/scene_from_options.h"
 #include "pathlab/inspect/inspection_json.h"
 #include "pathlab/render/render_scene.h"
+#include "pathlab/support/input_error.h"
 
 #include <cmath>
 #include <string>
@@ -133,7 +134,11 @@ TEST_CASE("inspector: the JSON reads back as written", "[solutions]") {
     const PixelInspection written = inspectFurnace("roulette", {"--continue-prob", "0.8"});
     const PixelInspection read = readInspectionJson(inspectionJson(written), "test");
     REQUIRE(read.samples.size() == written.samples.size());
-    CHECK(read.lab == "roulette");
+    CHECK(read.identity.lab == Lab::Roulette);
+    CHECK(read.identity.implementation == written.identity.implementation);
+    CHECK(read.identity.seed == written.identity.seed);
+    CHECK(read.identity.parameters.maxDepth == written.identity.parameters.maxDepth);
+    CHECK(read.identity.parameters.continueProb == written.identity.parameters.continueProb);
     CHECK(read.usesRoulette);
     for (size_t s = 0; s < read.samples.size(); ++s) {
         const auto& a = written.samples[s];
@@ -165,4 +170,16 @@ TEST_CASE("inspector: the replay is the render's sample", "[solutions]") {
     for (const InspectedSample& sample : inspection.samples) mean += sample.contribution * 0.125f;
     const std::vector<float> image = rendered.image.meanImage();
     CHECK(mean.r == Approx(image[3 * (16 * 32 + 16)]).epsilon(1e-4));
+}
+
+TEST_CASE("inspector: a JSON naming no lab of the kit is refused by name", "[solutions]") {
+    std::string text = inspectionJson(inspectFurnace("branching"));
+    text.replace(text.find("\"branching\""), 11, "\"glossy\"");
+    std::string message;
+    try {
+        readInspectionJson(text, "replay.json");
+    } catch (const InputError& error) {
+        message = error.what();
+    }
+    CHECK(message.find("replay.json: the lab \"glossy\" is none of this kit's") == 0);
 }

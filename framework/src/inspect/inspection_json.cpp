@@ -17,6 +17,18 @@ template <typename T> json optional(const std::optional<T>& value) {
 }
 json optionalColor(const std::optional<Color>& c) { return c ? rgb(*c) : json(nullptr); }
 
+Lab labOf(const std::string& name, const std::string& source) {
+    if (const std::optional<Lab> lab = labFromName(name)) return *lab;
+    throw InputError(source + ": the lab \"" + name + "\" is none of this kit's (" +
+                     labNames(", ") + ")");
+}
+
+Implementation implementationOf(const std::string& name, const std::string& source) {
+    for (Implementation impl : {Implementation::Student, Implementation::Solution})
+        if (implementationName(impl) == name) return impl;
+    throw InputError(source + ": \"" + name + "\" is neither \"student\" nor \"solution\"");
+}
+
 Color colorOf(const json& j) {
     return {j.at(0).get<float>(), j.at(1).get<float>(), j.at(2).get<float>()};
 }
@@ -84,12 +96,13 @@ json inspectionObject(const PixelInspection& inspection) {
                            {"vertices", vertices},
                            {"calls", calls}});
     }
-    return {{"lab", inspection.lab},
-            {"impl", inspection.implementation},
+    const RenderIdentity& identity = inspection.identity;
+    return {{"lab", labName(identity.lab)},
+            {"impl", implementationName(identity.implementation)},
             {"pixel", {inspection.x, inspection.y}},
-            {"seed", inspection.seed},
-            {"max_depth", inspection.maxDepth},
-            {"continue_prob", inspection.continueProb},
+            {"seed", identity.seed},
+            {"max_depth", identity.parameters.maxDepth},
+            {"continue_prob", identity.parameters.continueProb},
             {"uses_roulette", inspection.usesRoulette},
             {"samples", samples}};
 }
@@ -158,13 +171,14 @@ PixelInspection readInspectionJson(const std::string& text, const std::string& s
     try {
         const json j = json::parse(text);
         PixelInspection inspection;
-        inspection.lab = j.at("lab").get<std::string>();
-        inspection.implementation = j.at("impl").get<std::string>();
+        RenderIdentity& identity = inspection.identity;
+        identity.lab = labOf(j.at("lab").get<std::string>(), source);
+        identity.implementation = implementationOf(j.at("impl").get<std::string>(), source);
         inspection.x = j.at("pixel").at(0).get<int>();
         inspection.y = j.at("pixel").at(1).get<int>();
-        inspection.seed = j.at("seed").get<uint64_t>();
-        inspection.maxDepth = j.at("max_depth").get<int>();
-        inspection.continueProb = j.at("continue_prob").get<float>();
+        identity.seed = j.at("seed").get<uint64_t>();
+        identity.parameters.maxDepth = j.at("max_depth").get<int>();
+        identity.parameters.continueProb = j.at("continue_prob").get<float>();
         inspection.usesRoulette = j.at("uses_roulette").get<bool>();
         for (const json& s : j.at("samples")) {
             InspectedSample sample;

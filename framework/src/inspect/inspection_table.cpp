@@ -86,7 +86,7 @@ std::string depthNote(const InspectedVertex& v, const PixelInspection& inspectio
                    ? " ENDED without a random number drawn (its roulette not written yet, or a "
                      "depth limit kept?)"
                    : "";
-    if (v.depth < inspection.maxDepth || v.continuedBy.empty()) return "";
+    if (v.depth < inspection.identity.parameters.maxDepth || v.continuedBy.empty()) return "";
     return " WENT ON from depth " + std::to_string(v.depth) + " = maxDepth";
 }
 
@@ -103,9 +103,9 @@ void appendRow(std::string& out, const char* format, const std::string& a, const
 
 std::string inspectionTable(const PixelInspection& inspection) {
     const char* format = "  %-3s %-11s %-4s %-24s %-18s %-18s %-20s %s\n";
-    std::string out = inspection.lab + " (" + inspection.implementation + "), pixel (" +
+    std::string out = labAndImplementation(inspection.identity) + ", pixel (" +
                       std::to_string(inspection.x) + ", " + std::to_string(inspection.y) +
-                      "), seed " + std::to_string(inspection.seed) + "\n";
+                      "), seed " + std::to_string(inspection.identity.seed) + "\n";
     bool nonLinear = false;
     for (const InspectedSample& sample : inspection.samples) {
         out += "sample " + std::to_string(sample.index) + ": value " + colour(sample.contribution) +

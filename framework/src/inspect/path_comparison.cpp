@@ -34,8 +34,8 @@ bool closeDirection(const Vec3& a, const Vec3& b) {
 class SampleWalk {
 public:
     SampleWalk(const PixelInspection& lab, const PixelInspection& reference, size_t sample)
-        : lab_(lab), sample_(sample), ours_(lab.samples[sample]),
-          theirs_(reference.samples[sample]) {}
+        : lab_(lab), parameters_(lab.identity.parameters), sample_(sample),
+          ours_(lab.samples[sample]), theirs_(reference.samples[sample]) {}
 
     /// The first difference, if any; `comparable` is cleared when the draws part.
     std::optional<PathDivergence> firstDifference(bool& comparable) {
@@ -104,13 +104,13 @@ private:
         const InspectedVertex* mine = vertex(ours_, at);
         const int depth = mine ? mine->depth : 0;
         const std::string where = vertexName(at) + " (depth " + std::to_string(depth) + ")";
-        if (depth >= lab_.maxDepth)
+        if (depth >= parameters_.maxDepth)
             return divergence(at, "depth", step(2),
                               "your path ended at " + where +
                                   " without a random number, where the reference drew its "
                                   "roulette number: a depth limit is still there? Lab 4 ends "
                                   "paths only by roulette (maxDepth is " +
-                                  std::to_string(lab_.maxDepth) + ")");
+                                  std::to_string(parameters_.maxDepth) + ")");
         return divergence(at, "roulette", step(2),
                           "your path ended at " + where +
                               " without a random number from ctx.sampler, where the reference "
@@ -127,9 +127,10 @@ private:
         if (lab_.usesRoulette) {
             const std::string draw = theirs && theirs->roulette
                                          ? " (roulette draw " + number(theirs->roulette->draw) +
-                                               " < continueProb " + number(lab_.continueProb) + ")"
+                                               " < continueProb " +
+                                               number(parameters_.continueProb) + ")"
                                          : "";
-            if (end.drawsBefore.empty() && depth < lab_.maxDepth)
+            if (end.drawsBefore.empty() && depth < parameters_.maxDepth)
                 return divergence(at, "roulette", step(2),
                                   "your path ended at " + where +
                                       " without a random number from ctx.sampler, where the "
@@ -137,24 +138,24 @@ private:
                                       draw +
                                       ": does your roulette draw come from "
                                       "ctx.sampler.get1D()?");
-            if (depth >= lab_.maxDepth)
+            if (depth >= parameters_.maxDepth)
                 return divergence(at, "depth", step(2),
                                   "your path ended at " + where + ", the reference went on" + draw +
                                       ": a depth limit is still there? Lab 4 ends paths "
                                       "only by roulette (maxDepth is " +
-                                      std::to_string(lab_.maxDepth) + ")");
+                                      std::to_string(parameters_.maxDepth) + ")");
             return divergence(at, "roulette", step(2),
                               "your path ended at " + where + ", the reference went on" + draw);
         }
         if (branches()) {
             const bool sentNone = mine && mine->continuedBy.empty();
-            if (sentNone && depth < lab_.maxDepth)
+            if (sentNone && depth < parameters_.maxDepth)
                 return divergence(at, "depth", step(2),
                                   "your path ended at " + where + ", the reference sent a " +
                                       component +
                                       " ray from there: bounces go on from every hit "
                                       "below depth maxDepth = " +
-                                      std::to_string(lab_.maxDepth));
+                                      std::to_string(parameters_.maxDepth));
             return divergence(at, "pick", componentStep(component),
                               "your lab sent no " + component + " ray from " + where +
                                   ", the reference did");
@@ -169,7 +170,7 @@ private:
                               component +
                               " ray: bounces go on from every hit below depth "
                               "maxDepth = " +
-                              std::to_string(lab_.maxDepth));
+                              std::to_string(parameters_.maxDepth));
     }
 
     /// The lab sent a `component` ray from `at`; the reference ended its path there.
@@ -178,17 +179,17 @@ private:
         const int depth = mine ? mine->depth : 0;
         const std::string where = vertexName(at) + " (depth " + std::to_string(depth) + ")";
         if (lab_.usesRoulette && mine && mine->roulette &&
-            mine->roulette->draw >= lab_.continueProb)
+            mine->roulette->draw >= parameters_.continueProb)
             return divergence(at, "roulette", step(2),
                               "your path went on from " + where + " with a " + component +
                                   " ray, the reference ended it (roulette draw " +
                                   number(mine->roulette->draw) + " >= continueProb " +
-                                  number(lab_.continueProb) + ")");
-        if (!lab_.usesRoulette && depth >= lab_.maxDepth)
+                                  number(parameters_.continueProb) + ")");
+        if (!lab_.usesRoulette && depth >= parameters_.maxDepth)
             return divergence(at, "depth", step(2),
                               "your lab sent a " + component + " ray from " + where +
                                   ", where the depth limit stops bounces (maxDepth = " +
-                                  std::to_string(lab_.maxDepth) + ")");
+                                  std::to_string(parameters_.maxDepth) + ")");
         if (branches())
             return divergence(at, "pick", componentStep(component),
                               "your lab sent a " + component + " ray from " + where +
@@ -275,7 +276,7 @@ private:
             return divergence(from, "probability", stepName,
                               "your lab weights " + ray + " by " + colour(*x.throughput) +
                                   " in all, the reference by " + colour(*y.throughput));
-        const float p = lab_.continueProb;
+        const float p = parameters_.continueProb;
         std::string text = "your lab divided " + ray + " by " + number(*ours) +
                            ", the reference by " + number(*theirs);
         std::string why = stepName;
@@ -316,18 +317,15 @@ private:
         return "(" + number(c.r) + ", " + number(c.g) + ", " + number(c.b) + ")";
     }
 
-    /// The lab's step n ("lab3.4", numbered as the lab list numbers the labs), "" for a lab the
-    /// list does not name.
+    /// The lab's step n ("lab3.4", numbered as the lab list numbers the labs).
     std::string step(int n) const {
-        const std::optional<Lab> lab = labFromName(lab_.lab);
-        return lab ? "lab" + std::to_string(labNumber(*lab)) + "." + std::to_string(n) : "";
+        return "lab" + std::to_string(labNumber(lab_.identity.lab)) + "." + std::to_string(n);
     }
     /// Lab 1 sends a ray for every component that is not black; the others pick one.
-    bool branches() const { return labFromName(lab_.lab) == Lab::Branching; }
+    bool branches() const { return lab_.identity.lab == Lab::Branching; }
     /// Labs 3 and 4 pick a component with probabilities that follow its weight.
     bool picksByProbability() const {
-        const std::optional<Lab> lab = labFromName(lab_.lab);
-        return lab == Lab::Importance || lab == Lab::Roulette;
+        return lab_.identity.lab == Lab::Importance || lab_.identity.lab == Lab::Roulette;
     }
     /// The step that chooses the component: lab 2's uniform pick, lab 3's probabilities, lab 4's
     /// choice as in lab 3.
@@ -341,6 +339,7 @@ private:
     }
 
     const PixelInspection& lab_;
+    const LabParameters& parameters_; ///< the lab's maxDepth and continueProb
     size_t sample_;
     const InspectedSample& ours_;
     const InspectedSample& theirs_;

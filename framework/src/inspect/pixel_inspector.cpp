@@ -33,11 +33,11 @@ public:
 
     /// The sample as a render draws it: the pixel's jitter first, then the lab's path.
     Replay run(uint64_t sample, PathProbe probe) const {
-        PathDriver driver(scene_, request_.parameters);
+        PathDriver driver(scene_, request_.identity.parameters);
         const auto pixel =
-            static_cast<uint64_t>(request_.y) * static_cast<uint64_t>(request_.width) +
+            static_cast<uint64_t>(request_.y) * static_cast<uint64_t>(request_.identity.width) +
             static_cast<uint64_t>(request_.x);
-        driver.startSample(request_.seed, pixel, sample);
+        driver.startSample(request_.identity.seed, pixel, sample);
         const Vec2 jitter = driver.context().sampler.get2D();
         const Ray cameraRay = camera_.generateRay(static_cast<float>(request_.x) + jitter.x,
                                                   static_cast<float>(request_.y) + jitter.y);
@@ -276,11 +276,11 @@ InspectedSample inspectSample(const SampleReplayer& replayer, const InspectionRe
             from.continuedBy.push_back({vertex.index, vertex.arrivedBy, dividedBy(from, vertex),
                                         weightedByOther(from, vertex)});
     }
-    if (request.usesRoulette)
+    if (!isDepthLimited(request.identity.lab))
         for (InspectedVertex& vertex : vertices)
             if (vertex.found && !vertex.draws.empty())
                 vertex.roulette =
-                    RouletteDraw{vertex.draws.front(), request.parameters.continueProb,
+                    RouletteDraw{vertex.draws.front(), request.identity.parameters.continueProb,
                                  !vertex.continuedBy.empty()};
     return sample;
 }
@@ -291,14 +291,10 @@ PixelInspection inspectPixel(const RenderScene& scene, const Camera& camera,
                              PathTraceFunction pathTrace, const InspectionRequest& request) {
     const SampleReplayer replayer(scene, camera, pathTrace, request);
     PixelInspection inspection;
-    inspection.lab = request.lab;
-    inspection.implementation = request.implementation;
+    inspection.identity = request.identity;
     inspection.x = request.x;
     inspection.y = request.y;
-    inspection.seed = request.seed;
-    inspection.maxDepth = request.parameters.maxDepth;
-    inspection.continueProb = request.parameters.continueProb;
-    inspection.usesRoulette = request.usesRoulette;
+    inspection.usesRoulette = !isDepthLimited(request.identity.lab);
     for (int s = 0; s < request.samples; ++s)
         inspection.samples.push_back(inspectSample(replayer, request, static_cast<uint64_t>(s)));
     return inspection;

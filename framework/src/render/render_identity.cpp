@@ -32,4 +32,9 @@ std::vector<std::string> renderIdentityArguments(const RenderIdentity& identity)
     return arguments;
 }
 
+std::string labAndImplementation(const RenderIdentity& identity) {
+    return std::string(labName(identity.lab)) + " (" +
+           std::string(implementationName(identity.implementation)) + ")";
+}
+
 } // namespace pathlab

@@ -7,6 +7,7 @@
 #include "pathlab/material.h"
 #include "pathlab/ray.h"
 #include "pathlab/render/ray_log.h"
+#include "pathlab/render/render_identity.h"
 #include "pathlab/vec3.h"
 
 #include <cstdint>
@@ -86,13 +87,13 @@ struct InspectedSample {
 
 /// A pixel's first samples through one lab.
 struct PixelInspection {
-    std::string lab;
-    std::string implementation; ///< student or solution
+    /// The render the pixel belongs to. Its JSON (inspection_json.h) keeps the lab, whose code,
+    /// the parameters and the seed, not the size: read back, the size is the default.
+    RenderIdentity identity;
     int x = 0, y = 0;
-    uint64_t seed = 0;
-    int maxDepth = 0;
-    float continueProb = 0;
-    bool usesRoulette = false; ///< the lab ends paths by roulette (lab 4)
+    /// The lab ends paths by roulette (a lab the lab list calls unbiased: lab 4), so each
+    /// vertex's roulette draw is reported.
+    bool usesRoulette = false;
     std::vector<InspectedSample> samples;
 };
 

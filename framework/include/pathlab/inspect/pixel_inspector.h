@@ -3,7 +3,7 @@
 /// the lab received at each vertex and the weight it gave it.
 
 #include "pathlab/inspect/inspected_path.h"
-#include "pathlab/render/lab_parameters.h"
+#include "pathlab/render/render_identity.h"
 #include "pathlab/render/renderer.h"
 
 #include <cstdint>
@@ -16,13 +16,11 @@ class RenderProgress;
 class RenderScene;
 
 struct InspectionRequest {
+    /// The render whose pixel is replayed: its lab, whose code, parameters and seed, and its
+    /// width, which numbers the pixels' random streams.
+    RenderIdentity identity;
     int x = 0, y = 0; ///< the pixel, (0,0) top left
-    int width = 0;    ///< the image's width, which numbers the pixels' random streams
     int samples = 8;  ///< its samples 0 … samples-1, as a render of any spp draws them
-    uint64_t seed = 0;
-    LabParameters parameters;
-    std::string lab, implementation; ///< named in the result
-    bool usesRoulette = false;       ///< report each vertex's roulette draw (lab 4)
     /// Told of each replay finished, for a watchdog: a lab that never returns hangs a replay
     /// as it hangs a render (null: nobody watches).
     RenderProgress* progress = nullptr;

@@ -25,6 +25,9 @@ struct RenderIdentity {
 bool operator==(const RenderIdentity& a, const RenderIdentity& b);
 inline bool operator!=(const RenderIdentity& a, const RenderIdentity& b) { return !(a == b); }
 
+/// "roulette (student)": the lab and whose code, as the inspector's table and lines name them.
+std::string labAndImplementation(const RenderIdentity& identity);
+
 /// The viewer's arguments that ask for `identity`: --lab, --solution for the solution, --max-depth,
 /// --continue-prob (to the float's last bit), --seed and --size. parseRenderOptions reads them
 /// back into the same identity.
