@@ -11,12 +11,7 @@ namespace {
 
 /// The options of a render the window made with `settings`, inspecting (x, y).
 RenderOptions replayOptions(RenderOptions options, const ViewSettings& settings, int x, int y) {
-    options.lab = settings.lab;
-    options.implementation = settings.implementation;
-    options.parameters = settings.parameters;
-    options.seed = settings.seed;
-    options.width = settings.width;
-    options.height = settings.height;
+    static_cast<RenderIdentity&>(options) = settings; // what the window rendered
     options.inspect = true;
     options.inspectX = x;
     options.inspectY = y;

@@ -2,13 +2,13 @@
 """Runs inside the grader's sandbox: finds a submission's lab files and copies them, and
 nothing else, to the scratch folder.
 
-    unpack_submission.py SUBMISSION MAX_BYTES
+    unpack_submission.py SUBMISSION MAX_BYTES LAB_FILE...
 
 SUBMISSION is a folder, a .zip, a .tar.gz/.tgz/.tar, or a git repository (a folder holding
 .git, or a bare repository): for a repository, the files of its HEAD commit, read as blobs
-from its object store (GitObjects: none of its configuration, attributes, filters or hooks). Only regular files
-named branching.cpp, uniform.cpp, importance.cpp or roulette.cpp are taken, each at most
-MAX_BYTES; symbolic links, devices and everything else are skipped and never followed. Where a
+from its object store (GitObjects: none of its configuration, attributes, filters or hooks).
+Only regular files named as one of the LAB_FILEs (the grader passes the lab list's files:
+branching.cpp, uniform.cpp, importance.cpp, roulette.cpp) are taken, each at most MAX_BYTES; symbolic links, devices and everything else are skipped and never followed. Where a
 name occurs more than once, the copy in a folder named `labs` wins, then the shallowest; two
 equally good copies are ambiguous and neither is taken.
 
@@ -24,21 +24,20 @@ import sys
 import tarfile
 import zipfile
 
-LABS = ("branching.cpp", "uniform.cpp", "importance.cpp", "roulette.cpp")
 MAX_ENTRIES = 20000  # members or folder entries looked at, at most
 
 
 class Candidates:
     """Every acceptable copy of each lab file seen, with a way to read it."""
 
-    def __init__(self, limit):
+    def __init__(self, limit, lab_files):
         self.limit = limit
-        self.found = {name: [] for name in LABS}
+        self.found = {name: [] for name in lab_files}
         self.problems = []
 
     def offer(self, path, size, is_regular, read):
         name = path.replace("\\", "/").rsplit("/", 1)[-1]
-        if name not in LABS:
+        if name not in self.found:
             return
         if not is_regular:
             self.problems.append(f"{path}: not a regular file (a link or a device?): skipped")
@@ -252,8 +251,8 @@ def is_git_repository(path):
 
 
 def main():
-    submission, limit = sys.argv[1], int(sys.argv[2])
-    candidates = Candidates(limit)
+    submission, limit, lab_files = sys.argv[1], int(sys.argv[2]), sys.argv[3:]
+    candidates = Candidates(limit, lab_files)
     # When it was submitted, as far as the submission tells: its last commit's time for a
     # repository (set by the student's machine), else its files' modification time.
     report = {"kind": "", "taken": {}, "problems": candidates.problems,

@@ -53,14 +53,10 @@ struct ChildPlan {
     bool pinned = false;
     cpu_set_t cpus;
 #endif
-    bool ownGroup = false;
-    bool dieWithParent = false;
-    bool reapOrphans = false;
-    int user = -1;
-    int outputFd = -1;          ///< becomes its stdout and stderr (-1: ours)
-    int collectFd = -1;         ///< becomes its descriptor 3 (-1: none)
-    std::vector<int> passedFds; ///< become its descriptors FirstPassedFd, ...
-    bool isolated = false;
+    /// What was asked for: its flags, user and passed descriptors are read in the child.
+    ChildSetup setup;
+    int outputFd = -1;  ///< becomes its stdout and stderr (-1: ours)
+    int collectFd = -1; ///< becomes its descriptor 3 (-1: none)
     int nullInput = -1; ///< /dev/null, its input when isolated
     /// Our read ends of its pipes: closed in the child at once, so that no process of its (the
     /// reaper, which never execs) keeps one open, and its writes fail when we close ours.
@@ -86,12 +82,7 @@ ChildPlan planFor(const std::vector<std::string>& argv, const ChildSetup& setup)
     for (int cpu : setup.cpus) CPU_SET(cpu, &plan.cpus);
     plan.pinned = !setup.cpus.empty();
 #endif
-    plan.ownGroup = setup.ownProcessGroup;
-    plan.dieWithParent = setup.dieWithParent;
-    plan.reapOrphans = setup.reapOrphans;
-    plan.user = setup.user;
-    plan.passedFds = setup.passedFds;
-    plan.isolated = setup.isolated;
+    plan.setup = setup;
     return plan;
 }
 
@@ -140,41 +131,42 @@ void closeDescriptorsFrom(int from, int to) {
     for (int end : plan.ourEnds)
         if (end >= 0) ::close(end);
 #if defined(__linux__)
-    if (plan.dieWithParent) ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (plan.setup.dieWithParent) ::prctl(PR_SET_PDEATHSIG, SIGKILL);
 #endif
-    if (plan.ownGroup) ::setpgid(0, 0);
+    if (plan.setup.ownProcessGroup) ::setpgid(0, 0);
 #if defined(__linux__)
     // Before the limits and the user: the reaper stays as we are, and its fork is not counted
     // against the program's process limit.
-    if (plan.reapOrphans) interposeReaper();
+    if (plan.setup.reapOrphans) interposeReaper();
 #endif
     for (const auto& [resource, limit] : plan.limits) ::setrlimit(resource, &limit);
 #if defined(__linux__)
     if (plan.pinned) ::sched_setaffinity(0, sizeof plan.cpus, &plan.cpus);
 #endif
-    if (plan.user >= 0) {
-        const auto id = static_cast<uid_t>(plan.user);
+    if (plan.setup.user >= 0) {
+        const auto id = static_cast<uid_t>(plan.setup.user);
         if (::setgroups(0, nullptr) != 0 || ::setgid(id) != 0 || ::setuid(id) != 0) ::_exit(126);
     }
     // The passed descriptors, first copied above the numbers they are to take (closed at exec),
     // so that none is overwritten by another's move before it moved itself.
-    const int passed = static_cast<int>(plan.passedFds.size());
+    const int passed = static_cast<int>(plan.setup.passedFds.size());
     int moved[256];
     if (passed > 256) ::_exit(127);
     for (int i = 0; i < passed; ++i)
-        if ((moved[i] = ::fcntl(plan.passedFds[i], F_DUPFD_CLOEXEC, FirstPassedFd + passed)) < 0)
+        if ((moved[i] = ::fcntl(plan.setup.passedFds[i], F_DUPFD_CLOEXEC, FirstPassedFd + passed)) <
+            0)
             ::_exit(127);
     if (plan.outputFd >= 0) {
         ::dup2(plan.outputFd, STDOUT_FILENO);
         ::dup2(plan.outputFd, STDERR_FILENO);
     }
     if (plan.collectFd >= 0) ::dup2(plan.collectFd, 3); // dup2 clears close-on-exec on the copy
-    if (plan.isolated && (plan.nullInput < 0 || ::dup2(plan.nullInput, STDIN_FILENO) < 0))
+    if (plan.setup.isolated && (plan.nullInput < 0 || ::dup2(plan.nullInput, STDIN_FILENO) < 0))
         ::_exit(127);
     // Only now: a descriptor number they take may have been one of those above.
     for (int i = 0; i < passed; ++i)
         if (::dup2(moved[i], FirstPassedFd + i) < 0) ::_exit(127);
-    if (plan.isolated) {
+    if (plan.setup.isolated) {
         closeDescriptorsFrom(plan.collectFd >= 0 ? 4 : 3, FirstPassedFd);
         closeDescriptorsFrom(FirstPassedFd + passed, -1);
         char* noEnvironment[] = {nullptr};

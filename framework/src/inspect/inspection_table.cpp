@@ -1,17 +1,13 @@
 #include "pathlab/inspect/inspection_table.h"
 
+#include "pathlab/inspect/inspection_numbers.h"
+
 #include <cstdio>
 #include <cstdlib>
 
 namespace pathlab {
 
 namespace {
-
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", value);
-    return text;
-}
 
 /// A roulette draw, with the digits it takes to stay on its side of continueProb and below 1:
 /// 0.9996 is not "1".
@@ -27,8 +23,8 @@ std::string drawNumber(float draw, float continueProb) {
 
 /// A colour as one number when it is grey, else its three channels.
 std::string colour(const Color& c) {
-    if (c.r == c.g && c.g == c.b) return number(c.r);
-    return number(c.r) + "," + number(c.g) + "," + number(c.b);
+    if (c.r == c.g && c.g == c.b) return threeDigits(c.r);
+    return threeDigits(c.r) + "," + threeDigits(c.g) + "," + threeDigits(c.b);
 }
 
 std::string material(const Material& m) {
@@ -52,7 +48,7 @@ std::string wentOn(const InspectedVertex& v) {
         // A weight that is another component's colour is no division: said as what it is.
         text += c.component + "→" + std::to_string(c.child) +
                 (!c.weightedBy.empty() ? " weighted by " + c.weightedBy
-                 : c.probability       ? " /" + number(*c.probability)
+                 : c.probability       ? " /" + threeDigits(*c.probability)
                                        : std::string(" /?"));
     }
     if (v.roulette) {
@@ -61,7 +57,7 @@ std::string wentOn(const InspectedVertex& v) {
         const bool below = v.roulette->draw < v.roulette->continueProb;
         text += std::string(text.empty() ? "" : " ") + "(roulette " +
                 drawNumber(v.roulette->draw, v.roulette->continueProb) + (below ? " < " : " >= ") +
-                number(v.roulette->continueProb) + ")";
+                threeDigits(v.roulette->continueProb) + ")";
         // A surface that scatters nothing (a light's, all of Kd, Ks and Kt black) ends the path
         // whatever the draw said.
         const Material& m = v.material;
@@ -74,7 +70,7 @@ std::string wentOn(const InspectedVertex& v) {
     // Why it ended is the lab's: its draws there say what it decided on (a pick that fell on a
     // black component, a roulette draw).
     std::string drew;
-    for (const float draw : v.draws) drew += (drew.empty() ? "" : ",") + number(draw);
+    for (const float draw : v.draws) drew += (drew.empty() ? "" : ",") + threeDigits(draw);
     return drew.empty() ? "ends" : "ends (drew " + drew + ")";
 }
 

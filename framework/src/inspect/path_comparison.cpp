@@ -1,5 +1,6 @@
 #include "pathlab/inspect/path_comparison.h"
 
+#include "pathlab/inspect/inspection_numbers.h"
 #include "pathlab/render/lab_registry.h"
 
 #include <algorithm>
@@ -9,12 +10,6 @@
 namespace pathlab {
 
 namespace {
-
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", value);
-    return text;
-}
 
 /// Equal to the precision the replay measures weights with (a difference of two float sums).
 bool close(float a, float b) {
@@ -56,14 +51,15 @@ private:
                 return endedWithoutRouletteDraw(at);
             if (a.drawsBefore.size() != b.drawsBefore.size()) {
                 comparable = false;
-                return divergence(at, "draw-order", "",
-                                  "at " + vertexName(at) + " your lab drew " +
-                                      std::to_string(a.drawsBefore.size()) +
-                                      " random number(s) before its next call where the reference "
-                                      "draws " +
-                                      std::to_string(b.drawsBefore.size()) +
-                                      ": it uses them in another order or number, so its paths "
-                                      "cannot be compared with the reference's draw by draw");
+                return divergence(
+                    at, "draw-order", "",
+                    "at " + vertexName(at) + " your lab drew " +
+                        std::to_string(a.drawsBefore.size()) +
+                        " random number(s) before its next call where the reference "
+                        "draws " +
+                        std::to_string(b.drawsBefore.size()) +
+                        ": it uses them in another order or number, so its paths "
+                        "cannot be compared with the reference's draw by draw");
             }
             if (a.type == "trace") {
                 const InspectedVertex& x = ours_.vertices[static_cast<size_t>(a.vertex)];
@@ -125,11 +121,11 @@ private:
         const int depth = mine ? mine->depth : 0;
         const std::string where = vertexName(at) + " (depth " + std::to_string(depth) + ")";
         if (lab_.usesRoulette) {
-            const std::string draw = theirs && theirs->roulette
-                                         ? " (roulette draw " + number(theirs->roulette->draw) +
-                                               " < continueProb " +
-                                               number(parameters_.continueProb) + ")"
-                                         : "";
+            const std::string draw =
+                theirs && theirs->roulette
+                    ? " (roulette draw " + threeDigits(theirs->roulette->draw) +
+                          " < continueProb " + threeDigits(parameters_.continueProb) + ")"
+                    : "";
             if (end.drawsBefore.empty() && depth < parameters_.maxDepth)
                 return divergence(at, "roulette", step(2),
                                   "your path ended at " + where +
@@ -152,25 +148,19 @@ private:
             if (sentNone && depth < parameters_.maxDepth)
                 return divergence(at, "depth", step(2),
                                   "your path ended at " + where + ", the reference sent a " +
-                                      component +
-                                      " ray from there: bounces go on from every hit "
-                                      "below depth maxDepth = " +
-                                      std::to_string(parameters_.maxDepth));
+                                      component + " ray from there: " + bouncesGoOn());
             return divergence(at, "pick", componentStep(component),
                               "your lab sent no " + component + " ray from " + where +
                                   ", the reference did");
         }
         if (!end.drawsBefore.empty())
             return divergence(at, "pick", pickStep(),
-                              "with the same random number " + number(end.drawsBefore.front()) +
-                                  ", your path ended at " + where + " and the reference sent a " +
-                                  component + " ray");
+                              "with the same random number " +
+                                  threeDigits(end.drawsBefore.front()) + ", your path ended at " +
+                                  where + " and the reference sent a " + component + " ray");
         return divergence(at, "depth", step(2),
                           "your path ended at " + where + ", the reference went on with a " +
-                              component +
-                              " ray: bounces go on from every hit below depth "
-                              "maxDepth = " +
-                              std::to_string(parameters_.maxDepth));
+                              component + " ray: " + bouncesGoOn());
     }
 
     /// The lab sent a `component` ray from `at`; the reference ended its path there.
@@ -183,8 +173,8 @@ private:
             return divergence(at, "roulette", step(2),
                               "your path went on from " + where + " with a " + component +
                                   " ray, the reference ended it (roulette draw " +
-                                  number(mine->roulette->draw) + " >= continueProb " +
-                                  number(parameters_.continueProb) + ")");
+                                  threeDigits(mine->roulette->draw) + " >= continueProb " +
+                                  threeDigits(parameters_.continueProb) + ")");
         if (!lab_.usesRoulette && depth >= parameters_.maxDepth)
             return divergence(at, "depth", step(2),
                               "your lab sent a " + component + " ray from " + where +
@@ -203,7 +193,7 @@ private:
     PathDivergence differentPick(const InspectedVertex& x, const InspectedVertex& y, int at,
                                  const InspectedCall& call) {
         const std::string draw =
-            call.drawsBefore.empty() ? "" : " (draw " + number(call.drawsBefore.front()) + ")";
+            call.drawsBefore.empty() ? "" : " (draw " + threeDigits(call.drawsBefore.front()) + ")";
         const std::string ours = x.arrivedBy == "unknown"
                                      ? "a ray of its own making (not diffuseRay, mirrorRay or "
                                        "refractionRay)"
@@ -277,8 +267,8 @@ private:
                               "your lab weights " + ray + " by " + colour(*x.throughput) +
                                   " in all, the reference by " + colour(*y.throughput));
         const float p = parameters_.continueProb;
-        std::string text = "your lab divided " + ray + " by " + number(*ours) +
-                           ", the reference by " + number(*theirs);
+        std::string text = "your lab divided " + ray + " by " + threeDigits(*ours) +
+                           ", the reference by " + threeDigits(*theirs);
         std::string why = stepName;
         const bool near = std::abs(*ours - *theirs) < 0.2f * *theirs;
         if (near && picksByProbability()) {
@@ -290,9 +280,9 @@ private:
             text = "your lab did not divide " + ray +
                    " by its probability: the reference "
                    "divides by " +
-                   number(*theirs);
+                   threeDigits(*theirs);
         else if (lab_.usesRoulette && close(*ours * p, *theirs))
-            text += ": the pick's probability without continueProb " + number(p);
+            text += ": the pick's probability without continueProb " + threeDigits(p);
         else if (lab_.usesRoulette && close(*ours, p))
             text += ": continueProb without the pick's probability";
         return divergence(from, "probability", why, text);
@@ -308,13 +298,19 @@ private:
         return &sample.vertices[static_cast<size_t>(index)];
     }
 
+    /// What a depth-limited lab does below maxDepth, in the words of its handout.
+    std::string bouncesGoOn() const {
+        return "bounces go on from every hit below depth maxDepth = " +
+               std::to_string(parameters_.maxDepth);
+    }
+
     static std::string vertexName(int index) {
         return index < 0 ? "the camera" : "vertex " + std::to_string(index);
     }
 
     static std::string colour(const Color& c) {
-        if (c.r == c.g && c.g == c.b) return number(c.r);
-        return "(" + number(c.r) + ", " + number(c.g) + ", " + number(c.b) + ")";
+        if (c.r == c.g && c.g == c.b) return threeDigits(c.r);
+        return "(" + threeDigits(c.r) + ", " + threeDigits(c.g) + ", " + threeDigits(c.b) + ")";
     }
 
     /// The lab's step n ("lab3.4", numbered as the lab list numbers the labs).

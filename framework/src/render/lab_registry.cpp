@@ -18,6 +18,8 @@ std::optional<Lab> labFromName(std::string_view name) {
     return std::nullopt;
 }
 
+std::string labFileName(Lab lab) { return std::string(labName(lab)) + ".cpp"; }
+
 std::string labNames(std::string_view separator) {
     std::string names;
     for (Lab lab : AllLabs) {

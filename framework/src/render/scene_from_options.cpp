@@ -14,12 +14,8 @@ namespace {
 /// saying so.
 CameraSettings sceneCamera(const RenderOptions& options, const Scene& scene) {
     if (options.cameraPositionSet && options.cameraLookAtSet) return options.camera;
-    GivenCamera given;
-    given.settings = options.camera;
-    given.position = options.cameraPositionSet;
-    given.lookAt = options.cameraLookAtSet;
-    given.fov = options.fovSet;
-    given.viewDirection = options.viewDirection;
+    const GivenCamera given{options.camera, options.cameraPositionSet, options.cameraLookAtSet,
+                            options.fovSet, options.viewDirection};
     const CameraSettings camera = framingCamera(
         scene, given, static_cast<float>(options.width) / static_cast<float>(options.height));
     const Vec3& at = camera.lookAt;

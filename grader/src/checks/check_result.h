@@ -39,14 +39,20 @@ struct CheckResult {
     std::string name() const { return std::string(checkName(kind)); }
 };
 
-struct LabGrade {
+/// What the speed check measured on the way to its verdict.
+struct SpeedFigures {
+    /// Per CPU-second: the geometric means of each side's timed runs, whose quotient is the ratio.
+    double studentSamplesPerSecond = 0, solutionSamplesPerSecond = 0;
+    RaysPerSample studentRays, solutionRays; ///< in the timed runs (the labs' own counts)
+    /// 1/(variance x time per sample), yours ÷ the reference's; 0: unknown
+    double efficiencyRatio = 0;
+};
+
+/// One lab's grade: its checks, and the figures of its speed check (SpeedFigures) and noise.
+struct LabGrade : SpeedFigures {
     Lab lab = Lab::Branching;
     std::vector<CheckResult> checks;
-    double studentSamplesPerSecond = 0, solutionSamplesPerSecond = 0; ///< the timed runs' medians
     double studentVariance = 0, solutionVariance = 0; ///< per sample, on the noise scene
-    RaysPerSample studentRays, solutionRays;          ///< in the timed runs (the labs' own counts)
-    double efficiencyRatio =
-        0; ///< 1/(variance x time per sample), yours ÷ the reference's; 0: unknown
     bool rendersFinished = true; ///< false when a correctness render crashed, hung or ran out
     /// For the HTML report: per scene, the student's mean image, the reference and a heat map.
     struct Pictures {

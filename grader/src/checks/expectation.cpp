@@ -233,7 +233,12 @@ SceneReference loadReference(const std::string& folder, const std::string& scene
         }
         ref.depthLimited = fromJson(j.at("depth_limited"), folder, ref.width, ref.height);
         ref.unbiased = fromJson(j.at("unbiased"), folder, ref.width, ref.height);
-        for (Lab lab : AllLabs) ref.noise[lab] = j.at("noise").at(std::string(labName(lab)));
+        for (Lab lab : AllLabs) {
+            if (!j.at("noise").contains(std::string(labName(lab))))
+                throw InputError(path + ": no figures for the lab \"" + std::string(labName(lab)) +
+                                 "\" (measured before the lab was in the lab list)");
+            ref.noise[lab] = j.at("noise").at(std::string(labName(lab)));
+        }
         ref.noiseSeeds = j.at("noise_seeds");
         ref.bounceRaysKnown =
             j.contains("bounce_rays_per_sample") && j.at("bounce_rays_per_sample").is_object();

@@ -83,11 +83,7 @@ LabGrade judgeLab(const Rubric& rubric, const LabMeasurement& m) {
     const SpeedOutcome speed =
         judgeTimedRuns(rubric, m.lab, correctness.passed, noise.variances, m.speed);
     grade.checks.push_back(speed.check);
-    grade.studentSamplesPerSecond = speed.studentSamplesPerSecond;
-    grade.solutionSamplesPerSecond = speed.solutionSamplesPerSecond;
-    grade.studentRays = speed.studentRays;
-    grade.solutionRays = speed.solutionRays;
-    grade.efficiencyRatio = speed.efficiencyRatio;
+    static_cast<SpeedFigures&>(grade) = speed;
     return grade;
 }
 

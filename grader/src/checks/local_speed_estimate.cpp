@@ -15,8 +15,8 @@ const char* extraBounceCause(Lab lab) {
     case Lab::Uniform: return "a black component traced?";
     case Lab::Importance: return "more than one ray per hit, or rays from near-black surfaces?";
     case Lab::Roulette: return "paths continued without ctx.continueProb's roulette?";
+    default: return "rays its steps do not ask for?"; // a lab added since: no cause of its own
     }
-    return "";
 }
 
 std::string times(double x) {

@@ -111,7 +111,7 @@ RaceFinding checkRaces(const RaceCheckRun& run, Lab lab) {
         runTsanViewer(run.build, run.runtime.launcher, arguments, files, run.policy, 60);
     finding.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const std::string fileName = std::string(labName(lab)) + ".cpp";
+    const std::string fileName = labFileName(lab);
     finding.races = labRaces(process.output, "/submission/" + fileName, "labs/" + fileName);
     // A race found stands even if the run then failed (a lab that races may well crash).
     if (!finding.races.empty() || process.succeeded()) {

@@ -29,14 +29,25 @@ void hashRubric(const nlohmann::json& j, Rubric& r) {
     r.measurementHash = ContentHash().add(measured.dump()).hex();
 }
 
+/// The entry of `lab` in the rubric's section `where` ("points", "correctness.spp"): a lab of
+/// the lab list the rubric does not mention (one added since it was written) is named.
+const nlohmann::json& labEntry(const nlohmann::json& section, const std::string& where, Lab lab,
+                               const std::string& path) {
+    const std::string name(labName(lab));
+    if (!section.is_object() || !section.contains(name))
+        throw InputError(path + ": " + where + " has no entry for the lab \"" + name + "\" (lab " +
+                         std::to_string(labNumber(lab)) +
+                         "); the rubric needs one for every lab of the kit: " + labNames(", "));
+    return section.at(name);
+}
+
 /// points, parameters, correctness and noise.
-void readCorrectnessAndNoise(const nlohmann::json& j, Rubric& r) {
+void readCorrectnessAndNoise(const nlohmann::json& j, const std::string& path, Rubric& r) {
     for (Lab lab : AllLabs) {
-        const std::string name(labName(lab));
-        const auto& p = j.at("points").at(name);
+        const auto& p = labEntry(j.at("points"), "points", lab, path);
         LabRubric& l = r.labs[lab];
         l.points = {p.at("correctness"), p.at("noise"), p.at("speed")};
-        l.correctnessSpp = j.at("correctness").at("spp").at(name);
+        l.correctnessSpp = labEntry(j.at("correctness").at("spp"), "correctness.spp", lab, path);
     }
     r.maxDepth = j.at("parameters").at("max_depth");
     r.continueProb = j.at("parameters").at("continue_prob");
@@ -127,7 +138,7 @@ Rubric loadRubric(const std::string& path) {
         nlohmann::json j = nlohmann::json::parse(in);
         j.erase("about");
         hashRubric(j, r);
-        readCorrectnessAndNoise(j, r);
+        readCorrectnessAndNoise(j, path, r);
         readSpeed(j, path, r);
         readOptionalSectionsAndLimits(j, path, r);
     } catch (const nlohmann::json::exception& e) {

@@ -7,8 +7,10 @@
 #include "pathlab/support/input_error.h"
 #include "pathlab/support/whole_file.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <random>
 #include <sstream>
 
@@ -80,28 +82,27 @@ copyScene(const std::string& base, const std::string& folder, const std::string&
     return fs::absolute(folder + "/" + stem + ".ecs").string();
 }
 
-/// "-pointlight X Y Z R G B" and "-dirlight DX DY DZ R G B" (one or two dashes, Embree's
-/// spellings) with R G B times `factor`; other lines as they are.
-std::string scaledLightOptions(const std::string& ecs, double factor) {
-    std::istringstream in(ecs);
+/// The factor of each number after a line's first word, or none to leave the line as it is.
+using NumberFactors = std::function<std::vector<double>(const std::string& word, size_t count)>;
+
+/// `text` with the numbers after a line's first word multiplied by the factors `factorsOf`
+/// gives them, each written with `digits` significant digits; other lines as they are.
+std::string withScaledNumbers(const std::string& text, int digits, const NumberFactors& factorsOf) {
+    std::istringstream in(text);
     std::string out;
     for (std::string line; std::getline(in, line);) {
         std::istringstream words(line);
-        std::string option;
-        words >> option;
-        const std::string name = option.substr(
-            option.find_first_not_of('-') == std::string::npos ? 0 : option.find_first_not_of('-'));
-        if (name == "pointlight" || name == "dirlight" || name == "directionallight") {
-            std::vector<double> values;
-            for (double v; words >> v;) values.push_back(v);
-            if (values.size() == 6) {
-                line = option;
-                for (size_t k = 0; k < 6; ++k) {
-                    char text[32];
-                    std::snprintf(text, sizeof text, " %.9g",
-                                  k < 3 ? values[k] : values[k] * factor);
-                    line += text;
-                }
+        std::string word;
+        words >> word;
+        std::vector<double> values;
+        for (double v; words >> v;) values.push_back(v);
+        const std::vector<double> factors = factorsOf(word, values.size());
+        if (!factors.empty()) {
+            line = word;
+            for (size_t k = 0; k < values.size(); ++k) {
+                char number[40];
+                std::snprintf(number, sizeof number, " %.*g", digits, values[k] * factors[k]);
+                line += number;
             }
         }
         out += line + "\n";
@@ -109,29 +110,26 @@ std::string scaledLightOptions(const std::string& ecs, double factor) {
     return out;
 }
 
+/// "-pointlight X Y Z R G B" and "-dirlight DX DY DZ R G B" (one or two dashes, Embree's
+/// spellings) with R G B times `factor`; other lines as they are.
+std::string scaledLightOptions(const std::string& ecs, double factor) {
+    return withScaledNumbers(ecs, 9, [factor](const std::string& option, size_t count) {
+        const size_t dashes = option.find_first_not_of('-');
+        const std::string name = option.substr(dashes == std::string::npos ? 0 : dashes);
+        const bool light = name == "pointlight" || name == "dirlight" || name == "directionallight";
+        return light && count == 6 ? std::vector<double>{1, 1, 1, factor, factor, factor}
+                                   : std::vector<double>{};
+    });
+}
+
 } // namespace
 
 std::string scaledEmission(const std::string& mtl, double factor) {
-    std::istringstream in(mtl);
-    std::string out;
-    for (std::string line; std::getline(in, line);) {
-        std::istringstream words(line);
-        std::string keyword;
-        words >> keyword;
-        if (keyword != "Ke") {
-            out += line + "\n";
-            continue;
-        }
-        // Every digit kept: a factor of 2^-6 must scale the light exactly.
-        line = keyword;
-        for (double value; words >> value;) {
-            char text[40];
-            std::snprintf(text, sizeof text, " %.17g", value * factor);
-            line += text;
-        }
-        out += line + "\n";
-    }
-    return out;
+    // Every digit kept: a factor of 2^-6 must scale the light exactly.
+    return withScaledNumbers(mtl, 17, [factor](const std::string& keyword, size_t count) {
+        return keyword == "Ke" ? std::vector<double>(std::max<size_t>(count, 1), factor)
+                               : std::vector<double>{};
+    });
 }
 
 std::string writeScaledLightScene(const std::string& ecsPath, const std::string& folder,

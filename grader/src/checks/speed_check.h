@@ -23,13 +23,9 @@ constexpr int SpeedPairsCap = 4;
 /// Below this share of their cores, the timed runs' machine was busy, and the check says so.
 constexpr double BusyShare = 0.8;
 
-/// The verdict and the figures measured on the way (LabGrade's fields of the same names).
-struct SpeedOutcome {
+/// The verdict and the figures measured on the way (which LabGrade keeps).
+struct SpeedOutcome : SpeedFigures {
     CheckResult check;
-    /// Per CPU-second: the geometric means of each side's runs, whose quotient is the ratio.
-    double studentSamplesPerSecond = 0, solutionSamplesPerSecond = 0;
-    RaysPerSample studentRays, solutionRays;
-    double efficiencyRatio = 0; ///< 0: unknown
 };
 
 /// What the checks before it give the speed check.

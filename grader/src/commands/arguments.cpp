@@ -12,7 +12,10 @@
 
 namespace pathlab::grader {
 
-const char* const usage =
+namespace {
+
+/// The usage text; @LAB_FILES@ and @LAB_NAMES@ stand for the lab list's files and names.
+const char* const usageTemplate =
     R"(usage: grader [options]                       grade the labs of this build
        grader rubric                          print the rubric in words: points, thresholds, scenes
 the instructor's (they need the reference solutions, or a batch's output):
@@ -23,11 +26,11 @@ the instructor's (they need the reference solutions, or a batch's output):
        grader make-variants DIR               write the rubric's variants of the public scenes
                                               into DIR, as hidden scenes (--variant-seed N)
 
-A submission is a folder, a .zip, a .tar.gz or a git repository holding the four lab files
-(branching.cpp, uniform.cpp, importance.cpp, roulette.cpp); only those are taken.
+A submission is a folder, a .zip, a .tar.gz or a git repository holding the lab files
+(@LAB_FILES@); only those are taken.
 
 options
-  --lab NAME          grade one lab: branching | uniform | importance | roulette
+  --lab NAME          grade one lab: @LAB_NAMES@
   --viewer PATH       the viewer whose labs are graded (default: the one beside grader)
   --solution-viewer PATH
                       the viewer whose --solution is the reference (default: --viewer)
@@ -79,6 +82,22 @@ batch
                       from this seed (default: the one kept in OUT/.variants/seed, else a new
                       one); every shard of one class must be given the same
 )";
+
+void replaceAll(std::string& text, const std::string& placeholder, const std::string& value) {
+    for (size_t at = text.find(placeholder); at != std::string::npos;
+         at = text.find(placeholder, at + value.size()))
+        text.replace(at, placeholder.size(), value);
+}
+
+} // namespace
+
+std::string usage() {
+    std::string text = usageTemplate, files;
+    for (Lab lab : AllLabs) files += (files.empty() ? "" : ", ") + labFileName(lab);
+    replaceAll(text, "@LAB_FILES@", files);
+    replaceAll(text, "@LAB_NAMES@", labNames(" | "));
+    return text;
+}
 
 namespace {
 

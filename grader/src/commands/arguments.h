@@ -55,6 +55,7 @@ struct Arguments {
 /// Throws InputError naming the option at fault.
 Arguments parseArguments(int argc, char** argv);
 
-extern const char* const usage;
+/// `grader --help`: the commands and options, with the labs and their files from the lab list.
+std::string usage();
 
 } // namespace pathlab::grader

@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
         [&] {
             const Arguments a = parseArguments(argc, argv);
             if (a.command == "help") {
-                std::fputs(usage, stdout);
+                std::fputs(usage().c_str(), stdout);
                 return 0;
             }
             if (a.command == "merge") return mergeBatches(a);

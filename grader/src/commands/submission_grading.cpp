@@ -33,14 +33,8 @@ void makeReadableFolder(const std::string& folder) {
 std::function<RaceFinding(Lab)> raceCheckOf(const SubmissionGrader& grader,
                                             const std::string& sources, const std::string& build,
                                             const SandboxPolicy& policy, const std::string& id) {
-    RaceCheckRun races;
-    races.build = grader.build;
-    races.kit = grader.kit;
-    races.runtime = grader.raceCheck;
-    races.sources = sources;
-    races.folder = build;
-    races.policy = policy;
-    races.seed = grader.seedBase;
+    const RaceCheckRun races{grader.build, grader.kit, grader.raceCheck, sources,
+                             build,        policy,     grader.seedBase};
     return [races, id](Lab lab) {
         const RaceFinding finding = checkRaces(races, lab);
         std::fprintf(stderr, "%s: %s: race check, %.1f s\n", id.c_str(),
@@ -259,7 +253,7 @@ std::string resultJson(const SubmissionOutcome& outcome, const std::string& subm
                                 {"graded_here", c.gradedHere}};
         labs[std::string(labName(lab.lab))] = {
             {"score", lab.score()}, {"max_score", lab.maxScore()}, {"checks", checks}};
-        if (!outcome.intake.taken.count(std::string(labName(lab.lab)) + ".cpp"))
+        if (!outcome.intake.taken.count(labFileName(lab.lab)))
             missing.push_back(std::string(labName(lab.lab)));
         for (const CheckResult& c : lab.checks)
             if (!c.passed && !c.diagnosis.empty())

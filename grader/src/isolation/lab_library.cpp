@@ -116,8 +116,6 @@ std::string linkLibrary(const LabBuild& build, const std::vector<std::string>& o
     return "";
 }
 
-std::string labFile(Lab lab) { return std::string(labName(lab)) + ".cpp"; }
-
 /// Where a kit's parts live in its folder.
 LabKit existingLabKitPaths(const std::string& folder) {
     LabKit kit;
@@ -168,8 +166,8 @@ std::string kitFingerprint(const LabBuild& build) {
     for (const std::string& flag : build.flags) text += " " + flag;
     std::vector<std::string> files = {build.labTable};
     for (Lab lab : AllLabs)
-        files.insert(files.end(),
-                     {build.stubs + "/" + labFile(lab), build.solutions + "/" + labFile(lab)});
+        files.insert(files.end(), {build.stubs + "/" + labFileName(lab),
+                                   build.solutions + "/" + labFileName(lab)});
     for (const std::string& folder : {build.include, build.generatedInclude, build.runnerInclude})
         for (const auto& entry : fs::recursive_directory_iterator(folder))
             if (entry.is_regular_file()) files.push_back(entry.path().string());
@@ -203,9 +201,9 @@ LabKit buildLabKit(const LabBuild& build, const std::string& folder, const Sandb
     compile(build.labTable, "student", kit.tableObject);
     std::vector<std::string> solutionObjects;
     for (Lab lab : AllLabs) {
-        compile(build.stubs + "/" + labFile(lab), "student", kit.stubObjects[lab]);
+        compile(build.stubs + "/" + labFileName(lab), "student", kit.stubObjects[lab]);
         solutionObjects.push_back(folder + "/solution_" + std::string(labName(lab)) + ".o");
-        compile(build.solutions + "/" + labFile(lab), "student", solutionObjects.back());
+        compile(build.solutions + "/" + labFileName(lab), "student", solutionObjects.back());
     }
     solutionObjects.push_back(kit.tableObject);
     const std::string failure = linkLibrary(build, solutionObjects, kit.solutionsLibrary, policy);
@@ -232,7 +230,7 @@ SubmissionLibrary buildSubmissionLibrary(const LabBuild& build, const LabKit& ki
     SubmissionLibrary result;
     auto objectOf = [&](Lab lab) { return folder + "/" + std::string(labName(lab)) + ".o"; };
     for (Lab lab : AllLabs) {
-        const std::string source = sources + "/" + labFile(lab);
+        const std::string source = sources + "/" + labFileName(lab);
         LabCompilation& compiled = result.labs[lab];
         if (!fs::exists(source)) continue; // NotSubmitted
         compiled.messages = compileObject(build, source, "student", objectOf(lab), policy);
@@ -254,8 +252,8 @@ std::string buildRaceCheckLibrary(const LabBuild& build, const LabKit& kit, Lab 
                                   const std::string& sources, const std::string& folder,
                                   const SandboxPolicy& policy, std::string& library) {
     const std::string stem = folder + "/" + std::string(labName(lab)) + "-tsan";
-    std::string failure = compileObject(build, sources + "/" + labFile(lab), "student", stem + ".o",
-                                        policy, build.raceCheckFlags);
+    std::string failure = compileObject(build, sources + "/" + labFileName(lab), "student",
+                                        stem + ".o", policy, build.raceCheckFlags);
     if (failure.empty())
         failure = linkLibrary(build, libraryParts(kit, lab, stem + ".o"), stem + ".so", policy,
                               build.raceCheckFlags);

@@ -119,14 +119,7 @@ ProcessOutcome runProcess(const std::vector<std::string>& argv, const ProcessLim
     outcome.cpuLimit = limits.cpuSeconds;
     outcome.outputReadBytes = limits.outputReadBytes;
     if (!run.started) return outcome;
-    outcome.started = true;
-    outcome.timedOut = run.timedOut;
-    outcome.seconds = run.seconds;
-    outcome.output = run.output;
-    outcome.collected = run.collected;
-    outcome.collectOverflow = run.collectOverflow;
-    outcome.outputCutOff = run.outputCutOff;
-    outcome.cpuSeconds = run.cpuSeconds;
+    static_cast<ChildRun&>(outcome) = run;
     if (WIFEXITED(run.waitStatus)) outcome.exitStatus = WEXITSTATUS(run.waitStatus);
     if (WIFSIGNALED(run.waitStatus) && !run.timedOut) outcome.signal = WTERMSIG(run.waitStatus);
     return outcome;

@@ -1,6 +1,8 @@
 #pragma once
 /// Runs another program with a time limit and resource limits, and says how it ended.
 
+#include "process/child_process.h"
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -32,21 +34,16 @@ struct ProcessOptions {
     bool isolated = false;
 };
 
-struct ProcessOutcome {
-    bool started = false;
-    bool timedOut = false;
-    int exitStatus = -1;          ///< when it exited normally
-    int signal = 0;               ///< when a signal ended it
-    int stoppedBy = 0;            ///< the signal it stopped itself with (the sandbox then ends it)
-    double seconds = 0;           ///< wall time, measured here
-    double wallLimit = 0;         ///< the time limit it ran under (ProcessLimits::wallSeconds)
-    double cpuSeconds = 0;        ///< CPU time of it and its descendants, as the kernel counts it
-    double cpuLimit = 0;          ///< the CPU time limit it ran under (0: none)
-    std::string output;           ///< stdout and stderr together (the last 64 KiB)
-    bool outputCutOff = false;    ///< it printed more than ProcessLimits::outputReadBytes
-    size_t outputReadBytes = 0;   ///< that limit
-    std::string collected;        ///< what it wrote on descriptor 3
-    bool collectOverflow = false; ///< it wrote more there than allowed
+/// The run as process/ measured it (ChildRun: started, timed out, wall and CPU seconds, its
+/// output, the last 64 KiB of stdout and stderr together, and what it wrote on descriptor 3),
+/// with the limits it ran under and how it ended in the grader's terms.
+struct ProcessOutcome : ChildRun {
+    int exitStatus = -1;        ///< when it exited normally
+    int signal = 0;             ///< when a signal ended it
+    int stoppedBy = 0;          ///< the signal it stopped itself with (the sandbox then ends it)
+    double wallLimit = 0;       ///< the time limit it ran under (ProcessLimits::wallSeconds)
+    double cpuLimit = 0;        ///< the CPU time limit it ran under (0: none)
+    size_t outputReadBytes = 0; ///< ProcessLimits::outputReadBytes, past which outputCutOff
 
     bool succeeded() const {
         return started && !timedOut && signal == 0 && stoppedBy == 0 && exitStatus == 0;

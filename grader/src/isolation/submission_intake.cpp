@@ -1,5 +1,7 @@
 #include "isolation/submission_intake.h"
 
+#include "pathlab/render/lab_registry.h"
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -59,11 +61,13 @@ Intake takeSubmission(const std::string& submission, const std::string& folder,
     SandboxRun run;
     run.command = {"/usr/bin/python3", "/pathlab/unpack_submission.py", inside,
                    std::to_string(MaxLabFileBytes)};
+    for (Lab lab : AllLabs) run.command.push_back(labFileName(lab));
     // Bound as it is, links and all, for the unpacker to refuse them; it is the kit's own code,
     // and nothing of the submission runs here (git reads its objects as data).
     run.bound = {{fs::absolute(submission).string(), inside}};
     run.files = {{unpackScript, "/pathlab/unpack_submission.py"}};
-    run.collect = {"branching.cpp", "uniform.cpp", "importance.cpp", "roulette.cpp", "intake.json"};
+    for (Lab lab : AllLabs) run.collect.push_back(labFileName(lab));
+    run.collect.push_back("intake.json");
     run.scratchBytes = 16LL << 20;
     const ProcessLimits limits{/*wallSeconds*/ 60, /*memoryBytes*/ 1LL << 30, /*cpuSeconds*/ 60,
                                /*fileBytes*/ 4LL << 20, /*processes*/ 16};

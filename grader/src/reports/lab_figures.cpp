@@ -41,6 +41,16 @@ std::string today() {
     return date;
 }
 
+/// A depth-limited lab's row in the notebook, as the handouts quote it: "uniform pick (lab 2)".
+std::string notebookLabel(Lab lab) {
+    const std::string number = " (lab " + std::to_string(labNumber(lab)) + ")";
+    switch (lab) {
+    case Lab::Uniform: return "uniform pick" + number;
+    case Lab::Importance: return "importance pick" + number;
+    default: return std::string(labName(lab)) + number; // "branching (lab 1)"
+    }
+}
+
 nlohmann::json machineJson(const Machine& m) {
     return {{"cpu", m.cpu},
             {"system", m.system},
@@ -56,19 +66,20 @@ nlohmann::json machineJson(const Machine& m) {
 std::vector<NotebookEstimator> notebookEstimators(const std::vector<Lab>& labs,
                                                   const Rubric& rubric) {
     std::vector<NotebookEstimator> rows;
-    // Roulette's rows, one per continueProb, are labelled below.
-    const ByLab<const char*> labels = {"branching (lab 1)", "uniform pick (lab 2)",
-                                       "importance pick (lab 3)", nullptr};
     for (Lab lab : labs) {
-        if (lab != Lab::Roulette) {
-            rows.push_back({std::string(labName(lab)), labels[lab], lab, 0.1f});
+        const std::string name(labName(lab)), number = std::to_string(labNumber(lab));
+        if (isDepthLimited(lab)) {
+            rows.push_back({name, notebookLabel(lab), lab, 0.1f});
             continue;
         }
-        rows.push_back({"roulette", "roulette, continueProb 0.1 (lab 4's default)", lab, 0.1f});
-        char label[96];
-        std::snprintf(label, sizeof label, "roulette, continueProb %g (as graded)",
-                      rubric.continueProb);
-        rows.push_back({"roulette_graded", label, lab, rubric.continueProb});
+        // A lab that ends paths by roulette: a row at the viewer's default continueProb, which
+        // the handouts' figures use, and one as graded.
+        rows.push_back(
+            {name, name + ", continueProb 0.1 (lab " + number + "'s default)", lab, 0.1f});
+        char graded[32];
+        std::snprintf(graded, sizeof graded, "%g", rubric.continueProb);
+        rows.push_back({name + "_graded", name + ", continueProb " + graded + " (as graded)", lab,
+                        rubric.continueProb});
     }
     return rows;
 }
@@ -96,7 +107,7 @@ Machine thisMachine(int threads) {
     return m;
 }
 
-bool measuresLateNoise(const NotebookEstimator& row) { return row.lab == Lab::Roulette; }
+bool measuresLateNoise(const NotebookEstimator& row) { return !isDepthLimited(row.lab); }
 
 namespace {
 
@@ -246,7 +257,9 @@ LabFigures loadLabFigures(const std::string& path, const Rubric& rubric) {
         figures.kitCpuSecondsPerRay = sameRuns ? t.value("kit_cpu_seconds_per_ray", 0.0) : 0.0;
         for (Lab lab : AllLabs) {
             const std::string name(labName(lab));
-            if (!sameRuns || t.at("spp").at(name) != rubric.forLab(lab).correctnessSpp) {
+            // A lab added to the lab list since the figures were measured has none.
+            if (!sameRuns || !t.at("spp").contains(name) ||
+                t.at("spp").at(name) != rubric.forLab(lab).correctnessSpp) {
                 figures.timedRaysKnown = false;
                 continue;
             }

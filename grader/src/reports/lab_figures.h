@@ -28,8 +28,8 @@ struct NotebookEstimator {
     float continueProb;
 };
 
-/// The notebook's rows for `labs` in order: lab 4 twice, at its default continueProb 0.1 and at
-/// the rubric's (graded) one.
+/// The notebook's rows for `labs` in order: a lab that ends paths by roulette (lab 4) twice, at
+/// its default continueProb 0.1 and at the rubric's (graded) one.
 std::vector<NotebookEstimator> notebookEstimators(const std::vector<Lab>& labs,
                                                   const Rubric& rubric);
 

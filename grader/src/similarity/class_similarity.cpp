@@ -18,7 +18,7 @@ std::vector<SimilarLabs> similarSubmissions(const std::string& out,
     std::vector<SubmittedFile> files;
     std::map<std::string, std::string> stubs;
     for (Lab lab : AllLabs) {
-        const std::string name = std::string(labName(lab)), file = name + ".cpp";
+        const std::string name = std::string(labName(lab)), file = labFileName(lab);
         stubs[name] = readFile((kit / "labs" / file).string());
         if (fs::is_regular_file(kit / "solutions" / file))
             files.push_back(

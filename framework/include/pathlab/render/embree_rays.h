@@ -57,21 +57,11 @@ inline RTCRayHit8 cameraPacketQuery(const CameraPacket& packet) {
 /// The occlusion query for the segment from `from` to `to`, both ends excluded.
 inline RTCRay occlusionQuery(const Vec3& from, const Vec3& to) {
     const Vec3 d = to - from;
-    RTCRay ray;
-    ray.org_x = from.x;
-    ray.org_y = from.y;
-    ray.org_z = from.z;
-    ray.dir_x = d.x;
-    ray.dir_y = d.y;
-    ray.dir_z = d.z;
-    ray.tnear = 0.0f;
     // Stop just short of the light's own surface (the direction is not normalised: t = 1 is it).
-    ray.tfar = 1.0f - 1e-4f;
-    ray.time = 0.0f;
-    ray.mask = 0xFFFFFFFFu;
-    ray.id = 0;
-    ray.flags = 0;
-    return ray;
+    const float tfar = 1.0f - 1e-4f;
+    // In RTCRay's order (Embree 3 and 4 alike): origin, tnear, direction, time, tfar, mask, id,
+    // flags.
+    return RTCRay{from.x, from.y, from.z, 0.0f, d.x, d.y, d.z, 0.0f, tfar, 0xFFFFFFFFu, 0, 0};
 }
 
 } // namespace pathlab::embree

@@ -43,6 +43,8 @@ enum class Implementation { Student, Solution };
 /// "branching", "uniform", "importance", "roulette": the lab's file, namespace and --lab name.
 std::string_view labName(Lab lab);
 std::optional<Lab> labFromName(std::string_view name);
+/// "roulette.cpp": the lab's file, in labs/ and solutions/ and in a submission.
+std::string labFileName(Lab lab);
 /// Every lab's name, in order, between `separator`s: "branching, uniform, ...".
 std::string labNames(std::string_view separator);
 /// "student" or "solution".
