@@ -18,27 +18,20 @@ Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
 3. Bad input (spp that are not whole numbers from 1 to 65536) is one line naming it and exit
    status 2, from the script and from `make convergence`, and writes nothing.
 """
-import argparse
 import contextlib
-import csv
 import io
 import math
 import os
-import struct
-import subprocess
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from checks import check, exit_code  # noqa: E402
+from checks import check, run_in_scratch_folder  # noqa: E402
+from png_pixels import png_size  # noqa: E402
+from script_tests import (check_make_refuses, check_script_refuses, check_succeeded,  # noqa: E402
+                          close, import_script, read_csv, run, script_test_arguments)
 
-parser = argparse.ArgumentParser()
-parser.add_argument("--build", required=True)
-parser.add_argument("--source", required=True)
-args = parser.parse_args()
-SCRIPT = os.path.join(args.source, "scripts", "convergence.py")
-sys.path.insert(0, os.path.dirname(SCRIPT))
-import convergence as convergence_script  # noqa: E402
+args = script_test_arguments()
+SCRIPT, convergence_script = import_script(args.source, "convergence")
 
 LABS = ["branching", "uniform", "importance", "roulette"]
 FIGURES = ["cpu_seconds", "cpu_seconds_256", "samples_per_cpu_second", "relative_rmse", "rel_mse",
@@ -47,35 +40,15 @@ FIGURES = ["cpu_seconds", "cpu_seconds_256", "samples_per_cpu_second", "relative
 ROUNDING = 2e-3
 
 
-def close(a, b, tolerance=ROUNDING):
-    return abs(a - b) <= tolerance * max(abs(a), abs(b))
-
-
-def png_size(path):
-    with open(path, "rb") as f:
-        head = f.read(24)
-    if len(head) < 24 or head[:8] != b"\x89PNG\r\n\x1a\n" or head[12:16] != b"IHDR":
-        return None
-    return struct.unpack(">II", head[16:24])
-
-
-def run(arguments, cwd=None):
-    env = {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
-    return subprocess.run(arguments, capture_output=True, text=True, cwd=cwd, env=env)
-
-
 def check_study(scratch):
     out = os.path.join(scratch, "convergence")
     result = run([sys.executable, SCRIPT, "--build", args.build, "--spp", "4 2", "--out", out])
-    check(result.returncode == 0, "a study at 2 and 4 spp: exit 0" +
-          ("" if result.returncode == 0 else f": {result.stdout[-600:]}{result.stderr[-600:]}"))
-    if result.returncode != 0:
+    if not check_succeeded(result, "a study at 2 and 4 spp"):
         return
     last = result.stdout.splitlines()[-1]
     check(f"the plot is {os.path.abspath(out)}/convergence.png" in last,
           f"the last line names the plot: {last!r}")
-    with open(os.path.join(out, "convergence.csv"), newline="") as f:
-        rows = list(csv.DictReader(f))
+    rows = read_csv(os.path.join(out, "convergence.csv"))
     check([(r["lab"], int(r["spp"])) for r in rows] == [(lab, spp) for lab in LABS
                                                          for spp in (2, 4)],
           f"convergence.csv has a row per lab and spp, in order: "
@@ -93,20 +66,18 @@ def check_study(scratch):
         return
     scaled = [(float(r["cpu_seconds_256"]) / float(r["cpu_seconds"]),
                float(r["seconds_256"]) / float(r["seconds"])) for r in rows]
-    check(all(close(cpu, 16) and close(wall, 16) for cpu, wall in scaled),
+    check(all(close(cpu, 16, ROUNDING) and close(wall, 16, ROUNDING) for cpu, wall in scaled),
           f"cpu_seconds_256 and seconds_256 are the 64x64 render's times 16: {scaled[:3]}")
     rates = [(float(r["samples_per_cpu_second"]), int(r["spp"]) * 64 * 64 / float(r["cpu_seconds"]))
              for r in rows]
-    check(all(close(a, b) for a, b in rates),
+    check(all(close(a, b, ROUNDING) for a, b in rates),
           f"samples_per_cpu_second is the samples over cpu_seconds {rates[:3]}")
     size = png_size(os.path.join(out, "convergence.png"))
     wanted = (convergence_script.PLOT_WIDTH, convergence_script.PLOT_HEIGHT)
     check(size == wanted, f"convergence.png is a {wanted[0]}x{wanted[1]} PNG: {size}")
-    with open(os.path.join(out, "handout.csv"), newline="") as f:
-        handout = list(csv.DictReader(f))
+    handout = read_csv(os.path.join(out, "handout.csv"))
     keys = [key for _, _, key in convergence_script.LABS]
-    with open(convergence_script.HANDOUT_CSV, newline="") as f:
-        theirs = [r for r in csv.DictReader(f) if r["estimator"] in keys]
+    theirs = [r for r in read_csv(convergence_script.HANDOUT_CSV) if r["estimator"] in keys]
     check(sorted({r["lab"] for r in handout}) == sorted(LABS) and len(handout) == len(theirs) and
           all(float(r["relative_rmse"]) > 0 for r in handout),
           f"handout.csv holds the handout's curves of the four labs ({len(handout)} rows of "
@@ -147,8 +118,7 @@ def check_made_up_renders(scratch):
           and lines.index(busy[0]) > max(i for i, line in enumerate(lines)
                                          if line.startswith("  ")),
           f"made-up renders: the busy machine said in one line after the renders: {busy}")
-    with open(os.path.join(out, "convergence.csv"), newline="") as f:
-        rows = list(csv.DictReader(f))
+    rows = read_csv(os.path.join(out, "convergence.csv"))
     scaled = [(r["cpu_seconds"], r["cpu_seconds_256"], r["seconds_256"]) for r in rows[:2]]
     check(scaled == [("0.02", "0.32", "0.64"), ("0.04", "0.64", "1.28")],
           f"made-up renders: the CPU and wall seconds, each scaled to 256x256: {scaled}")
@@ -157,30 +127,12 @@ def check_made_up_renders(scratch):
 def check_bad_input(scratch):
     for spp, words in [("0", "SPP: 0 is outside"), ("'4 x'", "'x' is not a whole number"),
                        ("70000", "SPP: 70000 is outside")]:
-        out = os.path.join(scratch, "bad")
-        result = run(["sh", "-c", f"{sys.executable} {SCRIPT} --build {args.build} --spp {spp} "
-                                  f"--out {out}"])
-        lines = result.stderr.strip().splitlines()
-        check(result.returncode == 2 and len(lines) == 1 and words in lines[0] and
-              not result.stdout and not os.path.exists(out),
-              f"convergence.py --spp {spp}: exit 2, one line naming it, nothing written: "
-              f"{result.returncode} {lines}")
-    build = os.path.join(scratch, "make-build")
-    result = run(["make", "--no-print-directory", "convergence", f"BUILD={build}", "SPP=-1"],
-                 cwd=args.source)
-    ours = [line for line in result.stderr.splitlines() if line.startswith("make convergence:")]
-    check(result.returncode == 2 and len(ours) == 1 and "SPP: -1 is outside" in ours[0] and
-          not os.path.exists(build),
-          f"make convergence SPP=-1: exit 2, one line naming it, nothing written: "
-          f"{result.returncode} {ours}")
+        check_script_refuses(SCRIPT, args.build, f"--spp {spp}", words, scratch)
+    check_make_refuses(args.source, "convergence", ["SPP=-1"], "SPP: -1 is outside", scratch)
 
 
 def main():
-    with tempfile.TemporaryDirectory() as scratch:
-        check_study(scratch)
-        check_made_up_renders(scratch)
-        check_bad_input(scratch)
-    sys.exit(exit_code())
+    run_in_scratch_folder(check_study, check_made_up_renders, check_bad_input)
 
 
 if __name__ == "__main__":

@@ -1,6 +1,7 @@
 // The checks where a lab's bugs first show (pathlab/support/check.h): a helper given a missed hit,
 // a ray that is not unit length, and the report of the first non-finite sample of a render.
 #include "catch.h"
+#include "messages.h"
 #include "test_support.h"
 
 #include "pathlab/render/scene_from_options.h"
@@ -13,6 +14,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 using namespace pathlab;
 
@@ -34,8 +36,14 @@ Renderer& renderWith(PathTraceFunction pathTrace, int spp, AccumulationBuffer& b
     return renderer;
 }
 
-bool mentions(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
+/// Checks that `message` holds each of `parts`, a check each: a failure shows the message and
+/// the part it lacks.
+void checkMentions(const std::string& message, const std::vector<std::string>& parts) {
+    INFO(message);
+    for (const std::string& part : parts) {
+        CAPTURE(part);
+        CHECK(contains(message, part));
+    }
 }
 
 std::string checkMessage(PathTraceFunction pathTrace) {
@@ -78,25 +86,21 @@ Color nanNowAndThen(const Ray& ray, int, PathContext& ctx) {
 TEST_CASE("the bounce helpers and directLight refuse a missed hit, naming themselves and the "
           "lab's line",
           "[render][checks]") {
-    const std::string diffuse = checkMessage(bounceOffMissedHit);
-    INFO(diffuse);
     const std::string labLine = "checks_test.cpp:" + std::to_string(BounceLine);
-    CHECK(mentions(diffuse, labLine + ": check failed: diffuseRay(hit, u) needs a surface"));
-    CHECK(mentions(diffuse, "scattering.cpp:"));
-    CHECK(mentions(diffuse, ": hit.found]"));
-    CHECK(mentions(checkMessage(mirrorOffMissedHit), "mirrorRay(ray, hit) needs a surface"));
-    CHECK(mentions(checkMessage(lightAtMissedHit), "ctx.directLight(hit) needs a surface"));
+    checkMentions(checkMessage(bounceOffMissedHit),
+                  {labLine + ": check failed: diffuseRay(hit, u) needs a surface",
+                   "scattering.cpp:", ": hit.found]"});
+    checkMentions(checkMessage(mirrorOffMissedHit), {"mirrorRay(ray, hit) needs a surface"});
+    checkMentions(checkMessage(lightAtMissedHit), {"ctx.directLight(hit) needs a surface"});
 }
 
 TEST_CASE("ctx.trace refuses a direction that is not unit length, naming the lab's line and "
           "the length",
           "[render][checks]") {
-    const std::string message = checkMessage(traceLongRay);
-    INFO(message);
-    CHECK(mentions(message, "checks_test.cpp:" + std::to_string(LongRayLine) + ": check failed"));
-    CHECK(mentions(message, "unit-length ray.direction, and this camera ray's has length 2.0"));
-    CHECK(mentions(message, "before the call of pathTrace that received it"));
-    CHECK(mentions(message, "path_context.cpp:"));
+    checkMentions(checkMessage(traceLongRay),
+                  {"checks_test.cpp:" + std::to_string(LongRayLine) + ": check failed",
+                   "unit-length ray.direction, and this camera ray's has length 2.0",
+                   "before the call of pathTrace that received it", "path_context.cpp:"});
 }
 
 TEST_CASE("the first non-finite sample is reported by sample index and pixel, whatever the "
@@ -138,13 +142,11 @@ TEST_CASE("the first non-finite sample is reported by sample index and pixel, wh
     RenderStats stats =
         renderStats({{Lab::Roulette, Implementation::Student, {}, Seed}, "box"}, buffer, 2, 1.0,
                     renderer.rayCounters(), renderer.firstNonfinite());
-    const std::string warning = stats.nonfiniteWarning();
-    INFO(warning);
-    CHECK(mentions(warning, std::to_string(nanPixels) + " pixel(s)"));
-    CHECK(mentions(warning, "pixel (" + std::to_string(expected->x) + ", " +
-                                std::to_string(expected->y) + "), sample " +
-                                std::to_string(expected->sampleIndex)));
-    CHECK(mentions(warning, "lab roulette (student)"));
+    checkMentions(stats.nonfiniteWarning(),
+                  {std::to_string(nanPixels) + " pixel(s)",
+                   "pixel (" + std::to_string(expected->x) + ", " + std::to_string(expected->y) +
+                       "), sample " + std::to_string(expected->sampleIndex),
+                   "lab roulette (student)"});
 
     // And --stats keeps it, its NaN as text.
     const std::string file = test::temporaryFolder("checks") + "/stats.json";

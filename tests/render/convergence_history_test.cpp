@@ -6,6 +6,8 @@
 #include "runner/convergence_history.h"
 
 #include <cmath>
+#include <initializer_list>
+#include <string>
 
 using namespace pathlab;
 
@@ -21,6 +23,12 @@ ConvergencePoint unbiasedPoint(int spp, double variance = 0.25, double secondsPe
     return p;
 }
 
+/// Adds unbiased points at these spp, in order, under `label`.
+void addPoints(ConvergenceHistory& history, const std::string& label,
+               std::initializer_list<int> spps) {
+    for (int spp : spps) history.add(label, unbiasedPoint(spp));
+}
+
 } // namespace
 
 TEST_CASE("a run lasts from one restart to the next, and every label has its own",
@@ -32,11 +40,9 @@ TEST_CASE("a run lasts from one restart to the next, and every label has its own
     CHECK(history.current()->points.size() == 4);
 
     // The spp went down with the same label: accumulation restarted (the r key, a camera move).
-    history.add("lab 1", unbiasedPoint(1));
-    history.add("lab 1", unbiasedPoint(2));
+    addPoints(history, "lab 1", {1, 2});
     // Another lab: a run of its own, even if its spp went on rising.
-    history.add("lab 2", unbiasedPoint(3));
-    history.add("lab 2", unbiasedPoint(4));
+    addPoints(history, "lab 2", {3, 4});
     REQUIRE(history.runs().size() == 3);
     CHECK(history.runs()[0].label == "lab 1");
     CHECK(history.runs()[1].label == "lab 1");
@@ -47,18 +53,13 @@ TEST_CASE("a run lasts from one restart to the next, and every label has its own
 TEST_CASE("a run of one point is forgotten when the next starts, and old runs go",
           "[render][convergence]") {
     ConvergenceHistory history;
-    history.add("dragged", unbiasedPoint(1));
-    history.add("dragged", unbiasedPoint(1));
-    history.add("dragged", unbiasedPoint(1));
-    history.add("kept", unbiasedPoint(1));
-    history.add("kept", unbiasedPoint(2));
+    addPoints(history, "dragged", {1, 1, 1});
+    addPoints(history, "kept", {1, 2});
     REQUIRE(history.runs().size() == 1);
     CHECK(history.runs()[0].label == "kept");
 
-    for (size_t run = 0; run < ConvergenceHistory::MaxRuns + 3; ++run) {
-        history.add("run " + std::to_string(run), unbiasedPoint(1));
-        history.add("run " + std::to_string(run), unbiasedPoint(2));
-    }
+    for (size_t run = 0; run < ConvergenceHistory::MaxRuns + 3; ++run)
+        addPoints(history, "run " + std::to_string(run), {1, 2});
     REQUIRE(history.runs().size() == ConvergenceHistory::MaxRuns);
     CHECK(history.current()->label == "run " + std::to_string(ConvergenceHistory::MaxRuns + 2));
 }

@@ -1,6 +1,7 @@
 // The noise figure (pathlab/images/image_noise.h): its definition on samples whose statistics are
 // known, and its one promise on the labs' scene, that it halves when the samples quadruple.
 #include "catch.h"
+#include "known_samples.h"
 #include "test_support.h"
 
 #include "runner/lab_tables.h"
@@ -17,15 +18,9 @@ using namespace pathlab;
 
 TEST_CASE("the noise figure is the RMS standard error of the pixels over the mean radiance",
           "[render][noise]") {
-    // Two pixels, four samples each, the same in every channel: pixel 0 sees 1, 3, 1, 3 (mean 2,
-    // sample variance 4/3), pixel 1 sees 0, 0, 0, 0 (a dark pixel: mean 0, variance 0).
-    AccumulationBuffer buffer(2, 1);
-    for (float v : {1.0f, 3.0f, 1.0f, 3.0f}) {
-        buffer.addSample(0, Color(v));
-        buffer.addSample(1, Color(0.0f));
-    }
-    buffer.finishPass(4);
-    const AccumulationBuffer::Summary s = buffer.summary();
+    // Two pixels, four samples each: pixel 0 sees 1, 3, 1, 3 in every channel (mean 2, sample
+    // variance 4/3), pixel 1 sees 0s (a dark pixel: mean 0, variance 0).
+    const AccumulationBuffer::Summary s = test::brightAndDarkPixel().summary();
     CHECK(s.meanRadiance.r == Approx(1.0));
     CHECK(s.meanVariance.g == Approx(2.0 / 3));
     // sqrt((4/3 + 0) / 2 / 4) / 1: the dark pixel adds its (zero) variance, and is never divided

@@ -2,6 +2,7 @@
 // noise and efficiency maps (pixel_noise_map.h, pixel_efficiency_map.h), against values computed
 // here by hand from their definitions; and the log scale the maps' PNGs are coloured on.
 #include "catch.h"
+#include "known_samples.h"
 #include "test_support.h"
 
 #include "pathlab/render/accumulation_buffer.h"
@@ -65,12 +66,7 @@ TEST_CASE("the noise map is each pixel's relative standard error, the efficiency
           "1 / (relative variance x seconds per sample)",
           "[render][reference]") {
     // Pixel 0 sees 1, 3, 1, 3 in every channel (mean 2, sample variance 4/3); pixel 1 sees 0s.
-    AccumulationBuffer buffer(2, 1);
-    for (float v : {1.0f, 3.0f, 1.0f, 3.0f}) {
-        buffer.addSample(0, Color(v));
-        buffer.addSample(1, Color(0.0f));
-    }
-    buffer.finishPass(4);
+    const AccumulationBuffer buffer = test::brightAndDarkPixel();
     std::vector<float> mean, variance;
     buffer.meanImage(mean);
     buffer.varianceImage(variance);

@@ -1,11 +1,12 @@
-"""What PathLab's Python tests share: how a check is reported and counted, the list of labs, and
-the arguments of a test that packages the kit.
+"""What PathLab's Python tests share: how a check is reported and counted, the list of labs, the
+arguments of a test that packages the kit, and a test's checks run in one scratch folder.
 
 A test prints PASS or FAIL for each check and exits non-zero at the end if any failed, so ctest's
 log shows every check, not only the first that failed."""
 import argparse
 import os
 import sys
+import tempfile
 
 KIT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
@@ -46,6 +47,16 @@ def exit_code(label="", seconds=None):
 
 def finish():
     sys.exit(exit_code())
+
+
+def run_in_scratch_folder(*checks):
+    """Calls each of `checks` in turn with the path of one scratch folder, which is removed
+    afterwards, then exits as finish() does: a test's main() when all its checks write their
+    files into one folder."""
+    with tempfile.TemporaryDirectory() as scratch:
+        for each in checks:
+            each(scratch)
+    finish()
 
 
 def package_test_arguments():

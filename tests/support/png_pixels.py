@@ -1,6 +1,15 @@
-"""Pixels of 8-bit PNG files for the tests, read with the standard library alone (zlib)."""
+"""Sizes and pixels of 8-bit PNG files for the tests, read with the standard library alone (zlib)."""
 import struct
 import zlib
+
+
+def png_size(path):
+    """(width, height) of a PNG, or None when the file is not one."""
+    with open(path, "rb") as f:
+        head = f.read(24)
+    if len(head) < 24 or head[:8] != b"\x89PNG\r\n\x1a\n" or head[12:16] != b"IHDR":
+        return None
+    return struct.unpack(">II", head[16:24])
 
 
 def read_png(path):

@@ -20,26 +20,20 @@ Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
    a size that is not a number) is one line naming it and exit status 2, from the script and
    from `make sweep`, and writes nothing: no output folder, no build folder.
 """
-import argparse
-import csv
 import math
 import os
 import re
-import struct
-import subprocess
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 from checks import check, exit_code  # noqa: E402
+from png_pixels import png_size  # noqa: E402
+from script_tests import (check_make_refuses, check_script_refuses, check_succeeded,  # noqa: E402
+                          close, import_script, read_csv, run, script_test_arguments)
 
-parser = argparse.ArgumentParser()
-parser.add_argument("--build", required=True)
-parser.add_argument("--source", required=True)
-args = parser.parse_args()
-SWEEP = os.path.join(args.source, "scripts", "sweep.py")
-sys.path.insert(0, os.path.dirname(SWEEP))
-import sweep as sweep_script  # noqa: E402
+args = script_test_arguments()
+SWEEP, sweep_script = import_script(args.source, "sweep")
 
 FIGURES = ["samples_per_cpu_second", "rays_per_sample", "noise_per_sample", "efficiency", "noise",
            "cpu_seconds", "seconds", "samples_per_second", "frame_rate"]
@@ -48,32 +42,12 @@ FIGURES = ["samples_per_cpu_second", "rays_per_sample", "noise_per_sample", "eff
 ROUNDING = 3e-3
 
 
-def close(a, b, tolerance=ROUNDING):
-    return abs(a - b) <= tolerance * max(abs(a), abs(b))
-
-
-def png_size(path):
-    """(width, height) of a PNG, or None when the file is not one."""
-    with open(path, "rb") as f:
-        head = f.read(24)
-    if len(head) < 24 or head[:8] != b"\x89PNG\r\n\x1a\n" or head[12:16] != b"IHDR":
-        return None
-    return struct.unpack(">II", head[16:24])
-
-
-def run(arguments, cwd=None):
-    env = {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
-    return subprocess.run(arguments, capture_output=True, text=True, cwd=cwd, env=env)
-
-
 def check_sweep(scratch, lab, param, values, column):
     out = os.path.join(scratch, f"{lab}-{param}")
     result = run([sys.executable, SWEEP, "--build", args.build, "--lab", lab, "--param", param,
                   "--values", values, "--size", "16", "--spp", "2", "--out", out])
     name = f"sweep of {lab}'s {param} at {values}"
-    check(result.returncode == 0, f"{name}: exit 0" +
-          ("" if result.returncode == 0 else f": {result.stdout[-600:]}{result.stderr[-600:]}"))
-    if result.returncode != 0:
+    if not check_succeeded(result, name):
         return
     lines = result.stdout.splitlines()
     estimate = next((i for i, line in enumerate(lines) if re.search(r": about \d+ s$", line)),
@@ -83,8 +57,7 @@ def check_sweep(scratch, lab, param, values, column):
           f"{name}: a time estimate line before the renders")
     check(f"the figures are in {os.path.abspath(out)}/" in lines[-1],
           f"{name}: the last line names the output folder: {lines[-1]!r}")
-    with open(os.path.join(out, "sweep.csv"), newline="") as f:
-        rows = list(csv.DictReader(f))
+    rows = read_csv(os.path.join(out, "sweep.csv"))
     wanted = [float(v) for v in values.split()]
     check([float(r[column]) for r in rows] == wanted,
           f"{name}: sweep.csv has a row per value, in column {column}")
@@ -100,24 +73,23 @@ def check_sweep(scratch, lab, param, values, column):
     samples = [int(r["spp"]) * int(r["width"]) * int(r["height"]) for r in rows]
     efficiency = [(float(r["efficiency"]), 1 / (float(r["noise"]) ** 2 * float(r["cpu_seconds"])))
                   for r in rows]
-    check(all(close(a, b) for a, b in efficiency),
+    check(all(close(a, b, ROUNDING) for a, b in efficiency),
           f"{name}: efficiency is 1/(noise² × CPU seconds) {efficiency}")
     rates = [(float(r["samples_per_cpu_second"]), n / float(r["cpu_seconds"]))
              for r, n in zip(rows, samples)]
-    check(all(close(a, b) for a, b in rates),
+    check(all(close(a, b, ROUNDING) for a, b in rates),
           f"{name}: samples_per_cpu_second is the samples over cpu_seconds {rates}")
     frames = [(float(r["frame_rate"]), float(r["samples_per_second"]) / (n / int(r["spp"])))
               for r, n in zip(rows, samples)]
-    check(all(close(a, b) for a, b in frames),
+    check(all(close(a, b, ROUNDING) for a, b in frames),
           f"{name}: frame_rate is the wall clock's samples/s over the pixels {frames}")
     size = png_size(os.path.join(out, "sweep.png"))
     check(size == (sweep_script.PLOT_WIDTH, sweep_script.PLOT_HEIGHT),
           f"{name}: sweep.png is a {sweep_script.PLOT_WIDTH}x{sweep_script.PLOT_HEIGHT} PNG: {size}")
-    with open(os.path.join(out, "handout.csv"), newline="") as f:
-        handout = list(csv.DictReader(f))
+    handout = read_csv(os.path.join(out, "handout.csv"))
     parameter = sweep_script.PARAMETERS[param]
-    with open(os.path.join(sweep_script.FIGURES, parameter.handout_csv), newline="") as f:
-        theirs = [r for r in csv.DictReader(f) if r.get("lab", lab) == lab]
+    theirs = [r for r in read_csv(os.path.join(sweep_script.FIGURES, parameter.handout_csv))
+              if r.get("lab", lab) == lab]
     check(len(handout) >= 2 and len(handout) == len(theirs) and
           [float(r[column]) for r in handout] == [float(r[column]) for r in theirs],
           f"{name}: handout.csv holds the handout's {len(theirs)} rows of {lab} "
@@ -125,7 +97,7 @@ def check_sweep(scratch, lab, param, values, column):
     recomputed = [(float(r["efficiency"]), float(r["samples_per_cpu_second"]) /
                    (16 * 16 * float(r["noise_per_sample"]) ** 2)) for r in handout]
     check(all(float(r["samples_per_cpu_second"]) > 0 for r in handout) and
-          all(close(a, b) for a, b in recomputed),
+          all(close(a, b, ROUNDING) for a, b in recomputed),
           f"{name}: handout.csv has the handout's samples per CPU-second and their efficiency "
           f"at 16x16 pixels {recomputed[:2]}")
     renders = sorted(os.listdir(os.path.join(out, "renders")))
@@ -179,26 +151,12 @@ def check_bad_input(scratch):
              ("--lab importance --values 2.5", "'2.5' is not a whole number"),
              ("--size big", "SIZE=big")]
     for options, words in cases:
-        out = os.path.join(scratch, "bad")
-        result = run(["sh", "-c", f"{sys.executable} {SWEEP} --build {args.build} {options} "
-                                  f"--out {out}"])
-        lines = result.stderr.strip().splitlines()
-        check(result.returncode == 2 and len(lines) == 1 and words in lines[0] and
-              not result.stdout and not os.path.exists(out),
-              f"sweep.py {options}: exit 2, one line naming it, nothing written: "
-              f"{result.returncode} {lines}")
+        check_script_refuses(SWEEP, args.build, options, words, scratch)
     # Through make: the options are checked before anything is configured or built.
     for variables, words in [(["LAB=nolab"], "LAB=nolab"),
                              (["LAB=roulette", "VALUES=0.2 2"], "continueProb 2 is outside"),
                              (["LAB=branching", "PARAM=max-depth", "VALUES=-3"], "below 0")]:
-        build = os.path.join(scratch, "make-build")
-        result = run(["make", "--no-print-directory", "sweep", f"BUILD={build}", *variables],
-                     cwd=args.source)
-        ours = [line for line in result.stderr.splitlines() if line.startswith("make sweep:")]
-        check(result.returncode == 2 and len(ours) == 1 and words in ours[0] and
-              not os.path.exists(build),
-              f"make sweep {' '.join(variables)}: exit 2, one line naming it, nothing written: "
-              f"{result.returncode} {ours}")
+        check_make_refuses(args.source, "sweep", variables, words, scratch)
 
 
 def main():

@@ -22,12 +22,10 @@ import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "scripts"))
-from virtual_display import start_xvfb  # noqa: E402
-
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
 from checks import check, exit_code  # noqa: E402
 from png_pixels import read_png  # noqa: E402
+from window_display import virtual_display_env  # noqa: E402
 
 VIEWER, MODELS = sys.argv[1], sys.argv[2]
 SCENE = os.path.join(MODELS, "cornell_box_VI2_Specular.ecs")
@@ -100,15 +98,10 @@ def no_reference_no_curves(env, tmp):
 
 
 def main():
-    server, display = start_xvfb("800x600x24")
-    try:
-        env = dict(os.environ, DISPLAY=display)
+    with virtual_display_env() as env:
         with tempfile.TemporaryDirectory() as tmp:
             two_runs_on_one_plot(env, tmp)
             no_reference_no_curves(env, tmp)
-    finally:
-        server.terminate()
-        server.wait()
     sys.exit(exit_code())
 
 

@@ -23,11 +23,10 @@ import pty
 import re
 import subprocess
 import sys
-import tempfile
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from checks import check, exit_code  # noqa: E402
+from checks import check, run_in_scratch_folder  # noqa: E402
 
 VIEWER, MUTANTS, MODELS = sys.argv[1], sys.argv[2], sys.argv[3]
 SCENE = os.path.join(MODELS, "cornell_box_VI2_Specular.ecs")
@@ -160,13 +159,9 @@ def cpu_time_and_its_fallback(tmp):
 
 
 def main():
-    with tempfile.TemporaryDirectory() as tmp:
-        cpu_time_and_its_fallback(tmp)
-        endless_loop_is_stopped(tmp)
-        watchdog_leaves_images_alone(tmp)
-        nan_warning_comes_first(tmp)
-        progress_line_on_terminals_only(tmp)
-    sys.exit(exit_code())
+    run_in_scratch_folder(cpu_time_and_its_fallback, endless_loop_is_stopped,
+                          watchdog_leaves_images_alone, nan_warning_comes_first,
+                          progress_line_on_terminals_only)
 
 
 if __name__ == "__main__":

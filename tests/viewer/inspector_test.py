@@ -18,12 +18,10 @@ import sys
 import tempfile
 import threading
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
-from virtual_display import start_xvfb  # noqa: E402
-
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 from checks import check, exit_code  # noqa: E402
 from png_pixels import read_png  # noqa: E402
+from window_display import virtual_display_env  # noqa: E402
 
 VIEWER, MODELS = sys.argv[1], sys.argv[2]
 SCENE = os.path.join(MODELS, "cornell_box_VI2_Specular.ecs")
@@ -149,16 +147,11 @@ def inspect_stays_headless_and_bad_input(env):
 
 
 def main():
-    server, display = start_xvfb("800x600x24")
-    try:
-        env = dict(os.environ, DISPLAY=display)
+    with virtual_display_env() as env:
         clicks_inspect(env)
         with tempfile.TemporaryDirectory() as tmp:
             inspect_window_draws_paths(env, tmp)
         inspect_stays_headless_and_bad_input(env)
-    finally:
-        server.terminate()
-        server.wait()
     sys.exit(exit_code())
 
 

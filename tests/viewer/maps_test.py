@@ -33,12 +33,10 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "scripts"))
-from virtual_display import start_xvfb  # noqa: E402
-
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
 from checks import check, exit_code  # noqa: E402
 from png_pixels import read_png  # noqa: E402
+from window_display import virtual_display_env  # noqa: E402
 
 VIEWER, MODELS = sys.argv[1], sys.argv[2]
 SCENE = os.path.join(MODELS, "cornell_box_VI2_Specular.ecs")
@@ -257,9 +255,7 @@ def efficiency_map_and_fixed_range(tmp):
 
 
 def window_maps(tmp):
-    server, display = start_xvfb("800x600x24")
-    try:
-        env = dict(os.environ, DISPLAY=display)
+    with virtual_display_env() as env:
         for view in ("noise", "efficiency"):
             shot = os.path.join(tmp, f"window-{view}.png")
             run = viewer(*COMMON[:2], "--size", "640", "480", "--lab", "importance", "--solution",
@@ -292,9 +288,6 @@ def window_maps(tmp):
                 if bar:
                     break
             check(bar, f"the {view} view's panel shows a scale bar through the palette")
-    finally:
-        server.terminate()
-        server.wait()
 
 
 def main():

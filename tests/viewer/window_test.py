@@ -25,11 +25,9 @@ import sys
 import tempfile
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
-from virtual_display import start_xvfb  # noqa: E402
-
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 from checks import check, exit_code  # noqa: E402
+from window_display import virtual_display_env  # noqa: E402
 
 VIEWER, MODELS, STUCK_VIEWER = sys.argv[1], sys.argv[2], sys.argv[3]
 SCENE = os.path.join(MODELS, "cornell_box_VI2_Specular.ecs")
@@ -186,17 +184,12 @@ def no_display_is_explained():
 
 def main():
     no_display_is_explained()
-    server, display = start_xvfb("800x600x24")
-    try:
-        env = dict(os.environ, DISPLAY=display)
+    with virtual_display_env() as env:
         with tempfile.TemporaryDirectory() as tmp:
             screenshot_matches_headless(env, tmp)
             panel_stats_and_headless_agree(env, tmp)
         keys_change_what_the_viewer_reports(env)
         stuck_window_ends(env)
-    finally:
-        server.terminate()
-        server.wait()
     sys.exit(exit_code())
 
 
