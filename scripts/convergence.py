@@ -42,7 +42,6 @@ import os
 import shutil
 import subprocess
 import sys
-import tempfile
 import time
 
 import headless_viewer
@@ -67,10 +66,7 @@ LABS = [("branching", "branching (lab 1)", "branching"),
         ("roulette", "roulette, continueProb 0.8 (lab 4)", "roulette_p08")]
 
 
-class UsageError(Exception):
-    """Bad input: said in one line, exit status 2, nothing written."""
-
-
+UsageError = headless_viewer.UsageError
 RenderFailed = headless_viewer.RenderFailed
 
 
@@ -202,20 +198,16 @@ def run_study(viewer, spps, solution, out):
         raise RenderFailed("make convergence: gnuplot is needed for the plot "
                            "(scripts/install-deps.sh installs it)")
     kinds = estimates()
-    parent = os.path.dirname(os.path.abspath(out))
-    os.makedirs(parent, exist_ok=True)
-    work = tempfile.mkdtemp(prefix=f".{os.path.basename(out)}-", dir=parent)
     started = time.monotonic()
-    try:
+    with headless_viewer.output_folder(out) as work:
         renders = os.path.join(work, "renders")
-        os.makedirs(renders)
         unfinished = [] if solution else todo_labs()
         if unfinished:
             print(f"make convergence: {', '.join(unfinished)} still have PATHLAB_TODO steps; "
                   "their curves measure the labs as they are")
         print(f"make convergence: 4 labs at {' '.join(map(str, spps))} spp against the grader's "
               f"references", flush=True)
-        rows, notes = [], []
+        rows, notes = [], headless_viewer.RenderNotes()
         for lab, label, _ in LABS:
             reference, width, height = reference_image(kinds[lab])
             for spp in spps:
@@ -224,24 +216,14 @@ def run_study(viewer, spps, solution, out):
                 print(f"  {lab} {spp} spp: {stats['seconds']:.3f} s "
                       f"({stats['cpu_seconds']:.3f} s of CPU time), relative RMSE "
                       f"{stats['reference']['relative_rmse']:.4g}", flush=True)
-                # One note per render (a busy machine before a CPU figure's own).
-                note = stats.get("busy_note") or stats.get("cpu_note")
-                if note:
-                    notes.append(note)
-        if notes:
-            print(f"make convergence: {notes[0]}"
-                  + (f" (and in {len(notes) - 1} more render(s))" if len(notes) > 1 else ""))
+                notes.add(stats)
+        if notes.summary("convergence"):
+            print(notes.summary("convergence"))
         write_csv(os.path.join(work, "convergence.csv"), rows)
         theirs = handout_rows()
         if theirs:
             write_csv(os.path.join(work, "handout.csv"), theirs)
         plot(work, rows, bool(theirs), solution, (width, height))
-        if os.path.isdir(out):
-            shutil.rmtree(out)
-        os.replace(work, out)
-    finally:
-        if os.path.isdir(work):
-            shutil.rmtree(work)
     print(f"make convergence: done in {time.monotonic() - started:.0f} s; the plot is "
           f"{os.path.abspath(out)}/convergence.png (convergence.csv, "
           f"{'handout.csv, ' if theirs else ''}renders/ beside it)")
@@ -257,22 +239,10 @@ def main(argv):
     parser.add_argument("--out", help="the output folder (default BUILD/convergence)")
     parser.add_argument("--check", action="store_true", help="check the options only")
     args = parser.parse_args(argv)
-    try:
-        spps = checked_spp(args.spp)
-        if args.solution and not os.path.isdir(os.path.join(KIT, "solutions")):
-            raise UsageError("--solution: this kit has no reference solutions (solutions/)")
-    except UsageError as e:
-        print(f"make convergence: {e}", file=sys.stderr)
-        return 2
-    if args.check:
-        return 0
-    try:
-        run_study(os.path.join(args.build, "viewer"), spps, args.solution,
-                  args.out or os.path.join(args.build, "convergence"))
-    except RenderFailed as e:
-        print(f"{e}; nothing written", file=sys.stderr)
-        return 1
-    return 0
+    return headless_viewer.command_status(
+        "convergence", args, lambda: checked_spp(args.spp),
+        lambda spps: run_study(os.path.join(args.build, "viewer"), spps, args.solution,
+                               args.out or os.path.join(args.build, "convergence")))
 
 
 if __name__ == "__main__":

@@ -36,7 +36,6 @@ import os
 import shutil
 import subprocess
 import sys
-import tempfile
 import time
 
 import headless_viewer
@@ -55,8 +54,7 @@ RENDER_COLUMNS = ["noise", "spp", "cpu_seconds", "seconds", "samples_per_second"
                   "width", "height"]
 
 
-class UsageError(Exception):
-    """Bad input: said in one line, exit status 2, nothing written."""
+UsageError = headless_viewer.UsageError
 
 
 class Parameter:
@@ -237,7 +235,7 @@ def figures_row(stats, column, value):
 
 def measure(viewer, sweep, folder, report=print):
     """Renders every value into FOLDER; returns the CSV rows."""
-    rows, busy = [], []
+    rows, notes = [], headless_viewer.RenderNotes()
     for value in sweep.values:
         stats = render(viewer, sweep, value, sweep.spp, folder, f"{value:g}")
         rows.append(figures_row(stats, sweep.parameter.column, value))
@@ -247,13 +245,9 @@ def measure(viewer, sweep, folder, report=print):
                f"noise {stats['noise']:.4g}, efficiency {cpu_efficiency(stats):.3g}"
                + (f" ({stats['nonfinite_pixels']} NaN or infinite pixels left out)"
                   if stats.get("nonfinite_pixels") else ""))
-        # One note per render (a busy machine before a CPU figure's own), counted once each.
-        note = stats.get("busy_note") or stats.get("cpu_note")
-        if note:
-            busy.append(note)
-    if busy:
-        report(f"make sweep: {busy[0]}"
-               + (f" (and in {len(busy) - 1} more render(s))" if len(busy) > 1 else ""))
+        notes.add(stats)
+    if notes.summary("sweep"):
+        report(notes.summary("sweep"))
     return rows
 
 
@@ -313,12 +307,8 @@ def run_sweep(viewer, sweep, out):
     if not shutil.which("gnuplot"):
         raise RenderFailed("make sweep: gnuplot is needed for the plots "
                            "(scripts/install-deps.sh installs it)")
-    parent = os.path.dirname(os.path.abspath(out))
-    os.makedirs(parent, exist_ok=True)
-    work = tempfile.mkdtemp(prefix=f".{os.path.basename(out)}-", dir=parent)
-    try:
+    with headless_viewer.output_folder(out) as work:
         renders = os.path.join(work, "renders")
-        os.makedirs(renders)
         todo = todo_line(sweep)
         if todo:
             print(todo)
@@ -342,12 +332,6 @@ def run_sweep(viewer, sweep, out):
                   f"{sweep.parameter.label} (handouts/figures/{sweep.parameter.handout_csv}); "
                   "the plot shows yours alone")
         plot(sweep, work, bool(reference))
-        if os.path.isdir(out):
-            shutil.rmtree(out)
-        os.replace(work, out)
-    finally:
-        if os.path.isdir(work):
-            shutil.rmtree(work)
     best = max(rows, key=lambda r: float(r["efficiency"]))
     # Efficiency counts a render's own noise, not its bias: a lower maxDepth is quicker and
     # quieter, and further from the unbiased image.
@@ -374,22 +358,10 @@ def main(argv):
     parser.add_argument("--out", help="the output folder (default BUILD/sweep/LAB-PARAM)")
     parser.add_argument("--check", action="store_true", help="check the options only")
     args = parser.parse_args(argv)
-    try:
-        sweep = checked_sweep(args)
-        if sweep.solution and not os.path.isdir(os.path.join(KIT, "solutions")):
-            raise UsageError("--solution: this kit has no reference solutions (solutions/)")
-    except UsageError as e:
-        print(f"make sweep: {e}", file=sys.stderr)
-        return 2
-    if args.check:
-        return 0
-    out = args.out or os.path.join(args.build, "sweep", sweep.name())
-    try:
-        run_sweep(os.path.join(args.build, "viewer"), sweep, out)
-    except RenderFailed as e:
-        print(f"{e}; nothing written", file=sys.stderr)
-        return 1
-    return 0
+    return headless_viewer.command_status(
+        "sweep", args, lambda: checked_sweep(args),
+        lambda sweep: run_sweep(os.path.join(args.build, "viewer"), sweep,
+                                args.out or os.path.join(args.build, "sweep", sweep.name())))
 
 
 if __name__ == "__main__":

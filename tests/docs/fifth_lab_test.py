@@ -80,12 +80,14 @@ def build(kit):
 
 
 def rubric_with_fifth(kit, path):
-    """The kit's rubric, quick (one scene, 4 seeds), with lab 4's points and spp for the fifth."""
+    """The kit's rubric, quick (the furnace alone, 4 seeds), with lab 4's points and spp for the
+    fifth lab."""
     with open(os.path.join(kit, "grader", "rubric.json"), encoding="utf-8") as f:
         rubric = json.load(f)
     rubric["points"]["fifth"] = dict(rubric["points"]["roulette"])
     rubric["correctness"]["spp"]["fifth"] = rubric["correctness"]["spp"]["roulette"]
     rubric["correctness"]["scenes"] = ["furnace"]
+    rubric["speed"]["scene"] = rubric["noise"]["scene"] = "furnace"
     rubric["correctness"]["seeds"] = 4
     rubric["limits"]["seconds_per_run"] = 20
     with open(path, "w", encoding="utf-8") as f:
@@ -135,10 +137,11 @@ def check_grading(build_dir, scratch, kit):
     results = {}
     for who, viewer in (("solution", "viewer_solutions_as_student"), ("stub", "viewer")):
         report = os.path.join(scratch, who + ".json")
+        # The lab report (its notebook's figures take a minute) of the solution alone.
+        lab_report = ["--report", os.path.join(scratch, "solution.md")] if who == "solution" else []
         status, output = run(["./grader", "--viewer", viewer, "--lab", "fifth", "--no-speed",
-                              "--rubric", rubric, "--threads", "2", "--json", report,
-                              "--report", os.path.join(scratch, who + ".md")],
-                             build_dir, timeout=900)
+                              "--rubric", rubric, "--threads", "2", "--json", report] +
+                             lab_report, build_dir, timeout=900)
         results[who] = (status, output, json.load(open(report)) if os.path.exists(report) else {})
     status, output, graded = results["solution"]
     labs = graded.get("labs", [])

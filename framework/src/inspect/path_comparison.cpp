@@ -51,15 +51,14 @@ private:
                 return endedWithoutRouletteDraw(at);
             if (a.drawsBefore.size() != b.drawsBefore.size()) {
                 comparable = false;
-                return divergence(
-                    at, "draw-order", "",
-                    "at " + vertexName(at) + " your lab drew " +
-                        std::to_string(a.drawsBefore.size()) +
-                        " random number(s) before its next call where the reference "
-                        "draws " +
-                        std::to_string(b.drawsBefore.size()) +
-                        ": it uses them in another order or number, so its paths "
-                        "cannot be compared with the reference's draw by draw");
+                return divergence(at, "draw-order", "",
+                                  "at " + vertexName(at) + " your lab drew " +
+                                      std::to_string(a.drawsBefore.size()) +
+                                      " random number(s) before its next call where the reference "
+                                      "draws " +
+                                      std::to_string(b.drawsBefore.size()) +
+                                      ": it uses them in another order or number, so its paths "
+                                      "cannot be compared with the reference's draw by draw");
             }
             if (a.type == "trace") {
                 const InspectedVertex& x = ours_.vertices[static_cast<size_t>(a.vertex)];
