@@ -55,7 +55,7 @@ endif()
 # pathlab_strict_warnings(TARGET...): warnings are errors in these targets when
 # PATHLAB_WARNINGS_AS_ERRORS is on: every target compiled from PathLab's own code (the
 # framework and its image plug-in, the labs, the viewer, the grader, the benchmark, the tests),
-# none compiled from a third party's (Dear ImGui, tinyobjloader). CI's builds turn it on;
+# none compiled from a third party's (Dear ImGui). CI's builds turn it on;
 # students' builds leave it off, so a newer compiler's new warning never stops them.
 function(pathlab_strict_warnings)
     if(PATHLAB_WARNINGS_AS_ERRORS)

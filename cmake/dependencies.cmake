@@ -1,8 +1,8 @@
 # PathLab's libraries, found the way each platform provides them: CMake config packages first
 # (vcpkg, Homebrew, Debian ships most of them too), pkg-config second (Dear ImGui on Debian and
-# Ubuntu), a source folder last (Dear ImGui and tinyobjloader where no package has them).
+# Ubuntu), a source folder last (Dear ImGui where no package has it).
 # Each ends as one target the rest of the build links: embree, OpenImageIO::OpenImageIO,
-# TBB::tbb, pathlab_tinyobjloader, nlohmann_json::nlohmann_json, glfw, OpenGL::GL, pathlab_imgui,
+# TBB::tbb, nlohmann_json::nlohmann_json, glfw, OpenGL::GL, pathlab_imgui,
 # Boost::headers (Boost.Math's distributions, header-only: the grader's and the tests' p-values
 # and quantiles).
 include(${CMAKE_CURRENT_LIST_DIR}/drop_missing_include_dirs.cmake)
@@ -37,30 +37,6 @@ find_package(OpenGL REQUIRED)
 # Boost.Math's distributions (header-only): from Boost's own BoostConfig.cmake, which Debian,
 # Homebrew and vcpkg install; CMake 3.30 dropped its FindBoost module for that (policy CMP0167).
 find_package(Boost 1.71 REQUIRED CONFIG)
-
-# tinyobjloader: its package's library, or its one header compiled here. The header is the way
-# when the library was built against another C++ standard library than this build's (the clang
-# + libc++ build on Debian) or when no package has it (PATHLAB_TINYOBJLOADER_HEADER=ON).
-option(PATHLAB_TINYOBJLOADER_HEADER "Compile tinyobjloader from its header, not its library" OFF)
-if(NOT PATHLAB_TINYOBJLOADER_HEADER)
-    find_package(tinyobjloader QUIET)
-endif()
-if(tinyobjloader_FOUND)
-    add_library(pathlab_tinyobjloader INTERFACE)
-    target_link_libraries(pathlab_tinyobjloader INTERFACE tinyobjloader::tinyobjloader)
-else()
-    find_path(PATHLAB_TINYOBJLOADER_INCLUDE tiny_obj_loader.h
-              PATHS ${PROJECT_SOURCE_DIR}/third_party/tinyobjloader PATH_SUFFIXES tinyobjloader)
-    if(NOT PATHLAB_TINYOBJLOADER_INCLUDE)
-        message(FATAL_ERROR "tinyobjloader not found: install its package (apt install "
-                "libtinyobjloader-dev, vcpkg install tinyobjloader) or put tiny_obj_loader.h "
-                "in third_party/tinyobjloader/ (scripts/install-deps.sh does on macOS)")
-    endif()
-    add_library(pathlab_tinyobjloader STATIC
-                ${PROJECT_SOURCE_DIR}/cmake/tinyobjloader_implementation.cpp)
-    target_include_directories(pathlab_tinyobjloader SYSTEM PUBLIC ${PATHLAB_TINYOBJLOADER_INCLUDE})
-    set_target_properties(pathlab_tinyobjloader PROPERTIES POSITION_INDEPENDENT_CODE ON)
-endif()
 
 # Dear ImGui with its GLFW and OpenGL 2 back-ends: vcpkg's package (imgui[glfw-binding,
 # opengl2-binding]), Debian's libimgui-dev through pkg-config, or a source folder (Homebrew has

@@ -13,7 +13,6 @@ apt_packages=(
     libembree-dev embree-tools          # ray tracing; Embree's own viewer/pathtracer to compare with
     libopenimageio-dev openimageio-tools # image files
     libtbb-dev                          # threads
-    libtinyobjloader-dev                # OBJ/MTL
     nlohmann-json3-dev                  # stats and grader JSON
     libboost-math-dev                   # the grader's and the tests' distributions (Boost.Math)
     libglfw3-dev libgl-dev libimgui-dev # the window
@@ -39,11 +38,10 @@ if [ -d "$kit/solutions" ]; then
 fi
 
 # ---- macOS (Homebrew) -------------------------------------------------------------------------
-# Homebrew has no Dear ImGui and no tinyobjloader: a release of each goes in third_party/, where
-# CMake finds them (cmake/dependencies.cmake).
+# Homebrew has no Dear ImGui: a release of it goes in third_party/, where CMake finds it
+# (cmake/dependencies.cmake).
 brew_packages=(cmake ninja pkg-config python embree openimageio tbb nlohmann-json glfw catch2 boost)
 imgui_release=v1.90.9
-tinyobjloader_release=v2.0.0rc13
 
 install_with_brew() {
     local missing=()
@@ -58,11 +56,6 @@ install_with_brew() {
         echo "install-deps: Dear ImGui $imgui_release into third_party/imgui"
         git clone --quiet --depth 1 --branch "$imgui_release" \
             https://github.com/ocornut/imgui.git "$kit/third_party/imgui"
-    fi
-    if [ ! -f "$kit/third_party/tinyobjloader/tiny_obj_loader.h" ]; then
-        echo "install-deps: tinyobjloader $tinyobjloader_release into third_party/tinyobjloader"
-        git clone --quiet --depth 1 --branch "$tinyobjloader_release" \
-            https://github.com/tinyobjloader/tinyobjloader.git "$kit/third_party/tinyobjloader"
     fi
 }
 
@@ -96,7 +89,7 @@ case "$(uname -s)" in
         if ! command -v brew >/dev/null 2>&1; then
             echo "install-deps: macOS without Homebrew: install it (https://brew.sh), then run" >&2
             echo "  brew install ${brew_packages[*]}" >&2
-            echo "and make again (which puts Dear ImGui and tinyobjloader in third_party/)" >&2
+            echo "and make again (which puts Dear ImGui in third_party/)" >&2
             exit 1
         fi
         install_with_brew

@@ -18,8 +18,7 @@ What it proves, in a build folder of its own beside the kit's:
 The sanitizers ride on this build rather than a third one of the whole kit: CI's time is short,
 and a build with them is also a clang + libc++ build.
 Debian's OpenImageIO is built against libstdc++, so the image plug-in alone is built with it
-(its interface is C only, and it is sanitized like the rest); tinyobjloader is compiled from its
-header for the same reason. The configuration is CMakePresets.json's `clang-libcxx-asan`, which
+(its interface is C only, and it is sanitized like the rest). The configuration is CMakePresets.json's `clang-libcxx-asan`, which
 is `clang-libcxx` (kept for maintainers, without the sanitizers) plus PATHLAB_SANITIZE.
 
 Exits 77 (skipped, with the reason on a line starting "skipped:") when clang++ or libc++ is

@@ -1,6 +1,7 @@
 #include "pathlab/scene_io/mtl_reading.h"
 
 #include "pathlab/support/input_error.h"
+#include "pathlab/scene_io/mtl_values.h"
 #include "pathlab/scene_io/obj_number.h"
 #include "pathlab/support/parse_number.h"
 #include "pathlab/support/printable_text.h"
@@ -42,6 +43,7 @@ public:
         for (const WordLine& line : lines) readLine(line);
         finishMaterial();
         warnAboutEnergy();
+        library_.materials = values_.materials();
         return std::move(library_);
     }
 
@@ -55,8 +57,8 @@ private:
             filter_ = &line; // read when the material ends, once its d or Tr is known
         } else if (!modelled) {
             notes_.ignored(path_, ignoredIntro, std::string(key));
-            // Forwarded: tinyobjloader gives a material with map_Kd and no Kd a Kd of 0.6.
-            if (!library_.names.empty()) forward(line.text);
+            // Taken: tinyobjloader gave a material with map_Kd and no Kd a Kd of 0.6.
+            if (!library_.names.empty()) take(line, line.text);
         } else if (library_.names.empty()) {
             notes_.warning(path_, line.number, "before newmtl",
                            inQuotes(key) + " comes before any 'newmtl': ignored");
@@ -108,7 +110,7 @@ private:
         }
         library_.names.push_back(name);
         energy_.push_back({name, line.number, {}, {}, {}});
-        forward("newmtl " + tinyobjMaterialName(name));
+        values_.newMaterial();
     }
 
     /// r g b; the MTL format's "Kd r" means grey, which tinyobjloader reads as (r, 0, 0).
@@ -160,8 +162,8 @@ private:
         if (key == "Kd") m.Kd = values;
         if (key == "Ks") m.Ks = values;
         if (key == "Kt" || key == "Tf") m.Kt = values;
-        forward(rewritten ? key + " " + words[0] + " " + words[1] + " " + words[2]
-                          : std::string(line.text));
+        take(line, rewritten ? key + " " + words[0] + " " + words[1] + " " + words[2]
+                             : std::string(line.text));
     }
 
     /// A word of a colour or Ni line as a number: what is no number at all ("half") is an error
@@ -188,7 +190,7 @@ private:
         if (count == 0) {
             notes_.warning(path_, line.number, "Ni count",
                            std::string("'Ni' expects 1 number, found 0") + assumed);
-            return forward("Ni 1");
+            return take(line, "Ni 1");
         }
         const float ni = numberIn(line, line.words[1]);
         if (!(ni >= leastNi && ni <= mostNi)) {
@@ -198,7 +200,7 @@ private:
                            "'Ni' (index of refraction) " + printableText(line.words[1]) +
                                (ni > 0 ? " is not " + std::string(range) : " must be > 0") +
                                assumed);
-            return forward("Ni 1");
+            return take(line, "Ni 1");
         }
         if (count > 1)
             notes_.warning(path_, line.number, "Ni count",
@@ -206,7 +208,8 @@ private:
                                ": PathLab reads the first");
         char written[32];
         std::snprintf(written, sizeof written, "Ni %.9g", ni);
-        forward(count == 1 && parseFloat(line.words[1]) == ni ? std::string(line.text) : written);
+        take(line,
+             count == 1 && parseFloat(line.words[1]) == ni ? std::string(line.text) : written);
     }
 
     void warnAboutEnergy() {
@@ -227,14 +230,20 @@ private:
         }
     }
 
-    void forward(std::string_view line) {
-        library_.textForTinyobj.append(line);
-        library_.textForTinyobj += '\n';
+    /// Takes a line of the current material, as it is or as PathLab rewrote it.
+    void take(const WordLine& line, std::string_view text) {
+        if (!values_.line(text) && library_.refusal.empty())
+            library_.refusal = inputErrorAt(path_, line.number,
+                                            "a lone CR (an old Mac line end) starts a 'newmtl' "
+                                            "within this line: save the file with LF or CR LF "
+                                            "line ends")
+                                   .what();
     }
 
     const std::string& path_;
     InputNotes& notes_;
     MaterialLibrary library_;
+    MtlValues values_; ///< the values of each line as PathLab takes it
     std::vector<Energy> energy_;
     const WordLine* filter_ = nullptr; ///< the current material's 'Tf' line, if it has one
     bool opaque_ = false;              ///< the current material says 'd 1' or 'Tr 0'
@@ -245,22 +254,6 @@ private:
 MaterialLibrary readMaterialLibrary(const std::string& mtlPath, InputNotes& notes) {
     const std::string text = readTextFile(mtlPath, "the material file");
     return MtlReader(mtlPath, notes).read(text);
-}
-
-std::string tinyobjMaterialName(std::string_view name) {
-    if (name.empty()) return "%";
-    std::string word;
-    for (const char c : name) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte <= ' ' || byte == 0x7F || c == '%') {
-            char escaped[4];
-            std::snprintf(escaped, sizeof escaped, "%%%02X", byte);
-            word += escaped;
-        } else {
-            word += c;
-        }
-    }
-    return word;
 }
 
 } // namespace pathlab

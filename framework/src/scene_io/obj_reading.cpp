@@ -1,6 +1,7 @@
 #include "pathlab/scene_io/obj_reading.h"
 
 #include "pathlab/support/input_error.h"
+#include "pathlab/scene_io/mtl_reading.h"
 #include "pathlab/scene_io/obj_number.h"
 #include "pathlab/scene_io/polygon_triangulation.h"
 #include "pathlab/support/printable_text.h"
@@ -67,9 +68,18 @@ const char* leftOutIntro = "PathLab renders faces only; it leaves out the file's
 
 const char* unknownIntro = "PathLab ignores the OBJ keywords it does not know: ";
 
+/// The line ends in `text` as tinyobjloader counted them: LF, CR LF and a lone CR each one.
+int lineBreaks(std::string_view text) {
+    int breaks = 0;
+    for (size_t i = 0; i < text.size(); ++i)
+        breaks += text[i] == '\r' || (text[i] == '\n' && (i == 0 || text[i - 1] != '\r'));
+    return breaks;
+}
+
 class ObjReader {
 public:
-    ObjReader(const std::string& path, InputNotes& notes) : path_(path), notes_(notes) {}
+    ObjReader(const std::string& path, InputNotes& notes)
+        : path_(path), notes_(notes), geometry_(printableText(path)) {}
 
     ObjReading read(std::string_view text) {
         const std::vector<WordLine> lines = wordLines(text);
@@ -83,48 +93,60 @@ public:
             inFile.normals += key == "vn";
         }
         ElementCounts soFar;
-        size_t forwardedUpTo = 0; // lines[] are views into `text`, which is forwarded in between
+        size_t takenUpTo = 0; // the end of the line last given to geometry_
+        int tinyobjLine = 1;
         for (const WordLine& line : lines) {
-            const std::string_view key = line.words[0];
-            std::optional<std::string> replacement;
-            if (key == "v") {
-                std::vector<float> xyz;
-                replacement = readNumbers(line, 3, 7, &xyz); // x y z [w | r g b]
-                positions_.push_back({xyz[0], xyz[1], xyz[2]});
-                ++soFar.positions;
-            } else if (key == "vn") {
-                replacement = readNumbers(line, 3, 3);
-                ++soFar.normals;
-            } else if (key == "vt") {
-                replacement = readNumbers(line, 1, 3);
-                ++soFar.texcoords;
-            } else if (key == "f") {
-                replacement = readFace(line, soFar, inFile);
-            } else if (key == "usemtl") {
-                replacement = useMaterial(line);
-            } else if (key == "mtllib") {
-                replacement = materialLibraries(line);
-            } else if (leftOutObjKeys.count(key)) {
-                notes_.ignored(path_, leftOutIntro, std::string(key));
-            } else if (!quietObjKeys.count(key)) {
-                notes_.ignored(path_, unknownIntro, std::string(key));
-                replacement = ""; // not forwarded: tinyobjloader need not guess at it
-            }
-            if (!replacement) continue;
+            const std::optional<std::string> replacement = readLine(line, soFar, inFile);
+            // Each line as tinyobjloader was given it: a line rewritten where PathLab reads it
+            // otherwise, the rest as in the file.
             const size_t start = static_cast<size_t>(line.text.data() - text.data());
-            reading_.textForTinyobj.append(text.substr(forwardedUpTo, start - forwardedUpTo));
-            reading_.textForTinyobj += *replacement;
-            forwardedUpTo = start + line.text.size();
+            tinyobjLine += lineBreaks(text.substr(takenUpTo, start - takenUpTo));
+            const std::string_view taken = replacement ? *replacement : line.text;
+            geometry_.line(taken, tinyobjLine);
+            tinyobjLine += lineBreaks(taken);
+            takenUpTo = start + line.text.size();
         }
-        reading_.textForTinyobj.append(text.substr(forwardedUpTo));
+        reading_.geometry = geometry_.finish();
         warnAboutUndefinedMaterials();
         warnAboutDroppedIndices();
         return std::move(reading_);
     }
 
 private:
+    /// Reads one line: the line the geometry is to be built from where PathLab reads it
+    /// otherwise than it is written ("" for one the geometry need not see), else nothing.
+    std::optional<std::string> readLine(const WordLine& line, ElementCounts& soFar,
+                                        const ElementCounts& inFile) {
+        const std::string_view key = line.words[0];
+        if (key == "v") {
+            std::vector<float> xyz;
+            auto replacement = readNumbers(line, 3, 7, &xyz); // x y z [w | r g b]
+            positions_.push_back({xyz[0], xyz[1], xyz[2]});
+            ++soFar.positions;
+            return replacement;
+        }
+        if (key == "vn") {
+            ++soFar.normals;
+            return readNumbers(line, 3, 3);
+        }
+        if (key == "vt") {
+            ++soFar.texcoords;
+            return readNumbers(line, 1, 3);
+        }
+        if (key == "f") return readFace(line, soFar, inFile);
+        if (key == "usemtl") return useMaterial(line);
+        if (key == "mtllib") return materialLibraries(line);
+        if (leftOutObjKeys.count(key)) {
+            notes_.ignored(path_, leftOutIntro, std::string(key));
+        } else if (!quietObjKeys.count(key)) {
+            notes_.ignored(path_, unknownIntro, std::string(key));
+            return ""; // the geometry need not guess at it
+        }
+        return std::nullopt;
+    }
+
     /// Checks the count of numbers after the keyword, between `least` and `most`, and reads
-    /// each as tinyobjloader does (readObjNumber); the line as tinyobjloader must then read it
+    /// each as tinyobjloader does (readObjNumber); the line the geometry is then built from
     /// where a number was read differently from its word, else nothing.
     std::optional<std::string> readNumbers(const WordLine& line, size_t least, size_t most,
                                            std::vector<float>* values = nullptr) {
@@ -186,7 +208,7 @@ private:
 
     /// Checks a face's corners. A vertex index out of range is an error (the triangle cannot be
     /// built); a texture or normal index out of range is dropped from its corner, as
-    /// tinyobjloader reads past it with a warning: the face as tinyobjloader must then read it
+    /// tinyobjloader reads past it with a warning: the face the geometry is then built from
     /// where an index was dropped, else nothing.
     std::optional<std::string> readFace(const WordLine& line, const ElementCounts& soFar,
                                         const ElementCounts& inFile) {
@@ -287,10 +309,14 @@ private:
         }
     }
 
+    /// Selects the first material of that name among those read so far, or none. A blank line
+    /// stands for it, as tinyobjloader counted lines.
     std::string useMaterial(const WordLine& line) {
         const std::string name(line.rest);
         if (!defined_.count(name)) undefined_.push_back({line.number, name});
-        return "usemtl " + tinyobjMaterialName(name);
+        const auto material = materialIndex_.find(name);
+        geometry_.useMaterial(material == materialIndex_.end() ? -1 : material->second);
+        return "";
     }
 
     /// The files of an 'mtllib' line: its words, or the whole rest of the line where that names
@@ -307,21 +333,21 @@ private:
                            "'mtllib' without a file name: ignored");
             return "";
         }
-        std::string replacement;
+        // Blank lines stand for it: one for each library found (tinyobjloader was given an
+        // 'mtllib' line for each), one where none is.
+        size_t found = 0;
         for (const std::string& name : libraryNames(line)) {
             const std::string file = (folder() / name).lexically_normal().string();
             auto known = libraryIndex_.find(file);
             if (known == libraryIndex_.end()) {
                 known = libraryIndex_.emplace(file, readLibrary(line, name, file)).first;
             }
-            if (known->second < 0) continue;
-            replacement +=
-                (replacement.empty() ? "" : "\n") + ("mtllib " + std::to_string(known->second));
+            found += known->second >= 0;
         }
-        return replacement;
+        return std::string(found > 0 ? found - 1 : 0, '\n');
     }
 
-    /// The index of the library in reading_.libraries, or -1 for a file that is not there.
+    /// The index of the library in reading_.libraryFiles, or -1 for a file that is not there.
     int readLibrary(const WordLine& line, const std::string& name, const std::string& file) {
         if (!fs::is_regular_file(file)) {
             notes_.warning(path_, line.number, "mtllib not found",
@@ -330,13 +356,18 @@ private:
             reading_.greyFacesExplained = true;
             return -1;
         }
-        reading_.libraries.push_back(readMaterialLibrary(file, notes_));
+        const MaterialLibrary library = readMaterialLibrary(file, notes_);
+        if (!library.refusal.empty()) geometry_.refuse(library.refusal);
         reading_.libraryFiles.push_back(file);
-        for (const std::string& material : reading_.libraries.back().names) {
+        for (size_t i = 0; i < library.names.size(); ++i) {
+            const std::string& material = library.names[i];
             defined_.insert(material);
             definedAt_.emplace(material, line.number);
+            materialIndex_.emplace(material, static_cast<int>(reading_.materials.size()));
+            reading_.materials.push_back(library.materials[i]);
+            reading_.materialNames.push_back(material);
         }
-        return static_cast<int>(reading_.libraries.size()) - 1;
+        return static_cast<int>(reading_.libraryFiles.size()) - 1;
     }
 
     /// tinyobjloader looks a 'usemtl' up among the materials read so far: a material defined by
@@ -369,6 +400,8 @@ private:
     std::vector<std::pair<int, std::string>> undefined_;
     std::vector<DroppedIndex> dropped_;
     std::vector<Vec3> positions_; ///< the vertices read so far, for cutting concave faces
+    std::map<std::string, int> materialIndex_; ///< the first of each name in reading_.materials
+    ObjGeometryBuilder geometry_;
 };
 
 } // namespace
