@@ -34,7 +34,6 @@ for the reference solutions), so even a correct lab's curve sits above the hando
 slopes, and the labs' order at equal time. Bad input (spp that are not whole numbers from 1 to 65536) is one line naming
 it, exit status 2, and nothing written. Python 3 standard library and gnuplot.
 """
-import argparse
 import csv
 import json
 import math
@@ -86,15 +85,9 @@ def checked_spp(text):
 
 
 def estimates():
-    """{lab: "depth_limited" | "unbiased"}: which reference each lab converges to
-    (framework/lab_list.txt's third column)."""
-    found = {}
-    with open(os.path.join(KIT, "framework", "lab_list.txt")) as f:
-        for line in f:
-            fields = line.split()
-            if fields and not fields[0].startswith("#"):
-                found[fields[0]] = fields[2].replace("-", "_")
-    return found
+    """{lab: "depth_limited" | "unbiased"}: which reference each lab converges to."""
+    return {lab: estimate.replace("-", "_")
+            for lab, estimate in headless_viewer.lab_estimates().items()}
 
 
 def reference_image(kind):
@@ -230,14 +223,11 @@ def run_study(viewer, spps, solution, out):
 
 
 def main(argv):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--build", default="build", help="the build folder holding viewer")
+    parser = headless_viewer.command_parser(
+        __doc__.split("\n")[0], "BUILD/convergence",
+        "the reference solutions instead of labs/ (the instructor's kit)")
     parser.add_argument("--spp", default="", help="samples per pixel of the renders, apart by "
                         f"spaces (default {' '.join(map(str, DEFAULT_SPP))})")
-    parser.add_argument("--solution", action="store_true",
-                        help="the reference solutions instead of labs/ (the instructor's kit)")
-    parser.add_argument("--out", help="the output folder (default BUILD/convergence)")
-    parser.add_argument("--check", action="store_true", help="check the options only")
     args = parser.parse_args(argv)
     return headless_viewer.command_status(
         "convergence", args, lambda: checked_spp(args.spp),

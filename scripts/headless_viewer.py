@@ -2,6 +2,7 @@
 render into an image and a --stats file, the stats read back. One place for what they share: the
 TODO warnings left out of what is shown (the scripts say once which steps are unwritten), the
 other lines the viewer printed shown indented, and a failed render told with what it printed."""
+import argparse
 import contextlib
 import json
 import os
@@ -21,6 +22,18 @@ class UsageError(Exception):
 
 
 KIT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def lab_estimates():
+    """{lab: "depth-limited" | "unbiased"}: the labs the viewer's --lab takes, in the handouts'
+    order, and the image each estimates (framework/lab_list.txt's first and third columns)."""
+    labs = {}
+    with open(os.path.join(KIT, "framework", "lab_list.txt"), encoding="utf-8") as f:
+        for line in f:
+            fields = line.split()
+            if fields and not fields[0].startswith("#"):
+                labs[fields[0]] = fields[2]
+    return labs
 
 
 @contextlib.contextmanager
@@ -61,6 +74,17 @@ class RenderNotes:
         more = len(self.notes) - 1
         return f"make {command}: {self.notes[0]}" + (
             f" (and in {more} more render(s))" if more else "")
+
+
+def command_parser(description, out_default, solution_help):
+    """The options make convergence and make sweep share: --build (the folder holding viewer),
+    --solution, --out (default `out_default`) and --check; each adds its own."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--build", default="build", help="the build folder holding viewer")
+    parser.add_argument("--solution", action="store_true", help=solution_help)
+    parser.add_argument("--out", help=f"the output folder (default {out_default})")
+    parser.add_argument("--check", action="store_true", help="check the options only")
+    return parser
 
 
 def command_status(command, args, checked, run):

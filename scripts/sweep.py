@@ -29,7 +29,6 @@ BUILD/sweep/LAB-PARAM/ (printed at the end):
 Bad input (an unknown LAB or PARAM, a value out of range) is one line naming it, exit status 2,
 and nothing written. Python 3 standard library and gnuplot (scripts/install-deps.sh installs it).
 """
-import argparse
 import csv
 import math
 import os
@@ -98,17 +97,6 @@ PARAMETERS = {
 }
 
 
-def labs_and_estimates():
-    """{lab: "depth-limited" | "unbiased"}, in the handouts' order (framework/lab_list.txt)."""
-    labs = {}
-    with open(os.path.join(KIT, "framework", "lab_list.txt")) as f:
-        for line in f:
-            fields = line.split()
-            if fields and not fields[0].startswith("#"):
-                labs[fields[0]] = fields[2]
-    return labs
-
-
 class Sweep:
     """What to render: checked options."""
 
@@ -137,7 +125,7 @@ def whole_number(name, text, default, low, high):
 
 def checked_sweep(args):
     """The sweep the options ask for; UsageError for bad input."""
-    labs = labs_and_estimates()
+    labs = headless_viewer.lab_estimates()
     lab = args.lab or "roulette"
     if lab not in labs:
         raise UsageError(f"LAB={lab} is not a lab: {', '.join(labs)}")
@@ -344,19 +332,16 @@ def run_sweep(viewer, sweep, out):
 
 
 def main(argv):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--build", default="build", help="the build folder holding viewer")
-    parser.add_argument("--lab", default="", help="branching | uniform | importance | roulette "
-                                                  "(default roulette)")
+    parser = headless_viewer.command_parser(
+        __doc__.split("\n")[0], "BUILD/sweep/LAB-PARAM",
+        "the reference solution instead of labs/ (the instructor's kit)")
+    parser.add_argument("--lab", default="", help=" | ".join(headless_viewer.lab_estimates()) +
+                        " (default roulette)")
     parser.add_argument("--param", default="", help="continue-prob (lab 4) or max-depth (labs "
                                                     "1-3); default: the lab's")
     parser.add_argument("--values", default="", help="the values, apart by spaces or commas")
     parser.add_argument("--size", default="", help=f"pixels per side (default {DEFAULT_SIZE})")
     parser.add_argument("--spp", default="", help=f"samples per pixel (default {DEFAULT_SPP})")
-    parser.add_argument("--solution", action="store_true",
-                        help="the reference solution instead of labs/ (the instructor's kit)")
-    parser.add_argument("--out", help="the output folder (default BUILD/sweep/LAB-PARAM)")
-    parser.add_argument("--check", action="store_true", help="check the options only")
     args = parser.parse_args(argv)
     return headless_viewer.command_status(
         "sweep", args, lambda: checked_sweep(args),

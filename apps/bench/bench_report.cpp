@@ -378,23 +378,26 @@ json peerJson(const PeerComparison& c) {
             {"ours_max_pixel", c.oursMaxPixel}};
 }
 
+/// `figures` with "measured": true, or where they were not measured, why not.
+json measuredJson(bool measured, const std::string& note, json figures) {
+    if (!measured) return {{"measured", false}, {"note", note}};
+    figures["measured"] = true;
+    return figures;
+}
+
 json firstFrameJson(const FirstFrameLatency& f) {
-    if (!f.measured) return {{"measured", false}, {"note", f.note}};
-    return {{"measured", true},
-            {"runs", f.runs},
-            {"width", f.width},
-            {"height", f.height},
-            {"first_frame_ms", f.firstFrameMs},
-            {"first_image_ms", f.firstImageMs}};
+    return measuredJson(f.measured, f.note,
+                        {{"runs", f.runs},
+                         {"width", f.width},
+                         {"height", f.height},
+                         {"first_frame_ms", f.firstFrameMs},
+                         {"first_image_ms", f.firstImageMs}});
 }
 
 json memoryJson(const MemoryFigures& m) {
-    if (!m.measured) return {{"measured", false}, {"note", m.note}};
-    return {{"measured", true},
-            {"width", m.width},
-            {"height", m.height},
-            {"frames", m.frames},
-            {"peak_mib", m.peakMiB}};
+    return measuredJson(
+        m.measured, m.note,
+        {{"width", m.width}, {"height", m.height}, {"frames", m.frames}, {"peak_mib", m.peakMiB}});
 }
 
 } // namespace

@@ -10,17 +10,7 @@ namespace pathlab {
 
 RenderProgressLine::RenderProgressLine(const RenderProgress& progress, std::string what)
     : progress_(progress), what_(std::move(what)) {
-    if (standardErrorIsTerminal()) thread_ = std::thread([this] { draw(); });
-}
-
-RenderProgressLine::~RenderProgressLine() {
-    if (!thread_.joinable()) return;
-    {
-        const std::lock_guard<std::mutex> lock(mutex_);
-        stopping_ = true;
-    }
-    wake_.notify_all();
-    thread_.join();
+    if (standardErrorIsTerminal()) thread_.start([this] { draw(); });
 }
 
 void RenderProgressLine::draw() {
@@ -32,10 +22,9 @@ void RenderProgressLine::draw() {
         bar.update(done, total);
         return done == total; // the bar then ended its line
     };
-    std::unique_lock<std::mutex> lock(mutex_);
-    if (wake_.wait_for(lock, 500ms, [this] { return stopping_; })) return;
+    if (!thread_.sleep(500ms)) return;
     bool ended = false;
-    while (!ended && !wake_.wait_for(lock, 250ms, [this] { return stopping_; })) ended = show();
+    while (!ended && thread_.sleep(250ms)) ended = show();
     // Stopped before a full bar was drawn: the last state, and the line ended even if the pass
     // failed part way.
     if (!ended && !show()) std::fputc('\n', stderr);

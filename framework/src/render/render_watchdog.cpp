@@ -13,24 +13,14 @@ RenderWatchdog::RenderWatchdog(const RenderProgress& progress, double seconds,
                                std::function<WatchedLab()> watchedLab, bool fromStart)
     : progress_(progress), seconds_(seconds), fromStart_(fromStart),
       watchedLab_(std::move(watchedLab)) {
-    if (seconds_ > 0) thread_ = std::thread([this] { watch(); });
-}
-
-RenderWatchdog::~RenderWatchdog() {
-    if (!thread_.joinable()) return;
-    {
-        const std::lock_guard<std::mutex> lock(mutex_);
-        stopping_ = true;
-    }
-    wake_.notify_all();
-    thread_.join();
+    if (seconds_ > 0) thread_.start([this] { watch(); });
 }
 
 std::string RenderWatchdog::stuckMessage(const WatchedLab& watched, double seconds) {
     const std::string name(labName(watched.lab));
     const std::string file =
-        (watched.implementation == Implementation::Student ? "labs/" : "solutions/") + name +
-        ".cpp";
+        (watched.implementation == Implementation::Student ? "labs/" : "solutions/") +
+        labFileName(watched.lab);
     const char* limit = isDepthLimited(watched.lab) ? "its depth limit (ctx.maxDepth)"
                                                     : "its Russian roulette (ctx.continueProb)";
     char wait[32];
@@ -49,8 +39,7 @@ void RenderWatchdog::watch() {
     const auto tickDuration = std::chrono::duration<double>(tick);
     uint64_t lastCount = progress_.samplesFinished();
     double stillFor = 0;
-    std::unique_lock<std::mutex> lock(mutex_);
-    while (!wake_.wait_for(lock, tickDuration, [this] { return stopping_; })) {
+    while (thread_.sleep(tickDuration)) {
         const uint64_t count = progress_.samplesFinished();
         const bool watched = progress_.passRunning() || (fromStart_ && count == 0);
         if (count != lastCount || !watched) {

@@ -27,36 +27,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
     return text;
 }
 
-/// "Kd 0.5 0.5 0.5" with each value scaled by a factor drawn within [low, high].
-std::string scaledLine(const std::string& keyword, std::istringstream& values, double low,
-                       double high, const std::function<double()>& random) {
-    std::string line = keyword;
-    double value = 0;
-    while (values >> value) {
-        char text[32];
-        std::snprintf(text, sizeof text, " %.4g", value * (low + (high - low) * random()));
-        line += text;
-    }
-    return line;
-}
-
 } // namespace
-
-std::string variedMaterials(const std::string& mtl, const std::function<double()>& random) {
-    std::istringstream in(mtl);
-    std::string out;
-    for (std::string line; std::getline(in, line);) {
-        std::istringstream words(line);
-        std::string keyword;
-        words >> keyword;
-        if (keyword == "Kd")
-            line = scaledLine(keyword, words, 0.5, 1.0, random);
-        else if (keyword == "Ke")
-            line = scaledLine(keyword, words, 0.6, 1.3, random);
-        out += line + "\n";
-    }
-    return out;
-}
 
 namespace {
 
@@ -123,6 +94,18 @@ std::string scaledLightOptions(const std::string& ecs, double factor) {
 }
 
 } // namespace
+
+std::string variedMaterials(const std::string& mtl, const std::function<double()>& random) {
+    // Each value times a factor drawn within [low, high], one draw per value in order.
+    return withScaledNumbers(mtl, 4, [&random](const std::string& keyword, size_t count) {
+        const bool diffuse = keyword == "Kd", emission = keyword == "Ke";
+        const double low = diffuse ? 0.5 : 0.6, high = diffuse ? 1.0 : 1.3;
+        std::vector<double> factors;
+        if (diffuse || emission)
+            for (size_t k = 0; k < count; ++k) factors.push_back(low + (high - low) * random());
+        return factors;
+    });
+}
 
 std::string scaledEmission(const std::string& mtl, double factor) {
     // Every digit kept: a factor of 2^-6 must scale the light exactly.

@@ -1,6 +1,7 @@
 #include "commands/batch_jobs.h"
 
 #include "commands/submission_grading.h"
+#include "common/local_time.h"
 
 #include "pathlab/support/progress_bar.h"
 
@@ -69,12 +70,7 @@ void logJobEnd(std::ofstream& log, const Job& job, const GradebookEntry& entry, 
 
 } // namespace
 
-std::string timestamp() {
-    char text[32];
-    const std::time_t now = std::time(nullptr);
-    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S", std::localtime(&now));
-    return text;
-}
+std::string timestamp() { return localTimeNow(); }
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

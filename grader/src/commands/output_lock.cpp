@@ -1,6 +1,8 @@
 // POSIX (flock): Linux and macOS.
 #include "commands/output_lock.h"
 
+#include "common/local_time.h"
+
 #include "pathlab/support/input_error.h"
 
 #include <cerrno>
@@ -13,17 +15,6 @@
 #include <unistd.h>
 
 namespace pathlab::grader {
-
-namespace {
-
-std::string now() {
-    char text[32];
-    const std::time_t t = std::time(nullptr);
-    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S", std::localtime(&t));
-    return text;
-}
-
-} // namespace
 
 OutputLock::OutputLock(const std::string& folder, const std::string& what) {
     std::filesystem::create_directories(folder);
@@ -44,7 +35,7 @@ OutputLock::OutputLock(const std::string& folder, const std::string& what) {
                          "): wait until it ends, or write into another folder");
     }
     const std::string holder =
-        "process " + std::to_string(::getpid()) + ", started at " + now() + "\n";
+        "process " + std::to_string(::getpid()) + ", started at " + localTimeNow() + "\n";
     if (::ftruncate(fd_, 0) != 0 ||
         ::pwrite(fd_, holder.data(), holder.size(), 0) != static_cast<ssize_t>(holder.size()))
         throw InputError(path + ": cannot write the output folder's lock");

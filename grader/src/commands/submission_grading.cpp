@@ -3,6 +3,7 @@
 #include "commands/grade_lab.h"
 #include "common/content_hash.h"
 #include "reports/reports.h"
+#include "reports/submission_time.h"
 
 #include "pathlab/render/render_stats.h"
 #include "pathlab/support/whole_file.h"
@@ -132,13 +133,6 @@ std::vector<GradeReport::Attempt> earlierAttempts(const std::string& folder) {
     std::sort(attempts.begin(), attempts.end(),
               [](const auto& x, const auto& y) { return x.number < y.number; });
     return attempts;
-}
-
-std::string nowIso() {
-    char text[32];
-    const std::time_t now = std::time(nullptr);
-    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-    return text;
 }
 
 } // namespace
@@ -280,7 +274,7 @@ std::string resultJson(const SubmissionOutcome& outcome, const std::string& subm
                                 {"speed", outcome.seconds.labs.speed}}},
                               {"attempt", outcome.attempt},
                               {"how", outcome.how},
-                              {"graded_at", nowIso()},
+                              {"graded_at", isoTime(static_cast<long long>(std::time(nullptr)))},
                               {"graded_under",
                                {{"rubric_hash", outcome.rubricHash},
                                 {"measurement_hash", outcome.measurementHash},

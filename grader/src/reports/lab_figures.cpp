@@ -1,6 +1,7 @@
 #include "reports/lab_figures.h"
 
 #include "checks/run_limits.h"
+#include "common/local_time.h"
 
 #include "pathlab/images/image_noise.h"
 #include "pathlab/support/input_error.h"
@@ -32,13 +33,6 @@ std::string systemValue(const char* file, const std::string& key, char separator
         return value;
     }
     return "";
-}
-
-std::string today() {
-    char date[32];
-    const std::time_t now = std::time(nullptr);
-    std::strftime(date, sizeof date, "%Y-%m-%d", std::localtime(&now));
-    return date;
 }
 
 /// A depth-limited lab's row in the notebook, as the handouts quote it: "uniform pick (lab 2)".
@@ -102,7 +96,7 @@ Machine thisMachine(int threads) {
     m.threads = threads > 0 ? threads : m.cores;
     double load[1] = {0};
     if (::getloadavg(load, 1) == 1) m.loadAverage = load[0];
-    m.date = today();
+    m.date = localTimeNow("%Y-%m-%d");
     m.kitVersion = PATHLAB_VERSION;
     return m;
 }

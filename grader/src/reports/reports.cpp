@@ -32,29 +32,23 @@ std::string escapeXml(const std::string& text) {
     return out;
 }
 
-double GradeReport::score() const {
-    double s = 0;
-    for (const LabGrade& l : labs) s += l.score();
-    return s;
+namespace {
+
+/// The sum over the labs of one of LabGrade's counts of points.
+double sumOfLabs(const std::vector<LabGrade>& labs, double (LabGrade::*points)() const) {
+    double sum = 0;
+    for (const LabGrade& lab : labs) sum += (lab.*points)();
+    return sum;
 }
 
-double GradeReport::maxScore() const {
-    double s = 0;
-    for (const LabGrade& l : labs) s += l.maxScore();
-    return s;
-}
+} // namespace
 
+double GradeReport::score() const { return sumOfLabs(labs, &LabGrade::score); }
+double GradeReport::maxScore() const { return sumOfLabs(labs, &LabGrade::maxScore); }
 double GradeReport::pointsNotGradedHere() const {
-    double s = 0;
-    for (const LabGrade& l : labs) s += l.pointsNotGradedHere();
-    return s;
+    return sumOfLabs(labs, &LabGrade::pointsNotGradedHere);
 }
-
-double GradeReport::pointsAtRisk() const {
-    double s = 0;
-    for (const LabGrade& l : labs) s += l.pointsAtRisk();
-    return s;
-}
+double GradeReport::pointsAtRisk() const { return sumOfLabs(labs, &LabGrade::pointsAtRisk); }
 
 namespace {
 

@@ -3,11 +3,9 @@
 /// on a terminal.
 
 #include "pathlab/render/render_progress.h"
+#include "pathlab/support/ticking_thread.h"
 
-#include <condition_variable>
-#include <mutex>
 #include <string>
-#include <thread>
 
 namespace pathlab {
 
@@ -18,8 +16,7 @@ class RenderProgressLine {
 public:
     /// `what` starts the line, e.g. "render.png".
     RenderProgressLine(const RenderProgress& progress, std::string what);
-    /// Draws the last state and ends the line, if any was drawn.
-    ~RenderProgressLine();
+    /// Draws the last state and ends the line, if any was drawn (thread_'s destructor).
     RenderProgressLine(const RenderProgressLine&) = delete;
     RenderProgressLine& operator=(const RenderProgressLine&) = delete;
 
@@ -28,10 +25,7 @@ private:
 
     const RenderProgress& progress_;
     const std::string what_;
-    std::mutex mutex_;
-    std::condition_variable wake_;
-    bool stopping_ = false;
-    std::thread thread_;
+    TickingThread thread_;
 };
 
 } // namespace pathlab

@@ -4,12 +4,10 @@
 
 #include "pathlab/render/lab_registry.h"
 #include "pathlab/render/render_progress.h"
+#include "pathlab/support/ticking_thread.h"
 
-#include <condition_variable>
 #include <functional>
-#include <mutex>
 #include <string>
-#include <thread>
 
 namespace pathlab {
 
@@ -39,7 +37,6 @@ public:
     /// window idles between them).
     RenderWatchdog(const RenderProgress& progress, double seconds,
                    std::function<WatchedLab()> watchedLab, bool fromStart = false);
-    ~RenderWatchdog();
     RenderWatchdog(const RenderWatchdog&) = delete;
     RenderWatchdog& operator=(const RenderWatchdog&) = delete;
 
@@ -54,10 +51,7 @@ private:
     const double seconds_;
     const bool fromStart_;
     const std::function<WatchedLab()> watchedLab_;
-    std::mutex mutex_;
-    std::condition_variable wake_;
-    bool stopping_ = false;
-    std::thread thread_;
+    TickingThread thread_;
 };
 
 } // namespace pathlab
