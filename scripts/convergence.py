@@ -1,17 +1,17 @@
 #!/usr/bin/env python3
-"""`make convergence`: the error-versus-time plot of the student's four labs against a reference.
+"""`make convergence`: the error-versus-time plot of the student's labs against a reference.
 
 Usage: convergence.py --build BUILD [--spp "N1 N2 ..."] [--solution] [--out DIR]
        convergence.py --check [the same options]     check them, render nothing, write nothing
 
-Each of the four labs of labs/ (the viewer's default implementation; --solution for the reference
-solutions, which only the instructor's kit has) renders the VI2 Cornell box headless at each spp
-(`viewer ... --spp N -o N.exr --reference REF --stats N.json`, seed 0), and the viewer measures
-the image against the grader's stored reference of the box (grader/references/, in the student
-release too: 64x64 pixels, 40 seeds x 128 spp): labs 1-3 against the depth-limited image
-(maxDepth 3), lab 4 (continueProb 0.8, as graded) against the unbiased one, as the handout's
-plot (handouts/figures/convergence.png) measures them. Writes, into BUILD/convergence/ (printed
-at the end):
+Each lab of labs/, in framework/lab_list.txt's order (the viewer's default implementation;
+--solution for the reference solutions, which only the instructor's kit has), renders the VI2
+Cornell box headless at each spp (`viewer ... --spp N -o N.exr --reference REF --stats N.json`,
+seed 0), and the viewer measures the image against the grader's stored reference of the box
+(grader/references/, in the student release too: 64x64 pixels, 40 seeds x 128 spp): labs 1-3
+against the depth-limited image (maxDepth 3), lab 4 (continueProb 0.8, as graded) against the
+unbiased one, as the handout's plot (handouts/figures/convergence.png) measures them. Writes, into
+BUILD/convergence/ (printed at the end):
 
   convergence.csv   one row per lab and spp (the columns: COLUMNS below); cpu_seconds is the
                     render threads' CPU time (--stats), summed over them, and cpu_seconds_256
@@ -58,11 +58,15 @@ PLOT_WIDTH, PLOT_HEIGHT = 900, 640
 COLUMNS = ["lab", "label", "reference", "spp", "cpu_seconds", "cpu_seconds_256",
            "samples_per_cpu_second", "relative_rmse", "rel_mse", "noise", "seconds", "seconds_256",
            "samples_per_second"]
-# The labs in the handouts' order, their words in the plot, and the handout's row of each.
-LABS = [("branching", "branching (lab 1)", "branching"),
-        ("uniform", "uniform pick (lab 2)", "uniform"),
-        ("importance", "importance pick (lab 3)", "importance"),
-        ("roulette", "roulette, continueProb 0.8 (lab 4)", "roulette_p08")]
+# The words in the plot and the handout's row of the labs the handouts draw.
+HANDOUT_LABS = {"branching": ("branching (lab 1)", "branching"),
+                "uniform": ("uniform pick (lab 2)", "uniform"),
+                "importance": ("importance pick (lab 3)", "importance"),
+                "roulette": ("roulette, continueProb 0.8 (lab 4)", "roulette_p08")}
+# The labs of the lab list in its order, each with its words in the plot and its handout row:
+# a lab the handouts do not draw yet is "NAME (lab N)", without a handout curve.
+LABS = [(lab, *HANDOUT_LABS.get(lab, (f"{lab} (lab {number})", None)))
+        for number, lab in enumerate(headless_viewer.lab_estimates(), start=1)]
 
 
 UsageError = headless_viewer.UsageError
@@ -102,7 +106,7 @@ def render(viewer, lab, spp, solution, reference, size, folder):
     options = ["-c", SCENE, "--lab", lab, *(["--solution"] if solution else []),
                "--spp", str(spp), "--size", str(size[0]), str(size[1]), "--seed", "0",
                "--reference", reference]
-    if lab == "roulette":
+    if headless_viewer.lab_estimates()[lab] == "unbiased":  # its paths end by roulette
         options += ["--continue-prob", str(GRADED_CONTINUE_PROB)]
     return headless_viewer.render(viewer, options, image, stats,
                                   f"make convergence: the render of {lab} at {spp} spp failed")
@@ -127,7 +131,7 @@ def handout_rows():
     are already at 256x256)."""
     if not os.path.exists(HANDOUT_CSV):
         return []
-    keys = {key: (lab, label) for lab, label, key in LABS}
+    keys = {key: (lab, label) for lab, label, key in LABS if key}
     rows = []
     with open(HANDOUT_CSV, newline="") as f:
         for r in csv.DictReader(f):
@@ -198,8 +202,8 @@ def run_study(viewer, spps, solution, out):
         if unfinished:
             print(f"make convergence: {', '.join(unfinished)} still have PATHLAB_TODO steps; "
                   "their curves measure the labs as they are")
-        print(f"make convergence: 4 labs at {' '.join(map(str, spps))} spp against the grader's "
-              f"references", flush=True)
+        print(f"make convergence: {len(LABS)} labs at {' '.join(map(str, spps))} spp against "
+              "the grader's references", flush=True)
         rows, notes = [], headless_viewer.RenderNotes()
         for lab, label, _ in LABS:
             reference, width, height = reference_image(kinds[lab])
