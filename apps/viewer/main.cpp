@@ -7,6 +7,7 @@
 #include "window_options.h"
 
 #include "runner/headless_render.h"
+#include "runner/pick_test_run.h"
 #include "runner/pixel_replay.h"
 
 #include "pathlab/images/image_io.h"
@@ -169,12 +170,22 @@ void inspectPixel(const RenderOptions& options, const RenderScene& scene) {
     std::fflush(stdout);
 }
 
-/// The headless runs: -o's render, --inspect's replay, or both (render first).
+/// --pick-test: the lab's picks against its divisions; 1 when they differ.
+int testPicks(const RenderOptions& options, const RenderScene& scene) {
+    std::printf("pick test of lab %s on %dx%d pixels, %d samples each ...\n",
+                labAndImplementation(options).c_str(), PickTestGrid, PickTestGrid, PickTestSamples);
+    std::fflush(stdout);
+    const PickTestResult result = runPickTest(options, scene);
+    std::printf("%s", describePickTest(result).c_str());
+    return result.passed ? 0 : 1;
+}
+
+/// The headless runs: -o's render, --inspect's replay, --pick-test, or several (in that order).
 int runHeadless(const RenderOptions& options, const HeadlessExtras& extras) {
     const RenderScene scene(loadScene(options));
     if (!options.outputImage.empty()) renderToFile(options, extras, scene);
     if (options.inspect) inspectPixel(options, scene);
-    return 0;
+    return options.pickTest ? testPicks(options, scene) : 0;
 }
 
 } // namespace
@@ -200,7 +211,8 @@ int main(int argc, char** argv) {
         viewer::checkMapOptions(extras.maps, options, window);
         checkInspectOptions(options);
         viewer::checkInspectWindow(window, options);
-        if (!options.outputImage.empty() || (options.inspect && !window.inspectInWindow)) {
+        if (!options.outputImage.empty() || options.pickTest ||
+            (options.inspect && !window.inspectInWindow)) {
             if (!options.outputImage.empty() && !window.referenceImage.empty()) {
                 extras.referenceFile = window.referenceImage;
                 extras.reference = viewer::readReferenceOfSize(window.referenceImage, options.width,

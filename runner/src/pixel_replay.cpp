@@ -29,29 +29,26 @@ void checkInspectOptions(const RenderOptions& options) {
     if (!options.inspectOut.empty()) checkWritable(options.inspectOut);
 }
 
-namespace {
-
-PixelInspection inspect(const RenderOptions& options, const RenderScene& scene,
-                        const Camera& camera, Implementation implementation) {
+PixelInspection inspectLab(const RenderOptions& options, const RenderScene& scene,
+                           const Camera& camera, Implementation implementation, int x, int y,
+                           int samples) {
     InspectionRequest request;
     request.identity = options;
     request.identity.implementation = implementation;
-    request.x = options.inspectX;
-    request.y = options.inspectY;
-    request.samples = options.inspectSamples;
+    request.x = x;
+    request.y = y;
+    request.samples = samples;
     // A lab that never returns hangs a replay as it hangs a render: the same watchdog ends it.
     RenderProgress progress;
     request.progress = &progress;
     const WatchedLab watched{options.lab, implementation};
     const RenderWatchdog watchdog(progress, options.watchdogSeconds, [watched] { return watched; });
-    progress.passStarts(static_cast<uint64_t>(options.inspectSamples));
+    progress.passStarts(static_cast<uint64_t>(samples));
     PixelInspection inspection =
         inspectPixel(scene, camera, findPathTrace(options.lab, implementation), request);
     progress.passEnds();
     return inspection;
 }
-
-} // namespace
 
 PixelReplay replayPixel(const RenderOptions& options, const RenderScene& scene) {
     return replayPixel(options, scene,
@@ -61,9 +58,13 @@ PixelReplay replayPixel(const RenderOptions& options, const RenderScene& scene) 
 PixelReplay replayPixel(const RenderOptions& options, const RenderScene& scene,
                         const CameraSettings& cameraSettings) {
     const Camera camera(cameraSettings, options.width, options.height);
-    PixelReplay replay{inspect(options, scene, camera, options.implementation), {}, {}};
+    PixelReplay replay{inspectLab(options, scene, camera, options.implementation, options.inspectX,
+                                  options.inspectY, options.inspectSamples),
+                       {},
+                       {}};
     if (options.implementation == Implementation::Student && solution::available()) {
-        replay.reference = inspect(options, scene, camera, Implementation::Solution);
+        replay.reference = inspectLab(options, scene, camera, Implementation::Solution,
+                                      options.inspectX, options.inspectY, options.inspectSamples);
         replay.comparison = comparePaths(replay.lab, *replay.reference);
     }
     return replay;

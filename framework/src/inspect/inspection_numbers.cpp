@@ -10,4 +10,23 @@ std::string threeDigits(double value) {
     return text;
 }
 
+std::string compactColour(const Color& c) {
+    if (c.r == c.g && c.g == c.b) return threeDigits(c.r);
+    return threeDigits(c.r) + "," + threeDigits(c.g) + "," + threeDigits(c.b);
+}
+
+std::string materialText(const Material& m) {
+    std::string text;
+    const auto add = [&text](const char* name, const Color& c) {
+        if (isBlack(c)) return;
+        if (!text.empty()) text += " ";
+        text += std::string(name) + " " + compactColour(c);
+    };
+    add("Kd", m.Kd);
+    add("Ks", m.Ks);
+    add("Kt", m.Kt);
+    add("Ke", m.Ke);
+    return text.empty() ? "black" : text;
+}
+
 } // namespace pathlab

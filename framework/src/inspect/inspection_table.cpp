@@ -21,26 +21,6 @@ std::string drawNumber(float draw, float continueProb) {
     return text;
 }
 
-/// A colour as one number when it is grey, else its three channels.
-std::string colour(const Color& c) {
-    if (c.r == c.g && c.g == c.b) return threeDigits(c.r);
-    return threeDigits(c.r) + "," + threeDigits(c.g) + "," + threeDigits(c.b);
-}
-
-std::string material(const Material& m) {
-    std::string text;
-    const auto add = [&text](const char* name, const Color& c) {
-        if (isBlack(c)) return;
-        if (!text.empty()) text += " ";
-        text += std::string(name) + " " + colour(c);
-    };
-    add("Kd", m.Kd);
-    add("Ks", m.Ks);
-    add("Kt", m.Kt);
-    add("Ke", m.Ke);
-    return text.empty() ? "black" : text;
-}
-
 std::string wentOn(const InspectedVertex& v) {
     std::string text;
     for (const PathContinuation& c : v.continuedBy) {
@@ -104,8 +84,8 @@ std::string inspectionTable(const PixelInspection& inspection) {
                       "), seed " + std::to_string(inspection.identity.seed) + "\n";
     bool nonLinear = false;
     for (const InspectedSample& sample : inspection.samples) {
-        out += "sample " + std::to_string(sample.index) + ": value " + colour(sample.contribution) +
-               "\n";
+        out += "sample " + std::to_string(sample.index) + ": value " +
+               compactColour(sample.contribution) + "\n";
         for (const InspectedVertex& v : sample.vertices) nonLinear = nonLinear || !v.linear;
         appendRow(out, format, "v", "arrived by", "from", "material", "throughput", "emission +",
                   "direct +", "went on by / divided by");
@@ -116,11 +96,12 @@ std::string inspectionTable(const PixelInspection& inspection) {
                           "(left the scene)", "", "", "", "");
                 continue;
             }
-            appendRow(out, format, std::to_string(v.index), v.arrivedBy, from, material(v.material),
-                      v.throughput ? colour(*v.throughput) + (v.linear ? "" : " NOT LINEAR") : "?",
-                      colour(v.emissionAdded),
-                      v.directLightCalled ? colour(v.directLightAdded) : "not asked",
-                      wentOn(v) + depthNote(v, inspection));
+            appendRow(
+                out, format, std::to_string(v.index), v.arrivedBy, from, materialText(v.material),
+                v.throughput ? compactColour(*v.throughput) + (v.linear ? "" : " NOT LINEAR") : "?",
+                compactColour(v.emissionAdded),
+                v.directLightCalled ? compactColour(v.directLightAdded) : "not asked",
+                wentOn(v) + depthNote(v, inspection));
         }
     }
     if (nonLinear)

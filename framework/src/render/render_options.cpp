@@ -182,6 +182,7 @@ Handlers outputOptions(RenderOptions& o, OptionReader& in) {
          [&](const Token& t) { o.inspectSamples = in.positive(t, "a number of samples", 4096); }},
         {"inspect-out",
          [&](const Token& t) { o.inspectOut = in.value(t, "a .json file name").text; }},
+        {"pick-test", [&](const Token&) { o.pickTest = true; }},
         {"help", [&](const Token&) { o.help = true; }},
         {"h", [&](const Token&) { o.help = true; }},
     };
@@ -286,6 +287,9 @@ path inspector
   --inspect-samples N    how many of the pixel's samples (default 8)
   --inspect-out FILE.json
                          write them as JSON instead of printing the table
+  --pick-test            labs 2-4: replay 16 samples of each of 32x32 pixels and test, material
+                         by material, how often the lab went on by each component against the
+                         probability it divided by (chi-square); exit status 1 when they differ
 )";
 }
 

@@ -31,12 +31,12 @@ void hashRubric(const nlohmann::json& j, Rubric& r) {
 
 /// The entry of `lab` in the rubric's section `where` ("points", "correctness.spp"): a lab of
 /// the lab list the rubric does not mention (one added since it was written) is named.
-const nlohmann::json& labEntry(const nlohmann::json& section, const std::string& where, Lab lab,
+const nlohmann::json& labEntry(const nlohmann::json& section, const char* where, Lab lab,
                                const std::string& path) {
     const std::string name(labName(lab));
     if (!section.is_object() || !section.contains(name))
-        throw InputError(path + ": " + where + " has no entry for the lab \"" + name + "\" (lab " +
-                         std::to_string(labNumber(lab)) +
+        throw InputError(path + ": " + std::string(where) + " has no entry for the lab \"" + name +
+                         "\" (lab " + std::to_string(labNumber(lab)) +
                          "); the rubric needs one for every lab of the kit: " + labNames(", "));
     return section.at(name);
 }

@@ -11,6 +11,7 @@
 
 namespace pathlab {
 
+class Camera;
 class RenderScene;
 
 struct PixelReplay {
@@ -22,6 +23,12 @@ struct PixelReplay {
 /// Throws InputError, naming the option, for an --inspect the render cannot do (a pixel
 /// outside the image, --inspect-samples or --inspect-out without --inspect): before any render.
 void checkInspectOptions(const RenderOptions& options);
+
+/// Pixel (x, y)'s first `samples` samples replayed through `implementation`'s code of the
+/// options' lab, watched for an endless loop as a render is (--watchdog).
+PixelInspection inspectLab(const RenderOptions& options, const RenderScene& scene,
+                           const Camera& camera, Implementation implementation, int x, int y,
+                           int samples);
 
 PixelReplay replayPixel(const RenderOptions& options, const RenderScene& scene);
 /// The same through another camera than the scene's: the window's, once it has moved.

@@ -55,6 +55,7 @@ struct RenderOptions : RenderIdentity {
     int inspectX = 0, inspectY = 0;
     int inspectSamples = 8; ///< --inspect-samples
     std::string inspectOut; ///< --inspect-out FILE.json; empty: print the table
+    bool pickTest = false;  ///< --pick-test
 
     bool help = false; ///< --help
 };

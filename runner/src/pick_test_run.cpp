@@ -1,0 +1,29 @@
+#include "runner/pick_test_run.h"
+
+#include "runner/pixel_replay.h"
+
+#include "pathlab/render/render_scene.h"
+#include "pathlab/scene_io/camera.h"
+
+#include <algorithm>
+
+namespace pathlab {
+
+PickTestResult runPickTest(const RenderOptions& options, const RenderScene& scene) {
+    const Camera camera(scene.scene().camera.value_or(scene.scene().framingCamera()), options.width,
+                        options.height);
+    std::vector<PixelInspection> inspections;
+    const int columns = std::min(PickTestGrid, options.width);
+    const int rows = std::min(PickTestGrid, options.height);
+    for (int row = 0; row < rows; ++row)
+        for (int column = 0; column < columns; ++column) {
+            // Each grid cell's centre pixel.
+            const int x = (2 * column + 1) * options.width / (2 * columns);
+            const int y = (2 * row + 1) * options.height / (2 * rows);
+            inspections.push_back(
+                inspectLab(options, scene, camera, options.implementation, x, y, PickTestSamples));
+        }
+    return testPicks(inspections);
+}
+
+} // namespace pathlab
