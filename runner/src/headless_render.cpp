@@ -6,6 +6,7 @@
 #include "pathlab/scene_io/camera.h"
 #include "pathlab/render/render_progress_line.h"
 #include "pathlab/render/render_scene.h"
+#include "pathlab/render/lab_crash_line.h"
 #include "pathlab/render/render_watchdog.h"
 #include "pathlab/render/renderer.h"
 
@@ -30,6 +31,8 @@ HeadlessResult renderHeadless(const RenderOptions& options, const RenderScene& s
     // From the start: the lab's code is loaded below (findPathTrace), and may hang as it loads.
     const RenderWatchdog watchdog(
         renderer.progress(), options.watchdogSeconds, [watched] { return watched; }, true);
+    // A lab that crashes the render (a recursion that never ends) is named as a stuck one is.
+    const LabCrashLine crashLine(watched);
     const auto start = std::chrono::steady_clock::now();
     {
         // A render into a file (viewer -o) shows its progress; the lab tests' renders, which

@@ -8,6 +8,7 @@
 #include "pathlab/inspect/pixel_inspector.h"
 #include "pathlab/render/render_progress.h"
 #include "pathlab/render/render_scene.h"
+#include "pathlab/render/lab_crash_line.h"
 #include "pathlab/render/render_watchdog.h"
 #include "pathlab/support/whole_file.h"
 
@@ -43,6 +44,8 @@ PixelInspection inspectLab(const RenderOptions& options, const RenderScene& scen
     request.progress = &progress;
     const WatchedLab watched{options.lab, implementation};
     const RenderWatchdog watchdog(progress, options.watchdogSeconds, [watched] { return watched; });
+    // And one that crashes it (a recursion that never ends) says so as a render's does.
+    const LabCrashLine crashLine(watched);
     progress.passStarts(static_cast<uint64_t>(samples));
     PixelInspection inspection =
         inspectPixel(scene, camera, findPathTrace(options.lab, implementation), request);

@@ -40,9 +40,12 @@ ProgressiveRenderer::ProgressiveRenderer(const RenderScene& scene, int threads,
                                          std::function<void(const Frame&)> onFrame, int frameLimit,
                                          double watchdogSeconds)
     : renderer_(scene, threads), onFrame_(std::move(onFrame)), frameLimit_(frameLimit),
-      settings_(settings), watchdog_(renderer_.progress(), watchdogSeconds, [this] {
-          return WatchedLab{passLab_.load(), passImplementation_.load()};
-      }) {
+      settings_(settings),
+      watchdog_(renderer_.progress(), watchdogSeconds,
+                [this] {
+                    return WatchedLab{passLab_.load(), passImplementation_.load()};
+                }),
+      crashLine_({settings.lab, settings.implementation}) {
     thread_ = std::thread([this] {
         // A lab's broken check (pathlab/support/check.h) or any other error ends the rendering, not
         // the program: the window reports it (failure()) and closes.
@@ -188,6 +191,7 @@ std::optional<double> ProgressiveRenderer::renderPass(Accumulation& accumulation
     const Camera camera(settings.camera, settings.width, settings.height);
     passLab_ = settings.lab;
     passImplementation_ = impl;
+    LabCrashLine::running({settings.lab, impl});
     renderer_.resetCounts(); // this pass's rays and non-finite samples alone
     const auto start = std::chrono::steady_clock::now();
     const bool finished = renderer_.renderPass(

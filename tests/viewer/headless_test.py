@@ -8,6 +8,10 @@ named after its mutant. Each check prints PASS/FAIL; the script exits non-zero i
 - A lab caught in an endless loop (the mutant uniform_endless_loop) ends, with a short
   --watchdog, within a bounded time: exit status 1 and one line naming the lab's file and the
   likely cause; bad --watchdog values are refused with exit status 2.
+- A lab whose recursion never ends (the mutant branching_no_depth_limit, in a closed furnace)
+  overflows its stack at once: the process still ends by SIGSEGV, as the grader reads a crash,
+  after one line naming the lab's file and the likely cause; a null pointer (branching_crash)
+  is named alike.
 - The watchdog changes nothing in the image: a correct lab renders the same bytes with it on
   (briefly and by default) as with it off.
 - A lab that returns NaN (the mutant roulette_nan): the NaN warning comes before the render's
@@ -86,6 +90,21 @@ def endless_loop_is_stopped(tmp):
               f"--watchdog {bad} is refused with exit status 2 in one line: {run.stderr.strip()!r}")
 
 
+def crash_is_named(tmp):
+    furnace = os.path.join(MODELS, "furnace.ecs")
+    for name in ("branching_no_depth_limit", "branching_crash"):
+        for mode in (["-o", os.path.join(tmp, "crash.pfm")], ["--inspect", "8", "8"]):
+            run = subprocess.run([os.path.join(MUTANTS, name), "-c", furnace, "--lab",
+                                  "branching", "--size", "16", "16", "--spp", "1", *mode],
+                                 capture_output=True, text=True, timeout=120)
+            lines = [line for line in run.stderr.splitlines() if "crashed:" in line]
+            check(run.returncode == -11 and len(lines) == 1 and
+                  lines[0].startswith("lab 1 (branching, labs/branching.cpp) crashed: a "
+                                      "recursion that never ends"),
+                  f"{name} {mode[0]}: ends by SIGSEGV after one line naming labs/branching.cpp "
+                  f"(status {run.returncode}): {run.stderr.strip()[-300:]!r}")
+
+
 def watchdog_leaves_images_alone(tmp):
     images = {}
     for name, option in (("off", ["--watchdog", "0"]), ("short", ["--watchdog", "0.5"]),
@@ -159,7 +178,7 @@ def cpu_time_and_its_fallback(tmp):
 
 
 def main():
-    run_in_scratch_folder(cpu_time_and_its_fallback, endless_loop_is_stopped,
+    run_in_scratch_folder(cpu_time_and_its_fallback, endless_loop_is_stopped, crash_is_named,
                           watchdog_leaves_images_alone, nan_warning_comes_first,
                           progress_line_on_terminals_only)
 

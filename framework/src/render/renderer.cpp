@@ -1,5 +1,7 @@
 #include "pathlab/render/renderer.h"
 
+#include "pathlab/render/lab_crash_line.h"
+
 #include "pathlab/support/cpu_clock.h"
 
 #include "parallel_hand_off.h"
@@ -231,6 +233,7 @@ Renderer::PassCpuTime Renderer::renderTilesInParallel(PassTiles& tiles,
         tbb::parallel_for(
             tbb::blocked_range<int>(0, count, 1), [&](const tbb::blocked_range<int>& range) {
                 acquireFrom(&passStarts);
+                LabCrashLine::prepareCrashStack(); // once per thread: a lab's crash is named
                 const double cpuBefore = perThread ? threadCpuSeconds() : 0;
                 for (int tile = range.begin(); tile != range.end(); ++tile) {
                     if (cancel && cancel->load(std::memory_order_relaxed)) break;

@@ -3,6 +3,8 @@
 #include "checks/expectation.h"
 #include "checks/grading_scenes.h"
 #include "commands/submission_grading.h"
+#include "common/local_time.h"
+#include "reports/reports.h"
 
 #include "pathlab/support/input_error.h"
 
@@ -87,10 +89,15 @@ Rescore rescoreSubmission(const Rubric& rubric, bool speed, const std::string& r
     outcome.how = "re-scored from attempt " + std::to_string(rescore.fromAttempt);
     outcome.attempt = archiveAttempt(folder);
     // The log of the grading whose measurements were judged again stays beside its feedback,
-    // for the student it is handed back to, as well as in the archived attempt.
+    // for the student it is handed back to, as well as in the archived attempt; it ends with
+    // the grade of now, not the one it printed then.
     std::error_code noLog;
     fs::copy_file(folder + "/attempts/" + std::to_string(outcome.attempt - 1) + "/grader.log",
                   folder + "/grader.log", fs::copy_options::overwrite_existing, noLog);
+    std::ofstream(folder + "/grader.log", std::ios::app)
+        << "\n"
+        << localTimeNow() << " " << outcome.report.notes.back() << ". The grade now:\n\n"
+        << terminalReport(outcome.report, false);
     writeGrading(outcome, s.path, folder);
     rescore.done = true;
     rescore.after = outcome.report.score();

@@ -6,6 +6,7 @@
 #include "pathlab/render/render_identity.h"
 #include "pathlab/render/render_scene.h"
 #include "pathlab/render/render_stats.h"
+#include "pathlab/render/lab_crash_line.h"
 #include "pathlab/render/render_watchdog.h"
 #include "pathlab/render/renderer.h"
 
@@ -113,6 +114,7 @@ private:
     std::atomic<Lab> passLab_{Lab::Branching};
     std::atomic<Implementation> passImplementation_{Implementation::Student};
     RenderWatchdog watchdog_; ///< still watching while the destructor waits for the thread
+    LabCrashLine crashLine_;  ///< names the pass's lab if its code crashes the process
     std::thread thread_;
 };
 
