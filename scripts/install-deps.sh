@@ -2,10 +2,19 @@
 # Installs what PathLab needs and is not installed yet: Debian and Ubuntu packages with apt-get
 # (as root, through sudo otherwise), macOS ones with Homebrew. Elsewhere it stops and prints the
 # exact command for the system's package manager. Does nothing when everything is present.
+# With --list, prints the packages this system needs, each marked installed or missing, and
+# installs nothing.
 set -euo pipefail
 kit=$(cd "$(dirname "$0")/.." && pwd)
+list_only=
+case "${1:-}" in
+    "") ;;
+    --list) list_only=1 ;;
+    *) echo "install-deps: unknown option '$1' (--list prints the packages and installs nothing)" >&2
+       exit 2 ;;
+esac
 # Installed by other means (another distribution, vcpkg, by hand): nothing to do.
-[ -n "${PATHLAB_DEPS_INSTALLED:-}" ] && exit 0
+[ -n "${PATHLAB_DEPS_INSTALLED:-}" ] && [ -z "$list_only" ] && exit 0
 
 # ---- Debian, Ubuntu (and WSL2 with Ubuntu) ----------------------------------------------------
 apt_packages=(
@@ -48,6 +57,12 @@ install_with_brew() {
     for package in "${brew_packages[@]}"; do
         brew list --formula "$package" >/dev/null 2>&1 || missing+=("$package")
     done
+    if [ -n "$list_only" ]; then
+        for package in "${brew_packages[@]}"; do
+            case " ${missing[*]} " in *" $package "*) echo "$package missing" ;; *) echo "$package installed" ;; esac
+        done
+        return 0
+    fi
     if [ ${#missing[@]} -gt 0 ]; then
         echo "install-deps: brew install ${missing[*]}"
         brew install "${missing[@]}"
@@ -64,8 +79,12 @@ install_with_apt() {
     for package in "${apt_packages[@]}"; do
         if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
             missing+=("$package")
+            [ -n "$list_only" ] && echo "$package missing"
+        else
+            [ -n "$list_only" ] && echo "$package installed"
         fi
     done
+    [ -n "$list_only" ] && return 0
     [ ${#missing[@]} -eq 0 ] && return 0
 
     echo "install-deps: installing ${missing[*]}"

@@ -8,16 +8,18 @@
 /// which returns the radiance arriving along `ray` (from the camera, depth 0, or from a surface
 /// the path bounced off, depth > 0). It has at hand:
 ///
-///   Types      Color (linear RGB: + - * /, reduceMax, isBlack), Vec3 (+ - * /, dot, cross,
-///              length, normalize), Vec2, Ray (origin, direction: unit length, kind), RayKind
-///              (Camera, Diffuse, Specular), Hit (found, position, normal, frontFace, material,
-///              emitted), Material (Kd, Ks, Kt, Ni, Ke).
+///   Types      Color (linear RGB: + - * / += *= /=, c[i], reduceMax, average, isBlack,
+///              isFinite), Vec3 (+ - * / +=, dot, cross, length, normalize), Vec2, Ray (origin,
+///              direction: unit length, kind), RayKind (Camera, Diffuse, Specular), Hit (found,
+///              position, normal, geometricNormal, frontFace, distance, material, emitted),
+///              Material (Kd, Ks, Kt, Ni, Ke).
 ///   Tracing    ctx.trace(ray) -> Hit; ctx.directLight(hit) -> Color (next-event estimation).
 ///              A mistake these or the bounces can see (a missed hit, a direction that is not
 ///              unit length) stops the program with "labs/FILE.cpp:LINE: check failed: ...",
 ///              naming the line of your call (CallSite: the compiler fills it in).
 ///   Bounces    diffuseRay(hit, u), mirrorRay(ray, hit), refractionRay(ray, hit);
-///              sampleCosineHemisphere(normal, u) underneath diffuseRay.
+///              sampleCosineHemisphere(normal, u) underneath diffuseRay, and its density
+///              cosineHemispherePdf.
 ///   Randomness ctx.sampler.get1D() -> float in [0,1), ctx.sampler.get2D() -> Vec2.
 ///   Parameters ctx.maxDepth (default 3), ctx.continueProb (default 0.1).
 ///   Bookkeeping PATHLAB_TODO("lab1.2", depth) marks a step not written yet (and the names it
