@@ -114,6 +114,21 @@ std::string likelyCauses(const LabRun& run, const grader::FurnaceObservation& ow
                << ", where a correct lab gives " << grader::correctFurnaceValue(run.lab, model)
                << ")";
     }
+    // A lab that puts a number in ctx.maxDepth's place renders one depth whatever it is given:
+    // seen only beside a render at another depth, the kit's default (the grader's own furnaces
+    // are rendered at two depths for it).
+    const int defaultDepth = LabParameters{}.maxDepth;
+    if (isDepthLimited(run.lab) && s.maxDepth != defaultDepth) {
+        const LabRun atDefault = renderLab(run.lab, run.scene, s.width, s.spp, s.seed,
+                                           {"--max-depth", std::to_string(defaultDepth)});
+        if (atDefault.result.stats.nonfinitePixels == 0) {
+            const grader::FurnaceModel model = *furnaceModelOf(run.scene, atDefault);
+            observations.push_back(observe(model, atDefault));
+            others << " and at --max-depth " << defaultDepth << " (" << observations.back().observed
+                   << ", where a correct lab gives " << grader::correctFurnaceValue(run.lab, model)
+                   << ")";
+        }
+    }
     const std::vector<std::string> causes = grader::likelyFurnaceCauses(
         run.lab, observations, todoReported(static_cast<int>(run.lab) + 1));
     std::ostringstream text;
