@@ -228,7 +228,7 @@ def depth_sweep(viewer, p):
     the two side by side. The images, and so the noise, are the same in every round; of the
     timings, each value keeps its round of median samples per CPU-second. The rounds take turns
     over all the labs, so a change in the machine's load hits all alike."""
-    labs = [lab for lab, estimate in student_sweep.labs_and_estimates().items()
+    labs = [lab for lab, estimate in student_sweep.headless_viewer.lab_estimates().items()
             if estimate == "depth-limited"]
     rounds = {lab: [] for lab in labs}
     for turn in range(p["depth_sweep_rounds"]):

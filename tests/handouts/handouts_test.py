@@ -400,7 +400,7 @@ def check_handout_rows(source):
     """make sweep and make convergence draw the handout's figures beside a student's: they read
     handouts/figures/ by CPU time."""
     sweep = import_script(os.path.join(source, "scripts"), "sweep")
-    for lab, estimate in sweep.labs_and_estimates().items():
+    for lab, estimate in sweep.headless_viewer.lab_estimates().items():
         parameter = next(p for p in sweep.PARAMETERS.values() if p.estimate == estimate)
         rows = sweep.handout_rows(sweep.Sweep(lab, parameter, parameter.defaults,
                                               sweep.DEFAULT_SIZE, sweep.DEFAULT_SPP, False))
