@@ -102,7 +102,9 @@ def from_zip(path, candidates):
                 candidates.problems.append(f"more than {MAX_ENTRIES} members: the rest were not looked at")
                 break
             mode = member.external_attr >> 16
-            regular = not member.is_dir() and (mode == 0 or stat.S_ISREG(mode))
+            # No file type at all (a zip written by a program that stores permissions alone,
+            # as Python's writestr does) is a plain file; a link or a device has its type.
+            regular = not member.is_dir() and (stat.S_IFMT(mode) == 0 or stat.S_ISREG(mode))
 
             def read(member=member):
                 with archive.open(member) as f:
@@ -141,8 +143,12 @@ def git_dir_of(repository):
     return repository
 
 
-def read_small(path, limit=65536):
-    """A file's text, never through a link; None if there is none."""
+def read_small(path, limit=65536, inside=None):
+    """A file's text, never through a link, not even a linked folder on its way when `inside`
+    (the folder it must be in) is given; None if there is none."""
+    if inside is not None and not os.path.realpath(path).startswith(
+            os.path.realpath(inside) + os.sep):
+        return None
     try:
         with open(path, "rb", opener=lambda p, f: os.open(p, f | os.O_NOFOLLOW)) as f:
             return f.read(limit).decode("utf-8", errors="replace")
@@ -155,9 +161,10 @@ def resolve_head(git_dir):
     or packed-refs): no git command runs in the submission's repository."""
     name = "HEAD"
     for _ in range(5):
-        text = read_small(os.path.join(git_dir, name))
+        text = read_small(os.path.join(git_dir, name), inside=git_dir)
         if text is None and name.startswith("refs/"):
-            for line in (read_small(os.path.join(git_dir, "packed-refs"), 16 << 20) or "").splitlines():
+            packed = read_small(os.path.join(git_dir, "packed-refs"), 16 << 20, inside=git_dir)
+            for line in (packed or "").splitlines():
                 words = line.split()
                 if len(words) == 2 and words[1] == name:
                     text = words[0]
@@ -183,6 +190,11 @@ class GitObjects:
 
     def __init__(self, repository):
         self.git_dir = git_dir_of(repository)
+        # Its objects are read where they are: a linked folder could lead git out of it.
+        objects = os.path.join(self.git_dir, "objects")
+        if os.path.realpath(objects) != os.path.join(os.path.realpath(self.git_dir), "objects"):
+            raise ValueError("the repository's objects folder is a link: submit the repository "
+                             "itself")
         own = os.path.abspath("git-reader")
         for folder in ("objects", "refs"):
             os.makedirs(os.path.join(own, folder), exist_ok=True)

@@ -96,6 +96,15 @@ def tile_means_table():
     return ",\n    ".join(entries)
 
 
+def committed_repository(repository, labs):
+    """A git repository of the solutions' `labs`, committed."""
+    copy_labs(SOLUTIONS, repository, labs)
+    git = ["git", "-C", repository, "-c", "user.name=student", "-c", "user.email=s@example.com"]
+    subprocess.run(["git", "init", "-q", repository], check=True)
+    subprocess.run(git + ["add", *(lab + ".cpp" for lab in labs)], check=True)
+    subprocess.run(git + ["commit", "-q", "-m", "labs"], check=True)
+
+
 def smudging_repository(repository, outside):
     """A git submission whose own configuration and attributes would run code wherever git
     checks its files out: a smudge filter (whose output would become the lab file), a
@@ -125,18 +134,15 @@ def make_class(root, outside, port):
     copy_labs(SOLUTIONS, os.path.join(subs, "correct", "labs"))
     expected["correct"] = ({lab: 10 for lab in LABS}, "graded", "mean radiance matches")
     with zipfile.ZipFile(os.path.join(subs, "correct_zip.zip"), "w") as z:
-        z.write(os.path.join(SOLUTIONS, "uniform.cpp"), "uniform.cpp")
+        # writestr stores permission bits without a file type: a plain file all the same.
+        z.writestr("uniform.cpp", open(os.path.join(SOLUTIONS, "uniform.cpp")).read())
     expected["correct_zip"] = ({"uniform": 10}, "graded", "mean radiance matches")
     with tarfile.open(os.path.join(subs, "correct_tar.tar.gz"), "w:gz") as t:
         t.add(os.path.join(SOLUTIONS, "uniform.cpp"), "student7/pathlab/labs/uniform.cpp")
         t.add(os.path.join(STUBS, "uniform.cpp"), "student7/old/uniform.cpp")  # the labs/ copy wins
     expected["correct_tar"] = ({"uniform": 10}, "graded", "mean radiance matches")
     repository = os.path.join(subs, "correct_git")
-    copy_labs(SOLUTIONS, repository, ["uniform"])
-    git = ["git", "-C", repository, "-c", "user.name=student", "-c", "user.email=s@example.com"]
-    subprocess.run(["git", "init", "-q", repository], check=True)
-    subprocess.run(git + ["add", "uniform.cpp"], check=True)
-    subprocess.run(git + ["commit", "-q", "-m", "lab 2"], check=True)
+    committed_repository(repository, ["uniform"])
     write(os.path.join(repository, "uniform.cpp"), "uncommitted, and not C++\n")  # HEAD is graded
     expected["correct_git"] = ({"uniform": 10}, "graded", "mean radiance matches")
     smudging_repository(os.path.join(root, "git_smudge"), outside)
@@ -191,6 +197,8 @@ def make_class(root, outside, port):
         "seed_offset": "too noisy to judge",
         "rare_spikes": "too noisy to judge",
         "control_characters": "GRADER OK",
+        # Its forged replay is set aside: the words are its bug's, from the renders.
+        "forged_replay": "likely cause: emission after a specular bounce missing",
     }
     reasons["hanging_initializer"] = reasons["endless_loop"]
     for case, reason in reasons.items():
@@ -213,6 +221,14 @@ def make_class(root, outside, port):
         z.writestr("bomb/zeros.bin", b"\0" * (300 << 20))
         z.write(os.path.join(SOLUTIONS, "branching.cpp"), "branching.cpp")
     expected["zip_slip_and_bomb"] = ({"branching": 10}, "graded", "mean radiance matches")
+    # A repository whose refs folder is a link to / and whose HEAD names a file beyond it: the
+    # intake reads no file out of the repository's folder, and quotes none.
+    repository = os.path.join(subs, "git_refs_link")
+    committed_repository(repository, ["branching"])
+    shutil.rmtree(os.path.join(repository, ".git", "refs"))
+    os.symlink("/", os.path.join(repository, ".git", "refs"))
+    write(os.path.join(repository, ".git", "HEAD"), "ref: refs/proc/self/environ\n")
+    expected["git_refs_link"] = ({}, "no lab files found", "refs/proc/self/environ is missing")
     return subs, expected
 
 

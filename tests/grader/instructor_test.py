@@ -251,8 +251,8 @@ def main():
         check(gradebook()["alice"]["attempt"] == str(kept["attempt"]), "the gradebook's attempt column")
         # The log handed back with the feedback ends with the grade of now, not the one it printed.
         alice_log = read(os.path.join(OUT, "submissions", "alice", "grader.log"))
-        tail = alice_log.split("re-scored under the rubric of now")[-1]
-        check("re-scored under the rubric of now" in alice_log and "total 42/42" in tail
+        tail = alice_log.split("The grade now:")[-1]
+        check("The grade now:" in alice_log and "total 42/42" in tail
               and "(at most 1.2)" in tail,
               "alice's grader.log ends with the re-score and the grade of now (total 42/42, noise "
               "at most 1.2)" + ("" if "total 42/42" in tail else f"; it ends:\n{alice_log[-800:]}"))

@@ -167,7 +167,56 @@ std::string inspectionJson(const PixelInspection& lab, const PixelInspection* re
     return out.dump(1) + "\n";
 }
 
+namespace {
+
+/// What the inspector writes, and nothing else: the indices within the sample's vertices, the
+/// names among those it uses, the samples numbered in order. The grader reads a file a lab's
+/// process wrote, and its comparison indexes vertices by these numbers and quotes these names.
+void checkWritten(const PixelInspection& inspection, const std::string& source) {
+    const auto fail = [&](const std::string& what) {
+        throw InputError(source + ": not a path inspector's JSON (" + what + ")");
+    };
+    const auto oneOf = [](const std::string& name, std::initializer_list<const char*> names) {
+        for (const char* n : names)
+            if (name == n) return true;
+        return false;
+    };
+    for (size_t s = 0; s < inspection.samples.size(); ++s) {
+        const InspectedSample& sample = inspection.samples[s];
+        const int count = static_cast<int>(sample.vertices.size());
+        if (sample.index != s) fail("sample " + std::to_string(s) + " is numbered otherwise");
+        for (int i = 0; i < count; ++i) {
+            const InspectedVertex& v = sample.vertices[static_cast<size_t>(i)];
+            if (v.index != i || v.parent < -1 || v.parent >= i)
+                fail("vertex " + std::to_string(i) + "'s index or parent");
+            if (!oneOf(v.arrivedBy,
+                       {"camera", "diffuse", "mirror", "refraction", "specular", "unknown"}))
+                fail("vertex " + std::to_string(i) + " arrived by no ray the inspector names");
+            for (const PathContinuation& c : v.continuedBy)
+                if (c.child <= i || c.child >= count ||
+                    !oneOf(c.component,
+                           {"diffuse", "mirror", "refraction", "specular", "unknown"}) ||
+                    !oneOf(c.weightedBy, {"", "Kd", "Ks", "Kt"}))
+                    fail("vertex " + std::to_string(i) + "'s continuation");
+        }
+        // A trace names the vertex it found, an end none, a light either.
+        for (const InspectedCall& call : sample.calls)
+            if (call.vertex < -1 || call.vertex >= count ||
+                !oneOf(call.type, {"trace", "light", "end"}) ||
+                (call.type == "trace" && call.vertex < 0) ||
+                (call.type == "end" && call.vertex != -1))
+                fail("a call of sample " + std::to_string(s));
+    }
+}
+
+} // namespace
+
 PixelInspection readInspectionJson(const std::string& text, const std::string& source) {
+    // Far above any replay's (64 samples of a few vertices: tens of kilobytes).
+    constexpr size_t MaxBytes = 8 << 20;
+    if (text.size() > MaxBytes)
+        throw InputError(source + ": not a path inspector's JSON (" + std::to_string(text.size()) +
+                         " bytes)");
     try {
         const json j = json::parse(text);
         PixelInspection inspection;
@@ -190,6 +239,7 @@ PixelInspection readInspectionJson(const std::string& text, const std::string& s
                                         c.at("draws").get<std::vector<float>>()});
             inspection.samples.push_back(std::move(sample));
         }
+        checkWritten(inspection, source);
         return inspection;
     } catch (const json::exception& error) {
         throw InputError(source + ": not a path inspector's JSON (" + error.what() + ")");

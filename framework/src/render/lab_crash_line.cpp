@@ -54,14 +54,20 @@ void writeLines() {
 }
 
 /// Says which lab crashed, puts back the handler it replaced and returns: the faulting access
-/// runs again and meets that handler, or the default, which ends the process by the signal.
-void onCrash(int signal) {
+/// runs again and meets that handler, or the default, which ends the process by the signal. A
+/// signal some process sent (raise, kill) is no fault to name: it is sent again, to be handled
+/// as it would have been without this handler.
+void onCrash(int signal, siginfo_t* info, void*) {
+    ::sigaction(signal, signal == SIGSEGV ? &replacedSegv : &replacedBus, nullptr);
+    if (info && info->si_code <= 0) {
+        ::raise(signal); // pending until this handler returns
+        return;
+    }
     const int i = runningLine.load();
     if (i >= 0) {
         ssize_t ignored = ::write(STDERR_FILENO, lines[i], lineLengths[i]);
         (void)ignored;
     }
-    ::sigaction(signal, signal == SIGSEGV ? &replacedSegv : &replacedBus, nullptr);
 }
 
 /// A thread's alternate signal stack, given back before the thread's memory is.
@@ -86,8 +92,8 @@ LabCrashLine::LabCrashLine(const WatchedLab& lab) {
     if (installed.fetch_add(1) == 0) {
         writeLines();
         struct sigaction action {};
-        action.sa_handler = onCrash;
-        action.sa_flags = SA_ONSTACK;
+        action.sa_sigaction = onCrash;
+        action.sa_flags = SA_ONSTACK | SA_SIGINFO;
         sigemptyset(&action.sa_mask);
         ::sigaction(SIGSEGV, &action, &replacedSegv);
         ::sigaction(SIGBUS, &action, &replacedBus);

@@ -57,11 +57,18 @@ ReplayFinding replayWorstTile(const GraderSetup& setup, Lab lab, const GradingSc
     const RenderResult theirs = replayThrough(setup, setup.solution, lab, scene, pixel, seed);
     if (!theirs.ok) return {};
     try {
-        const PixelInspection lab = readInspectionJson(ours.replayJson, "your lab's replay");
+        const PixelInspection yours = readInspectionJson(ours.replayJson, "your lab's replay");
         const PixelInspection reference =
             readInspectionJson(theirs.replayJson, "the reference's replay");
-        const PathComparison comparison = comparePaths(lab, reference);
-        return {scene.name + ": " + describeComparison(comparison, lab),
+        // The lab's process wrote its file, and may have written another lab, pixel or
+        // number of samples than were asked for: such a file says nothing of this lab.
+        const auto asked = [&](const PixelInspection& replay) {
+            return replay.identity.lab == lab && replay.x == pixel.x && replay.y == pixel.y &&
+                   replay.samples.size() == static_cast<size_t>(ReplaySamples);
+        };
+        if (!asked(yours) || !asked(reference)) return {};
+        const PathComparison comparison = comparePaths(yours, reference);
+        return {scene.name + ": " + describeComparison(comparison, yours),
                 comparison.divergence.has_value()};
     } catch (const InputError&) {
         // The lab's process wrote the file: what it holds is checked, not trusted.

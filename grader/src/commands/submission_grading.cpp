@@ -6,6 +6,7 @@
 #include "reports/submission_time.h"
 
 #include "pathlab/render/render_stats.h"
+#include "pathlab/support/printable_text.h"
 #include "pathlab/support/whole_file.h"
 
 #include <nlohmann/json.hpp>
@@ -205,8 +206,10 @@ SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::str
     outcome.filesHash = labFilesHash(outcome.intake, sources);
     outcome.seconds.intake = secondsSince(start);
     GradeReport& report = outcome.report;
+    // A problem quotes the submission's own names (an archive's members): its control bytes,
+    // line ends included, are written as \xNN, so that it stays one line of the log.
     for (const std::string& problem : outcome.intake.problems)
-        report.notes.push_back("submission: " + problem);
+        report.notes.push_back("submission: " + printableText(problem));
     if (outcome.intake.taken.empty()) {
         outcome.status = "no lab files found";
         for (Lab lab : AllLabs) {

@@ -50,7 +50,8 @@ struct PickTestResult {
 /// material visited at least `minVisits` times. A vertex counts where the lab could choose: its
 /// ray found a surface with a component that is not black, below maxDepth for a depth-limited
 /// lab. Where mirror and refraction are one ray (total internal reflection), the pick is the
-/// component the material has, and the vertex is left out where it has both. What a component's rays were divided by is the median of the divisions measured.
+/// component the material has, and the vertex is left out where it has both. What a component's
+/// rays were divided by is the median of the divisions measured.
 PickTestResult testPicks(const std::vector<PixelInspection>& inspections, double alpha = 0.001,
                          int minVisits = 100);
 
