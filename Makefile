@@ -9,7 +9,7 @@ NATIVE ?= ON
 # off by default, so that a newer compiler's new warning does not stop a student's build.
 WARNINGS_AS_ERRORS ?= OFF
 
-.PHONY: run configure build test test-labs test-slow grade report sweep inspect convergence reference bench profile \
+.PHONY: run configure build test test-labs test-slow grade report sweep inspect pick-test convergence reference bench profile \
         deps clean \
         handouts handouts-html student-release gradescope
 
@@ -94,6 +94,14 @@ inspect: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target viewer
 	@cd $(BUILD) && ./viewer -c $(INSPECT_SCENE) --lab $(or $(LAB),branching) --inspect $(X) $(Y) \
 	    --inspect-samples $(or $(SAMPLES),8) $(ARGS)
+
+# The pick test of labs 2-4 (viewer --pick-test): how often the lab went on by each component at
+# each material of mixed_surfaces, against the probability it divided by; a few seconds.
+PICK_TEST_SCENE = models/mixed_surfaces.ecs
+pick-test: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target viewer
+	@cd $(BUILD) && ./viewer -c $(PICK_TEST_SCENE) --lab $(or $(LAB),importance) --size 64 64 \
+	    --continue-prob 0.8 --pick-test $(ARGS)
 
 # The error-versus-time plot of your four labs, as handouts/figures/convergence.png shows the
 # reference solutions': each lab rendered headless at increasing spp (SPP="4 16 64" for others)

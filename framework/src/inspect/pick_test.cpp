@@ -119,7 +119,10 @@ PickTestResult testPicks(const std::vector<PixelInspection>& inspections, double
         if (picks.visits >= minVisits) result.materials.push_back(std::move(picks));
     std::sort(result.materials.begin(), result.materials.end(),
               [](const MaterialPicks& a, const MaterialPicks& b) { return a.visits > b.visits; });
-    result.applies = !branches && !result.materials.empty();
+    // A lab that went on by no component (a stub) picks nothing: nothing to test.
+    const bool picked = std::any_of(result.materials.begin(), result.materials.end(),
+                                    [](const MaterialPicks& m) { return !m.components.empty(); });
+    result.applies = !branches && picked;
     if (!result.applies) return result;
     result.alphaEach = sidakAlpha(alpha, static_cast<int>(result.materials.size()));
     for (MaterialPicks& m : result.materials) {
@@ -135,19 +138,19 @@ PickTestResult testPicks(const std::vector<PixelInspection>& inspections, double
 std::string describePickTest(const PickTestResult& result) {
     if (!result.applies)
         return "pick test: nothing to test (a lab that sends a ray for every component picks "
-               "none, or no material was met " +
+               "none, as does one that goes on by none yet; or no material was met " +
                std::to_string(result.minVisits) + " times)\n";
     std::string text = "pick test: how often your lab went on by each component, against the "
                        "probability it divided by (chi-square per material; a right lab fails "
                        "with probability " +
                        threeDigits(result.alpha) + ")\n";
     for (const MaterialPicks& m : result.materials) {
-        text += "  " + m.name + ": " + std::to_string(m.visits) + " visits;";
+        text += "  " + m.name + ": " + std::to_string(m.visits) + " visits:";
         for (const ComponentPicks& c : m.components)
             text += " " + c.component + " " +
                     threeDigits(static_cast<double>(c.picked) / m.visits) + " (divided by " +
-                    threeDigits(c.claimedProbability()) + ")";
-        text += "; ended " + threeDigits(static_cast<double>(m.ended) / m.visits) +
+                    threeDigits(c.claimedProbability()) + "),";
+        text += " ended " + threeDigits(static_cast<double>(m.ended) / m.visits) +
                 "; p = " + threeDigits(m.fit.pValue) + "\n";
     }
     text += result.passed ? "passed: every material's picks follow what your lab divides by\n"

@@ -33,8 +33,9 @@ struct MaterialPicks {
 };
 
 struct PickTestResult {
-    /// False for a lab that branches (lab 1: a ray for every component, nothing picked) or where
-    /// no material was visited often enough: nothing was tested.
+    /// False for a lab that branches (lab 1: a ray for every component, nothing picked), one that
+    /// went on by no component (a stub), or where no material was visited often enough: nothing
+    /// was tested.
     bool applies = false;
     int minVisits = 0;
     double alpha = 0;     ///< the chance a right lab fails, over all the materials tested
