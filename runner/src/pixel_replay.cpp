@@ -30,27 +30,31 @@ void checkInspectOptions(const RenderOptions& options) {
     if (!options.inspectOut.empty()) checkWritable(options.inspectOut);
 }
 
-PixelInspection inspectLab(const RenderOptions& options, const RenderScene& scene,
-                           const Camera& camera, Implementation implementation, int x, int y,
-                           int samples) {
+std::vector<PixelInspection> inspectLab(const RenderOptions& options, const RenderScene& scene,
+                                        const Camera& camera, Implementation implementation,
+                                        const std::vector<ReplayedPixel>& pixels, int samples) {
     InspectionRequest request;
     request.identity = options;
     request.identity.implementation = implementation;
-    request.x = x;
-    request.y = y;
     request.samples = samples;
-    // A lab that never returns hangs a replay as it hangs a render: the same watchdog ends it.
+    // A lab that never returns hangs a replay as it hangs a render: the same watchdog ends it,
+    // one for all the pixels.
     RenderProgress progress;
     request.progress = &progress;
     const WatchedLab watched{options.lab, implementation};
     const RenderWatchdog watchdog(progress, options.watchdogSeconds, [watched] { return watched; });
     // And one that crashes it (a recursion that never ends) says so as a render's does.
     const LabCrashLine crashLine(watched);
-    progress.passStarts(static_cast<uint64_t>(samples));
-    PixelInspection inspection =
-        inspectPixel(scene, camera, findPathTrace(options.lab, implementation), request);
+    const PathTraceFunction pathTrace = findPathTrace(options.lab, implementation);
+    progress.passStarts(static_cast<uint64_t>(samples) * pixels.size());
+    std::vector<PixelInspection> inspections;
+    for (const ReplayedPixel& pixel : pixels) {
+        request.x = pixel.x;
+        request.y = pixel.y;
+        inspections.push_back(inspectPixel(scene, camera, pathTrace, request));
+    }
     progress.passEnds();
-    return inspection;
+    return inspections;
 }
 
 PixelReplay replayPixel(const RenderOptions& options, const RenderScene& scene) {
@@ -61,13 +65,16 @@ PixelReplay replayPixel(const RenderOptions& options, const RenderScene& scene) 
 PixelReplay replayPixel(const RenderOptions& options, const RenderScene& scene,
                         const CameraSettings& cameraSettings) {
     const Camera camera(cameraSettings, options.width, options.height);
-    PixelReplay replay{inspectLab(options, scene, camera, options.implementation, options.inspectX,
-                                  options.inspectY, options.inspectSamples),
-                       {},
-                       {}};
+    const std::vector<ReplayedPixel> pixel = {{options.inspectX, options.inspectY}};
+    PixelReplay replay{
+        inspectLab(options, scene, camera, options.implementation, pixel, options.inspectSamples)
+            .front(),
+        {},
+        {}};
     if (options.implementation == Implementation::Student && solution::available()) {
-        replay.reference = inspectLab(options, scene, camera, Implementation::Solution,
-                                      options.inspectX, options.inspectY, options.inspectSamples);
+        replay.reference = inspectLab(options, scene, camera, Implementation::Solution, pixel,
+                                      options.inspectSamples)
+                               .front();
         replay.comparison = comparePaths(replay.lab, *replay.reference);
     }
     return replay;

@@ -13,4 +13,8 @@ double chiSquareCritical(int dof, double alpha) {
     return quantile(complement(boost::math::chi_squared_distribution<double>(dof), alpha));
 }
 
+double chiSquareUpperTail(int dof, double statistic) {
+    return cdf(complement(boost::math::chi_squared_distribution<double>(dof), statistic));
+}
+
 } // namespace pathlab::test

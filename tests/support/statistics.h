@@ -11,4 +11,7 @@ double normalCritical(double alpha);
 /// `alpha`: P(X > value) = alpha.
 double chiSquareCritical(int dof, double alpha);
 
+/// The upper tail of a chi-square with `dof` degrees of freedom at `statistic`: P(X > statistic).
+double chiSquareUpperTail(int dof, double statistic);
+
 } // namespace pathlab::test

@@ -8,6 +8,7 @@
 #include "pathlab/render/render_options.h"
 
 #include <optional>
+#include <vector>
 
 namespace pathlab {
 
@@ -24,11 +25,15 @@ struct PixelReplay {
 /// outside the image, --inspect-samples or --inspect-out without --inspect): before any render.
 void checkInspectOptions(const RenderOptions& options);
 
-/// Pixel (x, y)'s first `samples` samples replayed through `implementation`'s code of the
-/// options' lab, watched for an endless loop as a render is (--watchdog).
-PixelInspection inspectLab(const RenderOptions& options, const RenderScene& scene,
-                           const Camera& camera, Implementation implementation, int x, int y,
-                           int samples);
+struct ReplayedPixel {
+    int x = 0, y = 0;
+};
+
+/// Each pixel's first `samples` samples replayed through `implementation`'s code of the options'
+/// lab, watched for an endless loop as a render is (--watchdog), one inspection per pixel.
+std::vector<PixelInspection> inspectLab(const RenderOptions& options, const RenderScene& scene,
+                                        const Camera& camera, Implementation implementation,
+                                        const std::vector<ReplayedPixel>& pixels, int samples);
 
 PixelReplay replayPixel(const RenderOptions& options, const RenderScene& scene);
 /// The same through another camera than the scene's: the window's, once it has moved.
