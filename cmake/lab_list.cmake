@@ -9,16 +9,18 @@ if(CMAKE_SCRIPT_MODE_FILE STREQUAL CMAKE_CURRENT_LIST_FILE)
     cmake_minimum_required(VERSION 3.18)
 endif()
 
-# pathlab_read_lab_list(FILE NAMES ENTRIES): the labs' names, in order, into NAMES, and their
-# PATHLAB_LAB(name, Enumerator, depthLimited) entries for the header into ENTRIES. A line that is
+# pathlab_read_lab_list(FILE NAMES ENTRIES LOBE_ENTRIES): the labs' names, in order, into NAMES,
+# their PATHLAB_LAB(name, Enumerator, depthLimited) entries for the header into ENTRIES, and a
+# PATHLAB_LOBE_LAB(name, Enumerator) entry into LOBE_ENTRIES for each lab that writes a lobe. A line that is
 # not a lab (a wrong number of fields, a name or enumerator that is not a C++ identifier, an
 # estimate other than depth-limited or unbiased, a lab or enumerator named twice) stops CMake
 # with the file, the line and what is wrong; so does a list without a lab.
-function(pathlab_read_lab_list file names_var entries_var)
+function(pathlab_read_lab_list file names_var entries_var lobe_entries_var)
     # As UTF-8: read as ASCII, a line is split at each other character (in a comment, say).
     file(STRINGS ${file} lines ENCODING UTF-8)
     set(names "")
     set(entries "")
+    set(lobe_entries "")
     set(number 0)
     foreach(line IN LISTS lines)
         math(EXPR number "${number} + 1")
@@ -36,9 +38,18 @@ function(pathlab_read_lab_list file names_var entries_var)
         endif()
         string(REGEX MATCHALL "[^ \t]+" fields "${line}")
         list(LENGTH fields count)
-        if(NOT count EQUAL 3)
-            message(FATAL_ERROR "${where}: ${count} field(s) where a lab has 3, "
-                                "`name Enumerator depth-limited|unbiased`: ${line}")
+        if(NOT count EQUAL 3 AND NOT count EQUAL 4)
+            message(FATAL_ERROR "${where}: ${count} field(s) where a lab has 3 or 4, "
+                                "`name Enumerator depth-limited|unbiased [lobe]`: ${line}")
+        endif()
+        set(lobe false)
+        if(count EQUAL 4)
+            list(GET fields 3 routines)
+            if(NOT routines STREQUAL "lobe")
+                message(FATAL_ERROR "${where}: the fourth field `${routines}` is not `lobe` (the "
+                                    "only routines a lab may write beside pathTrace)")
+            endif()
+            set(lobe true)
         endif()
         list(GET fields 0 name)
         list(GET fields 1 enumerator)
@@ -68,6 +79,9 @@ function(pathlab_read_lab_list file names_var entries_var)
         set(line_of_enumerator_${enumerator} ${number})
         list(APPEND names ${name})
         list(APPEND entries "PATHLAB_LAB(${name}, ${enumerator}, ${depth_limited})")
+        if(lobe)
+            list(APPEND lobe_entries "PATHLAB_LOBE_LAB(${name}, ${enumerator})")
+        endif()
     endforeach()
     if(NOT names)
         message(FATAL_ERROR "${file}: no lab in it (one line per lab: "
@@ -75,15 +89,17 @@ function(pathlab_read_lab_list file names_var entries_var)
     endif()
     set(${names_var} ${names} PARENT_SCOPE)
     set(${entries_var} ${entries} PARENT_SCOPE)
+    set(${lobe_entries_var} ${lobe_entries} PARENT_SCOPE)
 endfunction()
 
 # pathlab_lab_list(FILE HEADER NAMES): the labs of FILE, checked, their names into NAMES, and
 # HEADER written from them (lab_list.h.in beside this file), rewritten only when it changes.
 # CMake configures again when FILE changes.
 function(pathlab_lab_list file header names_var)
-    pathlab_read_lab_list(${file} names entries)
+    pathlab_read_lab_list(${file} names entries lobe_entries)
     set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${file})
     list(JOIN entries " \\\n    " PATHLAB_LAB_ENTRIES)
+    list(JOIN lobe_entries " \\\n    " PATHLAB_LOBE_LAB_ENTRIES)
     configure_file(${CMAKE_CURRENT_FUNCTION_LIST_DIR}/lab_list.h.in ${header} @ONLY)
     set(${names_var} ${names} PARENT_SCOPE)
 endfunction()
@@ -92,7 +108,7 @@ if(CMAKE_SCRIPT_MODE_FILE STREQUAL CMAKE_CURRENT_LIST_FILE)
     if(NOT PATHLAB_LAB_LIST)
         message(FATAL_ERROR "usage: cmake -DPATHLAB_LAB_LIST=FILE -P ${CMAKE_CURRENT_LIST_FILE}")
     endif()
-    pathlab_read_lab_list(${PATHLAB_LAB_LIST} names entries)
+    pathlab_read_lab_list(${PATHLAB_LAB_LIST} names entries lobe_entries)
     list(JOIN names " " names)
     message("labs: ${names}")
 endif()

@@ -364,6 +364,95 @@ def mixed_surfaces():
               "-i mixed_surfaces.obj\n-vp 0 1 -2.4\n-vi 0 1 1\n-vu 0 1 0\n-fov 45\n")
     return n
 
+
+# The glossy plates of Veach's multiple importance sampling figure (Veach 1997, fig. 9.2): Phong
+# exponents from rough to sharp, nearest the camera first, and lights from small to large, left
+# to right, each of the same power.
+PLATE_EXPONENTS = [12, 60, 300, 1500]
+PLATE_KS = (0.7, 0.7, 0.7)
+LIGHT_RADII = [0.05, 0.15, 0.4, 1.0]
+LIGHT_POWER = 0.5  # Ke times the sphere's squared radius: the same power for every light
+
+
+def normalized(v):
+    length = math.sqrt(dot(v, v))
+    return tuple(x / length for x in v)
+
+
+def veach_plates():
+    """Four glossy plates (Phong lobes of exponent PLATE_EXPONENTS, Ks 0.7, MTL illum 2 with Ns)
+    each turned so that the camera sees the row of four sphere lights reflected in it, before a
+    dark diffuse wall and over a diffuse floor. Sampling the lobe alone is noisy where a rough
+    plate reflects a small light, sampling the lights alone where a sharp plate reflects a large
+    one: labs 5 and 6's scene."""
+    mesh = Mesh()
+    camera = (0.0, 2.0, 9.0)
+    lights_centre = (0.0, 4.2, -2.5)
+    for k, exponent in enumerate(PLATE_EXPONENTS):
+        centre = (0.0, 0.3 + 0.55 * k, 2.4 - 1.1 * k)
+        to_camera = normalized(sub(camera, centre))
+        to_lights = normalized(sub(lights_centre, centre))
+        n = normalized(tuple(a + b for a, b in zip(to_camera, to_lights)))
+        across = (1.0, 0.0, 0.0)
+        along = normalized(cross(n, across))  # in the plate, away from or toward the camera
+        half_width, half_depth = 3.6, 0.42
+        corners = [tuple(c + sx * half_width * a + sy * half_depth * b
+                         for c, a, b in zip(centre, across, along))
+                   for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+        mesh.polygon(mesh.group(f"plate_{k + 1}", f"plate_{k + 1}"), corners,
+                     ("toward", tuple(c + x for c, x in zip(centre, n))))
+    for k, radius in enumerate(LIGHT_RADII):
+        centre = (-3.0 + 2.0 * k, lights_centre[1], lights_centre[2])
+        mesh.sphere(mesh.group(f"light_{k + 1}", f"light_{k + 1}"), centre, radius, 16, 8,
+                    outward=True, smooth=False)
+    mesh.polygon(mesh.group("wall", "wall"), [(-8, -1, -5), (8, -1, -5), (8, 8, -5), (-8, 8, -5)],
+                 ("toward", (0.0, 0.0, 0.0)))
+    mesh.polygon(mesh.group("floor", "floor"), [(-8, -0.5, -5), (8, -0.5, -5), (8, -0.5, 12), (-8, -0.5, 12)],
+                 ("toward", (0.0, 1.0, 0.0)))
+    check(mesh, "veach_plates")
+    n = mesh.write(os.path.join(HERE, "veach_plates.obj"), "veach_plates.mtl")
+    materials = [(f"plate_{k + 1}", [("Ks", PLATE_KS), ("Ns", float(e)), ("illum", 2.0)])
+                 for k, e in enumerate(PLATE_EXPONENTS)]
+    materials += [(f"light_{k + 1}", [("Ke", (LIGHT_POWER / r ** 2,) * 3)])
+                  for k, r in enumerate(LIGHT_RADII)]
+    materials += [("wall", [("Kd", (0.1, 0.1, 0.1))]), ("floor", [("Kd", (0.3, 0.3, 0.3))])]
+    write_mtl(os.path.join(HERE, "veach_plates.mtl"), materials)
+    write_ecs(os.path.join(HERE, "veach_plates.ecs"),
+              "Veach's glossy plates (rough to sharp) lit by four lights (small to large) of one\n"
+              "power: labs 5 and 6.",
+              "-i veach_plates.obj\n-vp 0 2 9\n-vi 0 1.4 0\n-vu 0 1 0\n-fov 40\n")
+    return n
+
+
+GLOSSY_FURNACE_KS = 0.8
+GLOSSY_FURNACE_EXPONENT = 12
+
+
+def glossy_furnace():
+    """A glossy plate (Ks k, a Phong lobe of exponent n) seen head-on inside a closed sphere that
+    emits Le = 1 and reflects nothing. Seen along its normal, the plate's lobe is about the normal
+    and reflects exactly k of the light arriving from all around (the (n + 2)/(2π) of the
+    modified Phong BRDF: handout 05), so its radiance is k·Le; the camera's field of view is 4
+    degrees, where the lobe's tilt loses less than 1e-3 of it past the horizon. Labs 5 and 6's
+    analytic check of the glossy bounce."""
+    mesh = Mesh()
+    mesh.sphere(mesh.group("enclosure", "glow"), (0.0, 0.0, 0.0), 1.0, 64, 32, outward=False, smooth=False)
+    mesh.polygon(mesh.group("plate", "plate"), [(-0.4, -0.4, 0), (0.4, -0.4, 0), (0.4, 0.4, 0), (-0.4, 0.4, 0)],
+                 ("toward", (0.0, 0.0, -1.0)))
+    check(mesh, "glossy_furnace")
+    n = mesh.write(os.path.join(HERE, "glossy_furnace.obj"), "glossy_furnace.mtl")
+    k, e = GLOSSY_FURNACE_KS, GLOSSY_FURNACE_EXPONENT
+    write_mtl(os.path.join(HERE, "glossy_furnace.mtl"), [
+        ("glow", [("Ke", (1.0, 1.0, 1.0))]),
+        ("plate", [("Ks", (k, k, k)), ("Ns", float(e)), ("illum", 2.0)]),
+    ])
+    write_ecs(os.path.join(HERE, "glossy_furnace.ecs"),
+              f"Glossy furnace: a glossy plate (Ks {k:g}, Phong exponent {e}) seen head-on inside a sphere\n"
+              f"that emits Le = 1 and reflects nothing: its radiance is Ks·Le = {k:g}.",
+              "-i glossy_furnace.obj\n-vp 0 0 -0.8\n-vi 0 0 0\n-vu 0 1 0\n-fov 4\n")
+    return n
+
+
 def main():
     counts = {
         "cornell_box_VI2_Specular": cornell_box_vi2(),
@@ -375,6 +464,8 @@ def main():
         "furnace_glass": furnace("furnace_glass", 0.5, ("glass", [("Kt", (1.0, 1.0, 1.0)), ("Ni", 1.5)])),
         "mirror_furnace": mirror_furnace(0.5),
         "mixed_surfaces": mixed_surfaces(),
+        "veach_plates": veach_plates(),
+        "glossy_furnace": glossy_furnace(),
     }
     for name, triangles in counts.items():
         print(f"{name}: {triangles} triangles")

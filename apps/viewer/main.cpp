@@ -8,6 +8,7 @@
 
 #include "runner/headless_render.h"
 #include "runner/pick_test_run.h"
+#include "runner/warp_test_run.h"
 #include "runner/pixel_replay.h"
 
 #include "pathlab/images/image_io.h"
@@ -180,6 +181,27 @@ int testPicks(const RenderOptions& options, const RenderScene& scene) {
     return result.passed ? 0 : 1;
 }
 
+/// --warp-test: the lab's sampleLobe against its lobePdf; 1 when they disagree.
+int testWarp(const RenderOptions& options) {
+    if (!options.warpImage.empty()) checkImageOutputPath(options.warpImage, "--warp-image");
+    lobeRoutinesToTest(options.lab, options.implementation);
+    std::printf("warp test of lab %s: %llu directions at each exponent ...\n",
+                labAndImplementation(options).c_str(),
+                static_cast<unsigned long long>(options.warpSamples));
+    std::fflush(stdout);
+    const LabWarpTests tests =
+        runLabWarpTests(options.lab, options.implementation, options.seed + 1, options.warpSamples,
+                        options.watchdogSeconds);
+    std::printf("%s", describeLabWarpTests(tests).c_str());
+    if (!options.warpImage.empty()) {
+        writeWarpTestImage(options.warpImage, tests);
+        std::printf("wrote %s: per exponent, the samples counted, the density's expectation, "
+                    "and their difference (blue: fewer than expected, red: more)\n",
+                    options.warpImage.c_str());
+    }
+    return tests.passed ? 0 : 1;
+}
+
 /// The headless runs: -o's render, --inspect's replay, --pick-test, or several (in that order).
 int runHeadless(const RenderOptions& options, const HeadlessExtras& extras) {
     const RenderScene scene(loadScene(options));
@@ -205,6 +227,7 @@ int main(int argc, char** argv) {
                         viewer::mapOptionsHelp());
             return 0;
         }
+        if (options.warpTest) return testWarp(options);
         if (options.objFiles.empty())
             throw InputError("no scene given: use -c FILE.ecs or -i FILE.obj (viewer --help)");
         checkOutputs(options, window);

@@ -10,11 +10,19 @@
 namespace pathlab::PATHLAB_IMPL {
 
 const LabTable& labTable() {
-    static const LabTable table = {
+    static const LabTable table = [] {
+        LabTable t;
+        t.pathTrace = {
 #define PATHLAB_LAB_PATH_TRACE(name, Enumerator, depthLimited) &name::pathTrace,
-        PATHLAB_FOR_EACH_LAB(PATHLAB_LAB_PATH_TRACE)
+            PATHLAB_FOR_EACH_LAB(PATHLAB_LAB_PATH_TRACE)
 #undef PATHLAB_LAB_PATH_TRACE
-    };
+        };
+#define PATHLAB_LAB_LOBE(name, Enumerator)                                                         \
+    t.lobe[labIndex(Lab::Enumerator)] = {&name::sampleLobe, &name::lobePdf};
+        PATHLAB_FOR_EACH_LOBE_LAB(PATHLAB_LAB_LOBE)
+#undef PATHLAB_LAB_LOBE
+        return t;
+    }();
     return table;
 }
 

@@ -23,8 +23,9 @@ from checks import LABS, check, exit_code  # noqa: E402
 # (what is wrong, the line put in after the kit's second lab, what the message says after
 # "FILE:LINE: "); {enumerator} is the kit's first lab's.
 BROKEN_LINES = [
-    ("a field missing", "fifth Fifth", "2 field(s) where a lab has 3"),
-    ("a field too many", "fifth Fifth unbiased 5", "4 field(s) where a lab has 3"),
+    ("a field missing", "fifth Fifth", "2 field(s) where a lab has 3 or 4"),
+    ("a field too many", "fifth Fifth unbiased lobe 5", "5 field(s) where a lab has 3 or 4"),
+    ("routines other than a lobe", "fifth Fifth unbiased 5", "the fourth field `5` is not `lobe`"),
     ("a name that is not an identifier", "5th Fifth unbiased", "`5th` is not a C++ identifier"),
     ("an enumerator that is not an identifier", "fifth Fifth-Lab unbiased",
      "`Fifth-Lab` is not a C++ identifier"),

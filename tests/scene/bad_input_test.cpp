@@ -5,6 +5,8 @@
 #include "catch.h"
 #include "test_support.h"
 
+#include "pathlab/render/lab_registry.h"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -82,10 +84,9 @@ TEST_CASE("nonsensical options are named", "[scene][bad-input]") {
                    "--continue-prob 1.5");
     expectRejected("a.obj", goodObj, "option --max-depth expects a depth from 0", "--max-depth -1");
     expectRejected("a.obj", goodObj, "option --size expects a width in pixels", "--size 0 8");
-    expectRejected(
-        "a.obj", goodObj,
-        "option --lab expects one of branching, uniform, importance, roulette, got 'fancy'",
-        "--lab fancy");
+    expectRejected("a.obj", goodObj,
+                   "option --lab expects one of " + pathlab::labNames(", ") + ", got 'fancy'",
+                   "--lab fancy");
     expectRejected("a.obj", goodObj, "option --threads expects", "--threads lots");
 }
 

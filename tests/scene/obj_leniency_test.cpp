@@ -393,8 +393,8 @@ TEST_CASE("keys PathLab does not model, in MTL and OBJ, and elements it does not
                                   "o thing\ng group\ns 1\nwat 1 2\nusemtl white\n"
                                   "frobnicate\nf 1 2 3\nwat 3\nl 1 2\np 3\nl 2 3\n");
     renderGrey(dir, {{"note: " + dir +
-                          "/m.mtl: PathLab models Kd, Ks, Kt/Tf, Ni and Ke; it ignores Tr, bump, "
-                          "d, illum, map_Kd, shininess\n",
+                          "/m.mtl: PathLab models Kd, Ks, Kt/Tf, Ni, Ke, and Ns with illum 2; it "
+                          "ignores Tr, bump, d, map_Kd, shininess\n",
                       "note: " + dir +
                           "/a.obj: PathLab ignores the OBJ keywords it does not know: "
                           "frobnicate, wat\n",
@@ -479,4 +479,31 @@ TEST_CASE("UTF-16 files are named as such; words of other bytes are escaped",
     CHECK(r.output.find('\x1B') == std::string::npos);
     writeFile(dir + "/s.ecs", "-i a.obj\n-fr\x1B[2Job 1\n");
     expectRejected(dir, "s.ecs:2: unknown option '-fr\\x1B[2Job'", "s.ecs");
+}
+
+TEST_CASE("Ns is Ks's glossy exponent where the material says illum 2, and a mirror's 0 otherwise",
+          "[scene][obj-leniency][solutions]") {
+    const std::string dir = test::temporaryFolder("glossy");
+    // In any order within the material; illum 3 (a ray-traced mirror) and a missing illum keep
+    // Ks a mirror; an absurd Ns is ignored with a warning.
+    writeFile(dir + "/m.mtl", "newmtl phong\nNs 40\nKs 0.5 0.5 0.5\nillum 2\n"
+                              "newmtl first\nillum 2\nKs 0.3 0.3 0.3\nNs 7.5\n"
+                              "newmtl mirror\nKs 0.5 0.5 0.5\nNs 40\nillum 3\n"
+                              "newmtl unsaid\nKs 0.5 0.5 0.5\nNs 40\n"
+                              "newmtl noexponent\nKs 0.5 0.5 0.5\nillum 2\n"
+                              "newmtl absurd\nKs 0.5 0.5 0.5\nNs -3\nillum 2\n");
+    writeFile(dir + "/a.obj", std::string("mtllib m.mtl\nusemtl phong\n") + triangle + "f 1 2 3\n");
+    const Scene scene = loadedObj(dir + "/a.obj");
+    CHECK(materialNamed(scene, "phong").Ns == 40.0f);
+    CHECK(materialNamed(scene, "first").Ns == 7.5f);
+    CHECK(materialNamed(scene, "mirror").Ns == 0.0f);
+    CHECK(materialNamed(scene, "unsaid").Ns == 0.0f);
+    CHECK(materialNamed(scene, "noexponent").Ns == 0.0f);
+    CHECK(materialNamed(scene, "absurd").Ns == 0.0f);
+    const Rendered r = render(dir);
+    INFO(r.output);
+    CHECK(r.output.find("m.mtl:21: 'Ns' (the Phong exponent) -3 is not between 0 and 1e+06: "
+                        "ignored (Ks stays a mirror)") != std::string::npos);
+    CHECK(r.output.find("m.mtl:18: material 'noexponent' says illum 2 (a Phong highlight) but "
+                        "gives no Ns > 0: its Ks is a perfect mirror") != std::string::npos);
 }

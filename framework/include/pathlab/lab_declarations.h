@@ -6,6 +6,7 @@
 #include "pathlab/lab_list.h"
 #include "pathlab/path_context.h"
 #include "pathlab/ray.h"
+#include "pathlab/vec3.h"
 
 // The build compiles the student's labs/ and the reference solutions/ into one viewer, each set
 // with its own PATHLAB_IMPL (student or solution) and each lab's name defined as that name with
@@ -22,4 +23,13 @@
     }
 PATHLAB_FOR_EACH_LAB(PATHLAB_DECLARE_PATH_TRACE)
 #undef PATHLAB_DECLARE_PATH_TRACE
+// A lab that writes a glossy lobe (lab 5) writes its sampling routine and density too: later
+// labs call them as NAME::sampleLobe and NAME::lobePdf.
+#define PATHLAB_DECLARE_LOBE(name, Enumerator)                                                     \
+    namespace pathlab::name {                                                                      \
+    Vec3 sampleLobe(Vec2 u, float exponent);                                                       \
+    float lobePdf(Vec3 direction, float exponent);                                                 \
+    }
+PATHLAB_FOR_EACH_LOBE_LAB(PATHLAB_DECLARE_LOBE)
+#undef PATHLAB_DECLARE_LOBE
 #endif

@@ -1,5 +1,5 @@
 #pragma once
-/// The three rays a surface can send on: diffuse, mirror and refracted. Each needs a found
+/// The rays a surface can send on: diffuse, mirror, refracted and glossy. Each needs a found
 /// surface; `caller` is filled in by the compiler, so that a missed hit is reported at the
 /// lab's line.
 
@@ -21,5 +21,12 @@ Ray mirrorRay(const Ray& ray, const Hit& hit, CallSite caller = {});
 /// The refraction of `ray` into (or out of) the surface at `hit`, using the material's Ni;
 /// under total internal reflection it is the mirror ray instead, so no energy is lost.
 Ray refractionRay(const Ray& ray, const Hit& hit, CallSite caller = {});
+
+/// Labs 5 and 6: the ray leaving `hit` in `lobeDirection`, a direction given in the frame of
+/// the glossy lobe (z along the mirror reflection of `ray`, as sampleLobe returns it), turned
+/// into the world. It may point below the surface, where the lobe reaches past the horizon:
+/// such a ray carries nothing (its cos θ is negative). `lobeDirection` must be a unit vector
+/// with z >= 0: a check stops the render, naming the line, when it is not.
+Ray glossyRay(const Ray& ray, const Hit& hit, Vec3 lobeDirection, CallSite caller = {});
 
 } // namespace pathlab

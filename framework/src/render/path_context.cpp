@@ -24,6 +24,7 @@ const char* rayKindName(RayKind kind) {
     case RayKind::Camera: return "camera";
     case RayKind::Diffuse: return "diffuse";
     case RayKind::Specular: return "specular";
+    case RayKind::Glossy: return "glossy";
     }
     return "unknown";
 }

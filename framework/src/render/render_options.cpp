@@ -183,6 +183,17 @@ Handlers outputOptions(RenderOptions& o, OptionReader& in) {
         {"inspect-out",
          [&](const Token& t) { o.inspectOut = in.value(t, "a .json file name").text; }},
         {"pick-test", [&](const Token&) { o.pickTest = true; }},
+        {"warp-test", [&](const Token&) { o.warpTest = true; }},
+        {"warp-image",
+         [&](const Token& t) {
+             o.warpTest = true;
+             o.warpImage = in.value(t, "a .png file name").text;
+         }},
+        {"warp-samples",
+         [&](const Token& t) {
+             o.warpSamples =
+                 static_cast<uint64_t>(in.positive(t, "a number of samples", 100000000));
+         }},
         {"help", [&](const Token&) { o.help = true; }},
         {"h", [&](const Token&) { o.help = true; }},
     };
@@ -290,6 +301,13 @@ path inspector
   --pick-test            labs 2-4: replay 16 samples of each of 32x32 pixels and test, material
                          by material, how often the lab went on by each component against the
                          probability it divided by (chi-square); exit status 1 when they differ
+warp test (lab 5; no scene needed)
+  --warp-test            draw --warp-samples directions from the lab's sampleLobe at exponents
+                         1, 12 and 60, count them over the sphere against lobePdf integrated
+                         over the same cells (chi-square; a right pair fails 1 time in 1000),
+                         and say what disagrees; exit status 1 when they do
+  --warp-image FILE.png  also draw it: observed counts, expected counts, their difference
+  --warp-samples N       directions per exponent (default 1000000)
 )";
 }
 

@@ -3,7 +3,11 @@
 #include "pathlab/support/check.h"
 #include "pathlab/cosine_hemisphere.h"
 #include "pathlab/render/ray_origin.h"
+#include "pathlab/orthonormal_basis.h"
 #include "pathlab/render/specular.h"
+
+#include <cmath>
+#include <cstdio>
 
 namespace pathlab {
 
@@ -15,6 +19,12 @@ void checkFound(const Hit& hit, const char* bounce, CallSite caller) {
                          std::string(bounce) +
                              " needs a surface: bounce only after `if (!hit)` has returned "
                              "for a ray that left the scene");
+}
+
+std::string vectorText(const Vec3& v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.6g, %.6g, %.6g)", v.x, v.y, v.z);
+    return text;
 }
 
 } // namespace
@@ -39,6 +49,21 @@ Ray refractionRay(const Ray& ray, const Hit& hit, CallSite caller) {
     const std::optional<Vec3> transmitted = refract(ray.direction, hit.normal, eta);
     if (!transmitted) return mirrorRay(ray, hit, caller);
     return {offsetRayOrigin(hit, *transmitted), *transmitted, RayKind::Specular};
+}
+
+Ray glossyRay(const Ray& ray, const Hit& hit, Vec3 lobeDirection, CallSite caller) {
+    checkFound(hit, "glossyRay(ray, hit, d)", caller);
+    const float length = std::sqrt(dot(lobeDirection, lobeDirection));
+    PATHLAB_CHECK_CALLER(std::fabs(length - 1.0f) < 1e-3f, caller,
+                         "glossyRay's d = " + vectorText(lobeDirection) +
+                             " is not a direction (unit length): sampleLobe must return one");
+    PATHLAB_CHECK_CALLER(lobeDirection.z >= 0.0f, caller,
+                         "glossyRay's d = " + vectorText(lobeDirection) +
+                             " points away from the lobe's axis (z < 0): sampleLobe's directions "
+                             "have z = cos α >= 0");
+    const Vec3 mirror = normalize(reflect(ray.direction, hit.normal));
+    const Vec3 direction = normalize(OrthonormalBasis(mirror).toWorld(lobeDirection));
+    return {offsetRayOrigin(hit, direction), direction, RayKind::Glossy};
 }
 
 } // namespace pathlab

@@ -19,7 +19,11 @@ namespace {
 
 const std::set<std::string_view> colourKeys = {"Kd", "Ks", "Kt", "Tf", "Ke"};
 
-const char* ignoredIntro = "PathLab models Kd, Ks, Kt/Tf, Ni and Ke; it ignores ";
+const char* ignoredIntro = "PathLab models Kd, Ks, Kt/Tf, Ni, Ke, and Ns with illum 2; it ignores ";
+
+// A Phong exponent beyond this is a mirror in all but name (its lobe is narrower than a
+// hundredth of a degree), and float's cosⁿ underflows for most directions in it.
+constexpr float mostNs = 1.0e6f;
 
 // Outside this, an index of refraction is an exporter's placeholder (Ni 0, Ni 0.001) or a typo:
 // glass is 1.5, diamond 2.4, nothing a scene holds beyond 4.
@@ -44,6 +48,8 @@ public:
         finishMaterial();
         warnAboutEnergy();
         library_.materials = values_.materials();
+        for (size_t i = 0; i < std::min(library_.materials.size(), glossyExponents_.size()); ++i)
+            library_.materials[i].Ns = glossyExponents_[i];
         return std::move(library_);
     }
 
@@ -51,7 +57,7 @@ private:
     void readLine(const WordLine& line) {
         const std::string_view key = line.words[0];
         if (key == "newmtl") return newMaterial(line);
-        const bool modelled = colourKeys.count(key) || key == "Ni";
+        const bool modelled = colourKeys.count(key) || key == "Ni" || key == "Ns" || key == "illum";
         if (!library_.names.empty()) noteOpacity(line);
         if (key == "Tf" && !library_.names.empty()) {
             filter_ = &line; // read when the material ends, once its d or Tr is known
@@ -64,6 +70,8 @@ private:
                            inQuotes(key) + " comes before any 'newmtl': ignored");
         } else if (key == "Ni") {
             readNi(line);
+        } else if (key == "Ns" || key == "illum") {
+            readGlossiness(line);
         } else {
             readColour(line);
         }
@@ -81,6 +89,7 @@ private:
     /// A 'Tf' (transmission filter) is the material's transmission, as tinyobjloader reads it,
     /// unless the material says it is opaque.
     void finishMaterial() {
+        finishGlossiness();
         if (filter_ && opaque_) {
             notes_.warning(path_, filter_->number, "Tf on opaque",
                            "'Tf' on a material that says it is opaque ('d 1' or 'Tr 0'): "
@@ -91,6 +100,46 @@ private:
         }
         filter_ = nullptr;
         opaque_ = false;
+    }
+
+    /// 'Ns' (the Phong exponent) and 'illum' (the illumination model): Ks is a glossy lobe of
+    /// exponent Ns where the material says illum 2 ("highlight on", the MTL format's Phong
+    /// model) and gives Ns > 0, and a perfect mirror otherwise (illum 3 and above are the
+    /// format's ray-traced mirrors).
+    void readGlossiness(const WordLine& line) {
+        const bool exponent = line.words[0] == "Ns";
+        if (line.words.size() < 2) {
+            notes_.warning(path_, line.number, std::string(line.words[0]) + " count",
+                           inQuotes(line.words[0]) + " expects 1 number, found 0: ignored");
+            return;
+        }
+        const float value = numberIn(line, line.words[1]);
+        if (!exponent) {
+            illum_ = value;
+            illumLine_ = line.number;
+        } else if (value >= 0 && value <= mostNs) {
+            exponent_ = value;
+        } else {
+            char range[64];
+            std::snprintf(range, sizeof range, "between 0 and %g", mostNs);
+            notes_.warning(path_, line.number, "Ns absurd",
+                           "'Ns' (the Phong exponent) " + printableText(line.words[1]) +
+                               " is not " + range + ": ignored (Ks stays a mirror)");
+        }
+    }
+
+    void finishGlossiness() {
+        if (library_.names.empty()) return;
+        float glossy = 0.0f;
+        if (illum_ == 2.0f && exponent_ > 0.0f) glossy = exponent_;
+        if (illum_ == 2.0f && exponent_ <= 0.0f && energy_.back().Ks != std::array<float, 3>{})
+            notes_.note(path_, illumLine_, "illum 2 without Ns",
+                        "material " + inQuotes(library_.names.back()) +
+                            " says illum 2 (a Phong highlight) but gives no Ns > 0: its Ks is a "
+                            "perfect mirror");
+        glossyExponents_.push_back(glossy);
+        illum_ = -1.0f;
+        exponent_ = 0.0f;
     }
 
     void newMaterial(const WordLine& line) {
@@ -245,8 +294,11 @@ private:
     MaterialLibrary library_;
     MtlValues values_; ///< the values of each line as PathLab takes it
     std::vector<Energy> energy_;
-    const WordLine* filter_ = nullptr; ///< the current material's 'Tf' line, if it has one
-    bool opaque_ = false;              ///< the current material says 'd 1' or 'Tr 0'
+    const WordLine* filter_ = nullptr;      ///< the current material's 'Tf' line, if it has one
+    bool opaque_ = false;                   ///< the current material says 'd 1' or 'Tr 0'
+    float illum_ = -1.0f, exponent_ = 0.0f; ///< the current material's illum and Ns
+    int illumLine_ = 0;
+    std::vector<float> glossyExponents_; ///< each material's Material::Ns
 };
 
 } // namespace

@@ -114,7 +114,7 @@ std::string describeWarpTest(const WarpTestResult& result) {
     const ChiSquareFit& fit = result.fit;
     if (result.passed)
         return format("passed: chi-square %.4g on %.0f degrees of freedom, p = %.2g (a right "
-                      "routine fails with probability %g)",
+                      "routine fails with probability %.2g)",
                       fit.statistic, fit.degreesOfFreedom, fit.pValue, result.settings.alpha);
     std::string text = "failed:";
     for (const std::string& problem : result.problems) text += "\n  " + problem;

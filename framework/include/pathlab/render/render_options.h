@@ -56,6 +56,10 @@ struct RenderOptions : RenderIdentity {
     int inspectSamples = 8; ///< --inspect-samples
     std::string inspectOut; ///< --inspect-out FILE.json; empty: print the table
     bool pickTest = false;  ///< --pick-test
+    // The warp test of a lab's lobe (lab 5): no scene, no render
+    bool warpTest = false;          ///< --warp-test
+    std::string warpImage;          ///< --warp-image FILE.png: its picture
+    uint64_t warpSamples = 1000000; ///< --warp-samples: per exponent
 
     bool help = false; ///< --help
 };

@@ -1,0 +1,143 @@
+#include "runner/warp_test_run.h"
+
+#include "runner/lab_tables.h"
+
+#include "pathlab/images/false_colour.h"
+#include "pathlab/images/image_io.h"
+#include "pathlab/render/lab_crash_line.h"
+#include "pathlab/render/render_progress.h"
+#include "pathlab/render/render_watchdog.h"
+#include "pathlab/support/input_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+
+namespace pathlab {
+
+namespace {
+
+/// Pixels per cell side in the picture.
+constexpr int CellPixels = 6;
+/// Pixels between panels and between rows.
+constexpr int Gap = 6;
+
+} // namespace
+
+LobeRoutines lobeRoutinesToTest(Lab lab, Implementation implementation) {
+    const LobeRoutines routines = findLobeRoutines(lab, implementation);
+    if (!routines) {
+        std::string labs;
+        for (Lab each : AllLabs)
+            if (findLobeRoutines(each, implementation))
+                labs += (labs.empty() ? "" : ", ") + std::string(labName(each));
+        throw InputError("the lab " + std::string(labName(lab)) +
+                         " writes no lobe to test: --warp-test is for " +
+                         (labs.empty() ? "a lab that writes sampleLobe and lobePdf" : labs));
+    }
+    return routines;
+}
+
+namespace {
+
+/// One panel of the picture, its top left corner at (left, topRow): each cell in the colour
+/// `colourOf` gives it (RGBA8).
+void drawPanel(const SphereCells& cells,
+               const std::function<void(size_t, unsigned char*)>& colourOf, int left, int topRow,
+               int width, std::vector<unsigned char>& rgb) {
+    for (int cell = 0; cell < cells.count(); ++cell) {
+        unsigned char colour[4];
+        colourOf(static_cast<size_t>(cell), colour);
+        const int x0 = left + (cell % cells.phiCells) * CellPixels;
+        const int y0 = topRow + cells.thetaRow(cell) * CellPixels;
+        for (int y = y0; y < y0 + CellPixels; ++y)
+            for (int x = x0; x < x0 + CellPixels; ++x)
+                std::copy(colour, colour + 3, &rgb[3 * (static_cast<size_t>(y) * width + x)]);
+    }
+}
+
+} // namespace
+
+LabWarpTests runLabWarpTests(Lab lab, Implementation implementation, uint64_t seed,
+                             uint64_t samples, double watchdogSeconds) {
+    const LobeRoutines routines = lobeRoutinesToTest(lab, implementation);
+    LabWarpTests tests{lab, implementation, {}, true};
+    // The student's routines run as a lab's pathTrace does: watched for an endless loop, and
+    // named when they crash.
+    RenderProgress progress;
+    const WatchedLab watched{lab, implementation};
+    const RenderWatchdog watchdog(
+        progress, watchdogSeconds, [watched] { return watched; }, true);
+    const LabCrashLine crashLine(watched);
+    progress.passStarts(samples * WarpTestExponents.size());
+    for (float exponent : WarpTestExponents) {
+        WarpTestSettings settings;
+        settings.samples = samples;
+        settings.seed = seed;
+        settings.alpha =
+            sidakAlpha(WarpTestFalseFailRate, static_cast<int>(WarpTestExponents.size()));
+        WarpSampling routine;
+        routine.sample = [&](const Vec2& u) {
+            progress.add(1);
+            return routines.sample(u, exponent);
+        };
+        routine.density = [&](const Vec3& w) {
+            return static_cast<double>(routines.density(w, exponent));
+        };
+        tests.exponents.push_back({exponent, runWarpTest(routine, settings)});
+        tests.passed = tests.passed && tests.exponents.back().result.passed;
+    }
+    progress.passEnds();
+    return tests;
+}
+
+std::string describeLabWarpTests(const LabWarpTests& tests) {
+    std::string text;
+    for (const LabWarpTest& test : tests.exponents) {
+        char exponent[64];
+        std::snprintf(exponent, sizeof exponent, "exponent %g: ", test.exponent);
+        text += exponent + describeWarpTest(test.result) + "\n";
+    }
+    char verdict[256];
+    std::snprintf(verdict, sizeof verdict,
+                  "%s: sampleLobe and lobePdf of lab %s %s (a right pair fails with probability "
+                  "%g)\n",
+                  tests.passed ? "passed" : "FAILED", std::string(labName(tests.lab)).c_str(),
+                  tests.passed ? "agree at every exponent" : "disagree", WarpTestFalseFailRate);
+    return text + verdict;
+}
+
+void writeWarpTestImage(const std::string& path, const LabWarpTests& tests) {
+    if (tests.exponents.empty()) return;
+    const SphereCells& cells = tests.exponents.front().result.settings.cells;
+    const int panelWidth = cells.phiCells * CellPixels, panelHeight = cells.thetaCells * CellPixels;
+    const int width = 3 * panelWidth + 4 * Gap;
+    const int rows = static_cast<int>(tests.exponents.size());
+    const int height = rows * panelHeight + (rows + 1) * Gap;
+    std::vector<unsigned char> rgb(3 * static_cast<size_t>(width) * height, 40);
+    for (int row = 0; row < rows; ++row) {
+        const WarpTestResult& r = tests.exponents[static_cast<size_t>(row)].result;
+        const int top = Gap + row * (panelHeight + Gap);
+        double highest = 1;
+        for (size_t i = 0; i < r.observed.size(); ++i)
+            highest = std::max({highest, r.observed[i], r.expected[i]});
+        const auto observed = [&](size_t i, unsigned char* c) {
+            heatColour(static_cast<float>(r.observed[i] / highest), c);
+        };
+        const auto expected = [&](size_t i, unsigned char* c) {
+            heatColour(static_cast<float>(r.expected[i] / highest), c);
+        };
+        // Standard deviations of a count about its expectation; ±5 at the palette's ends.
+        const auto difference = [&](size_t i, unsigned char* c) {
+            const double sd = std::sqrt(std::max(r.expected[i], 1.0));
+            divergingColour(static_cast<float>((r.observed[i] - r.expected[i]) / sd / 5), c);
+        };
+        drawPanel(cells, observed, Gap, top, width, rgb);
+        drawPanel(cells, expected, 2 * Gap + panelWidth, top, width, rgb);
+        drawPanel(cells, difference, 3 * Gap + 2 * panelWidth, top, width, rgb);
+    }
+    writeDisplayImage(path, width, height, rgb);
+}
+
+} // namespace pathlab
