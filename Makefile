@@ -9,7 +9,7 @@ NATIVE ?= ON
 # off by default, so that a newer compiler's new warning does not stop a student's build.
 WARNINGS_AS_ERRORS ?= OFF
 
-.PHONY: run configure build test test-labs test-slow grade report sweep inspect pick-test convergence reference bench profile \
+.PHONY: run configure build test test-labs test-slow grade report sweep inspect pick-test warptest convergence reference bench profile \
         deps clean \
         handouts handouts-html student-release gradescope
 
@@ -102,6 +102,13 @@ pick-test: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target viewer
 	@cd $(BUILD) && ./viewer -c $(PICK_TEST_SCENE) --lab $(or $(LAB),importance) --size 64 64 \
 	    --continue-prob 0.8 --pick-test $(ARGS)
+
+# The warp test of lab 5's lobe (viewer --warp-test): a million directions from your sampleLobe at
+# each of three exponents, counted over the sphere against your lobePdf (chi-square); the
+# picture, observed beside expected, into $(BUILD)/warptest.png. A few seconds.
+warptest: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target viewer
+	@cd $(BUILD) && ./viewer --warp-test --lab $(or $(LAB),glossy) --warp-image warptest.png $(ARGS)
 
 # The error-versus-time plot of your four labs, as handouts/figures/convergence.png shows the
 # reference solutions': each lab rendered headless at increasing spp (SPP="4 16 64" for others)

@@ -432,8 +432,8 @@ def glossy_furnace():
     """A glossy plate (Ks k, a Phong lobe of exponent n) seen head-on inside a closed sphere that
     emits Le = 1 and reflects nothing. Seen along its normal, the plate's lobe is about the normal
     and reflects exactly k of the light arriving from all around (the (n + 2)/(2π) of the
-    modified Phong BRDF: handout 05), so its radiance is k·Le; the camera's field of view is 4
-    degrees, where the lobe's tilt loses less than 1e-3 of it past the horizon. Labs 5 and 6's
+    modified Phong BRDF: handout 05), so its radiance is k·Le; the camera's field of view is 1
+    degree, where the lobe's tilt loses less than 1e-4 of it past the horizon. Labs 5 and 6's
     analytic check of the glossy bounce."""
     mesh = Mesh()
     mesh.sphere(mesh.group("enclosure", "glow"), (0.0, 0.0, 0.0), 1.0, 64, 32, outward=False, smooth=False)
@@ -449,7 +449,7 @@ def glossy_furnace():
     write_ecs(os.path.join(HERE, "glossy_furnace.ecs"),
               f"Glossy furnace: a glossy plate (Ks {k:g}, Phong exponent {e}) seen head-on inside a sphere\n"
               f"that emits Le = 1 and reflects nothing: its radiance is Ks·Le = {k:g}.",
-              "-i glossy_furnace.obj\n-vp 0 0 -0.8\n-vi 0 0 0\n-vu 0 1 0\n-fov 4\n")
+              "-i glossy_furnace.obj\n-vp 0 0 -0.8\n-vi 0 0 0\n-vu 0 1 0\n-fov 1\n")
     return n
 
 

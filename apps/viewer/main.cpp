@@ -228,6 +228,11 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (options.warpTest) return testWarp(options);
+        if (!options.lobeDump.empty()) {
+            writeLobeDump(options.lobeDump, options.lab, options.implementation, options.seed,
+                          options.watchdogSeconds);
+            return 0;
+        }
         if (options.objFiles.empty())
             throw InputError("no scene given: use -c FILE.ecs or -i FILE.obj (viewer --help)");
         checkOutputs(options, window);

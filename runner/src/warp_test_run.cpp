@@ -8,6 +8,8 @@
 #include "pathlab/render/render_progress.h"
 #include "pathlab/render/render_watchdog.h"
 #include "pathlab/support/input_error.h"
+#include "pathlab/support/whole_file.h"
+#include "pathlab/warp/lobe_dump.h"
 
 #include <algorithm>
 #include <cmath>
@@ -90,6 +92,34 @@ LabWarpTests runLabWarpTests(Lab lab, Implementation implementation, uint64_t se
     }
     progress.passEnds();
     return tests;
+}
+
+void writeLobeDump(const std::string& path, Lab lab, Implementation implementation, uint64_t seed,
+                   double watchdogSeconds) {
+    const LobeRoutines routines = lobeRoutinesToTest(lab, implementation);
+    RenderProgress progress;
+    const WatchedLab watched{lab, implementation};
+    const RenderWatchdog watchdog(
+        progress, watchdogSeconds, [watched] { return watched; }, true);
+    const LabCrashLine crashLine(watched);
+    progress.passStarts(uint64_t(LobeDumpSamples + LobeDumpDensityPoints) *
+                        WarpTestExponents.size());
+    const std::vector<Vec2> numbers = lobeDumpNumbers(seed, LobeDumpSamples);
+    LobeDump dump;
+    for (float exponent : WarpTestExponents) {
+        LobeDumpExponent& e = dump.exponents.emplace_back();
+        e.exponent = exponent;
+        for (const Vec2& u : numbers) {
+            e.samples.push_back(routines.sample(u, exponent));
+            progress.add(1);
+        }
+        for (const Vec3& w : lobeCheckDirections(seed, exponent, LobeDumpDensityPoints)) {
+            e.densities.push_back(routines.density(w, exponent));
+            progress.add(1);
+        }
+    }
+    progress.passEnds();
+    writeFileAtomically(path, lobeDumpBytes(dump));
 }
 
 std::string describeLabWarpTests(const LabWarpTests& tests) {

@@ -4,8 +4,8 @@
 Usage: fifth_lab_test.py --source KIT [--keep]
 
 framework/lab_list.txt is the one place the labs are counted (docs/architecture.md: Adding a
-lab). This test copies the kit, adds a lab `fifth` to the copy's list (lab 5, unbiased), gives it
-a stub and a reference solution (lab 4's, renamed: its steps are lab5.N), and builds the copy
+lab). This test copies the kit, adds a lab `fifth` to the copy's list (the next lab, unbiased), gives
+it a stub and a reference solution (lab 4's, renamed: its steps are labN.1, ... for its number N), and builds the copy
 with warnings as errors, so that a switch over the labs that misses one stops the build. Nothing
 else of the copy is edited, except the rubric: a lab's points and samples per pixel are the
 instructor's to give, so the test's rubric gives them, and the kit's rubric, which has none for
@@ -14,10 +14,10 @@ the new lab, must be refused with words that name it.
 Then the new lab is rendered, inspected, reported and graded:
 - its solution renders the very image lab 4's solution renders (it is the same code), and the
   viewer's --help names it;
-- the inspector replays it and names its steps lab5.N, from the lab's place in the list;
+- the inspector replays it and names its steps labN.M, from the lab's place in the list;
 - the lab report's figures have its rows, labelled by its number;
 - the grader grades it: its solution passes correctness, its stub fails, and the words name
-  its step (TODO lab5.2); the grader's --help names its file, and a submission's fifth.cpp is
+  its step (TODO labN.2); the grader's --help names its file, and a submission's fifth.cpp is
   taken at intake.
 """
 import json
@@ -29,7 +29,11 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from checks import check, exit_code, package_test_arguments  # noqa: E402
+from checks import LABS, check, exit_code, package_test_arguments  # noqa: E402
+
+# The added lab comes after the kit's own: its number, and the kit's last lab before it.
+N = len(LABS) + 1
+LAST = LABS[-1]
 
 SCENE = "models/cornell_box_VI2_Specular.ecs"
 SMALL = ["--size", "64", "64", "--continue-prob", "0.8", "--seed", "7", "--threads", "2"]
@@ -56,7 +60,7 @@ def add_fifth_lab(kit):
     for folder in ("labs", "solutions"):
         with open(os.path.join(kit, folder, "roulette.cpp"), encoding="utf-8") as f:
             text = f.read()
-        text = text.replace("pathlab::roulette", "pathlab::fifth").replace("lab4.", "lab5.")
+        text = text.replace("pathlab::roulette", "pathlab::fifth").replace("lab4.", f"lab{N}.")
         with open(os.path.join(kit, folder, "fifth.cpp"), "w", encoding="utf-8") as f:
             f.write(text)
 
@@ -96,7 +100,7 @@ def rubric_with_fifth(kit, path):
 
 def check_render_and_inspect(build_dir, scratch):
     status, helped = run(["./viewer", "--help"], build_dir)
-    check("| roulette | fifth" in helped, "the viewer's --help names the fifth lab")
+    check(f"| {LAST} | fifth" in helped, "the viewer's --help names the fifth lab")
     images = {}
     for lab in ("roulette", "fifth"):
         image = os.path.join(scratch, lab + ".pfm")
@@ -117,7 +121,7 @@ def check_render_and_inspect(build_dir, scratch):
               f"its JSON names the lab and reports roulette draws: {written['lab']!r}, "
               f"{written['uses_roulette']!r}")
         summary = (written.get("comparison") or {}).get("summary", "")
-        check("lab5.2" in summary and "lab4." not in summary,
+        check(f"lab{N}.2" in summary and "lab4." not in summary,
               f"the stub's paths are compared with the solution's by its own steps: {summary!r}")
 
 
@@ -125,11 +129,11 @@ def check_grading(build_dir, scratch, kit):
     rubric = os.path.join(scratch, "rubric.json")
     rubric_with_fifth(kit, rubric)
     status, output = run(["./grader", "--help"], build_dir)
-    check("roulette.cpp, fifth.cpp" in output and "| roulette | fifth" in output,
+    check(f"{LAST}.cpp, fifth.cpp" in output and f"| {LAST} | fifth" in output,
           "the grader's --help names the fifth lab and its file")
 
     status, output = run(["./grader", "--lab", "fifth", "--no-speed"], build_dir)
-    says = 'points has no entry for the lab "fifth" (lab 5)'
+    says = f'points has no entry for the lab "fifth" (lab {N})'
     check(status == 2 and says in output,
           f"the kit's rubric, with no points for the fifth lab, is refused: \"{says}\"" +
           ("" if says in output else f"; it said: {output.strip()[-400:]}"))
@@ -149,12 +153,13 @@ def check_grading(build_dir, scratch, kit):
           "the fifth lab's solution is graded and passes" +
           ("" if status == 0 else ":\n" + output[-2000:]))
     status, output, graded = results["stub"]
-    check(status == 1 and "TODO lab5.2" in output,
-          "the fifth lab's stub fails, the words naming its step TODO lab5.2" +
-          ("" if status == 1 and "TODO lab5.2" in output else ":\n" + output[-2000:]))
+    todo = f"TODO lab{N}.2"
+    check(status == 1 and todo in output,
+          f"the fifth lab's stub fails, the words naming its step {todo}" +
+          ("" if status == 1 and todo in output else ":\n" + output[-2000:]))
     report = open(os.path.join(scratch, "solution.md"), encoding="utf-8").read() \
         if os.path.exists(os.path.join(scratch, "solution.md")) else ""
-    check("fifth, continueProb 0.1 (lab 5's default)" in report,
+    check(f"fifth, continueProb 0.1 (lab {N}'s default)" in report,
           "the lab report's figures label the fifth lab by its number")
 
 

@@ -189,13 +189,13 @@ void checkWritten(const PixelInspection& inspection, const std::string& source) 
             const InspectedVertex& v = sample.vertices[static_cast<size_t>(i)];
             if (v.index != i || v.parent < -1 || v.parent >= i)
                 fail("vertex " + std::to_string(i) + "'s index or parent");
-            if (!oneOf(v.arrivedBy,
-                       {"camera", "diffuse", "mirror", "refraction", "specular", "unknown"}))
+            if (!oneOf(v.arrivedBy, {"camera", "diffuse", "mirror", "refraction", "specular",
+                                     "glossy", "unknown"}))
                 fail("vertex " + std::to_string(i) + " arrived by no ray the inspector names");
             for (const PathContinuation& c : v.continuedBy)
                 if (c.child <= i || c.child >= count ||
                     !oneOf(c.component,
-                           {"diffuse", "mirror", "refraction", "specular", "unknown"}) ||
+                           {"diffuse", "mirror", "refraction", "specular", "glossy", "unknown"}) ||
                     !oneOf(c.weightedBy, {"", "Kd", "Ks", "Kt"}))
                     fail("vertex " + std::to_string(i) + "'s continuation");
         }

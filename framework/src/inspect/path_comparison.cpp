@@ -260,7 +260,9 @@ private:
         const auto ours = probability(ours_.vertices[static_cast<size_t>(from)], x.index);
         const auto theirs = probability(theirs_.vertices[static_cast<size_t>(from)], y.index);
         const std::string ray = "the " + x.arrivedBy + " ray from " + vertexName(from);
-        const std::string stepName = branches() ? componentStep(x.arrivedBy) : step(4);
+        const std::string stepName = branches()                ? componentStep(x.arrivedBy)
+                                     : x.arrivedBy == "glossy" ? glossyStep()
+                                                               : step(4);
         if (!ours || !theirs)
             return divergence(from, "probability", stepName,
                               "your lab weights " + ray + " by " + colour(*x.throughput) +
@@ -313,8 +315,15 @@ private:
     }
 
     /// The lab's step n ("lab3.4", numbered as the lab list numbers the labs).
+    /// Step n of labs 1-4's order (1 emission, 2 depth or roulette, 3 the pick, 4 the division).
+    /// A lab that writes a lobe has those of lab 4 in its step 3 ("as your lab 4") and the
+    /// glossy weight in its step 4 (glossyStep).
     std::string step(int n) const {
+        if (writesLobe(lab_.identity.lab)) n = 3;
         return "lab" + std::to_string(labNumber(lab_.identity.lab)) + "." + std::to_string(n);
+    }
+    std::string glossyStep() const {
+        return "lab" + std::to_string(labNumber(lab_.identity.lab)) + ".4";
     }
     /// Lab 1 sends a ray for every component that is not black; the others pick one.
     bool branches() const { return lab_.identity.lab == Lab::Branching; }

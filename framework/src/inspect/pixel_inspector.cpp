@@ -105,7 +105,8 @@ bool linearAt(const SampleReplayer& replayer, uint64_t sample, const Replay& bas
 }
 
 /// The vertex a ray left, and which of the framework's rays from there it is: a bounce ray's
-/// origin and direction are those diffuseRay, mirrorRay or refractionRay make from the hit.
+/// origin and direction are those diffuseRay, mirrorRay, refractionRay or glossyRay make from the
+/// hit.
 void findParent(const Replay& replay, InspectedVertex& vertex) {
     const Ray& ray = vertex.ray;
     if (ray.kind == RayKind::Camera) {
@@ -116,10 +117,11 @@ void findParent(const Replay& replay, InspectedVertex& vertex) {
         const Hit& from = replay.hits[static_cast<size_t>(u)];
         if (!from.found) continue;
         const Ray& incoming = replay.rays[static_cast<size_t>(u)];
-        if (ray.kind == RayKind::Diffuse) {
+        // A diffuse or glossy ray's direction comes from its numbers: its origin tells its parent.
+        if (ray.kind == RayKind::Diffuse || ray.kind == RayKind::Glossy) {
             if (!sameBits(offsetRayOrigin(from, ray.direction), ray.origin)) continue;
             vertex.parent = u;
-            vertex.arrivedBy = "diffuse";
+            vertex.arrivedBy = ray.kind == RayKind::Diffuse ? "diffuse" : "glossy";
             return;
         }
         const bool mirror = sameRay(mirrorRay(incoming, from), ray);

@@ -189,6 +189,7 @@ Handlers outputOptions(RenderOptions& o, OptionReader& in) {
              o.warpTest = true;
              o.warpImage = in.value(t, "a .png file name").text;
          }},
+        {"lobe-dump", [&](const Token& t) { o.lobeDump = in.value(t, "a file name").text; }},
         {"warp-samples",
          [&](const Token& t) {
              o.warpSamples =
@@ -308,6 +309,8 @@ warp test (lab 5; no scene needed)
                          and say what disagrees; exit status 1 when they do
   --warp-image FILE.png  also draw it: observed counts, expected counts, their difference
   --warp-samples N       directions per exponent (default 1000000)
+  --lobe-dump FILE       the grader's: write what sampleLobe and lobePdf give for inputs drawn
+                         from --seed, for the grader to judge against the Phong lobe
 )";
 }
 

@@ -303,16 +303,9 @@ GradingScene parameterCheckScene(const Rubric& rubric) {
                           rubric, check.maxDepth, check.continueProb);
     scene.name = ref.scene;
     // Every region of a furnace averages to its analytic value, known exactly: no standard error.
-    const size_t values = 3 * (1 + static_cast<size_t>(rubric.tiles) * rubric.tiles);
-    const size_t pixels = 3 * static_cast<size_t>(rubric.width) * rubric.height;
     auto analytic = [&](Lab lab) {
-        const double value = correctFurnaceValue(lab, *scene.furnace);
-        Expectation e;
-        e.solution = "analytic: " + furnaceFormula(lab, *scene.furnace);
-        e.mean.assign(values, value);
-        e.standardError.assign(values, 0.0);
-        e.image.assign(pixels, static_cast<float>(value));
-        return e;
+        return analyticExpectation(rubric, correctFurnaceValue(lab, *scene.furnace),
+                                   furnaceFormula(lab, *scene.furnace));
     };
     ref.depthLimited = analytic(Lab::Branching);
     ref.unbiased = analytic(Lab::Roulette);

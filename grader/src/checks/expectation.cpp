@@ -94,6 +94,17 @@ std::string referenceParametersHash(const Rubric& r) {
     return hash.hex();
 }
 
+Expectation analyticExpectation(const Rubric& rubric, double value, const std::string& formula) {
+    const size_t values = 3 * (1 + static_cast<size_t>(rubric.tiles) * rubric.tiles);
+    const size_t pixels = 3 * static_cast<size_t>(rubric.width) * rubric.height;
+    Expectation e;
+    e.solution = "analytic: " + formula;
+    e.mean.assign(values, value);
+    e.standardError.assign(values, 0.0);
+    e.image.assign(pixels, static_cast<float>(value));
+    return e;
+}
+
 SceneReference referenceHeader(const std::string& scene, const Rubric& rubric, int maxDepth,
                                float continueProb) {
     SceneReference ref;

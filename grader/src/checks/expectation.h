@@ -67,6 +67,10 @@ struct StaleReference : InputError {
 SceneReference referenceHeader(const std::string& scene, const Rubric& rubric, int maxDepth,
                                float continueProb);
 
+/// The expectation of a scene whose every region averages to `value`, known exactly (an analytic
+/// furnace): no standard error. `formula` says where the value comes from.
+Expectation analyticExpectation(const Rubric& rubric, double value, const std::string& formula);
+
 /// Measures a scene's reference with the reference solutions `solution` runs.
 SceneReference measureReference(const LabRunner& solution, const std::string& scenePath,
                                 const Rubric& rubric, int seeds, int sppFactor,

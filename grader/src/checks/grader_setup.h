@@ -13,6 +13,7 @@
 #include "pathlab/render/lab_parameters.h"
 #include "pathlab/render/lab_registry.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -33,6 +34,13 @@ struct GradingScene {
     /// the images or the tiles (unless the instructor reveals them).
     std::string name;
     bool hidden = false;
+    /// The labs graded on it; empty: every lab (the glossy furnace is for the labs that write a
+    /// lobe alone: labs 1-4 grade as they did before it).
+    std::vector<Lab> labs;
+
+    bool grades(Lab lab) const {
+        return labs.empty() || std::find(labs.begin(), labs.end(), lab) != labs.end();
+    }
 };
 
 /// How the frame-rate check keeps its timings fair on a machine that does other work meanwhile

@@ -1,5 +1,7 @@
 #include "checks/grading_scenes.h"
 
+#include "checks/glossy_furnace_scene.h"
+
 #include "checks/correctness_check.h"
 #include "common/content_hash.h"
 #include "common/scene_files.h"
@@ -105,6 +107,8 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const SceneSources
         scenes.push_back(std::move(s));
     }
     scenes.push_back(parameterCheckScene(rubric));
+    if (std::optional<GradingScene> glossy = glossyFurnaceScene(rubric))
+        scenes.push_back(std::move(*glossy));
     if (sources.hidden.empty()) return scenes;
     const std::vector<std::string> hidden = hiddenScenePaths(sources.hidden);
     for (size_t i = 0; i < hidden.size(); ++i) {

@@ -27,11 +27,12 @@ struct SceneSources {
 };
 
 /// The rubric's public scenes (models/NAME.ecs) with their stored references, then the parameter
-/// check's furnace (analytic), then the hidden scenes with references measured from the solutions
-/// `solution` runs. Measured references are kept in the cache and taken from there while the
-/// scene files, rubric and kit they were made from are unchanged, so a batch measures each scene
-/// once. A public scene without a stored reference is measured too, with a note in `notes`; one
-/// whose stored reference is stale stops the grading (InputError) with the command that remakes it.
+/// check's furnace (analytic), the glossy furnace for the labs that write a lobe (analytic), then
+/// the hidden scenes with references measured from the solutions `solution` runs. Measured
+/// references are kept in the cache and taken from there while the scene files, rubric and kit they
+/// were made from are unchanged, so a batch measures each scene once. A public scene without a
+/// stored reference is measured too, with a note in `notes`; one whose stored reference is stale
+/// stops the grading (InputError) with the command that remakes it.
 std::vector<GradingScene> gradingScenes(const Rubric& rubric, const SceneSources& sources,
                                         const LabRunner& solution, const std::string& scratch,
                                         std::vector<std::string>& notes);

@@ -1,6 +1,7 @@
 #include "commands/grade_lab.h"
 
 #include "checks/correctness_check.h"
+#include "checks/lobe_check.h"
 #include "checks/noise_check.h"
 #include "checks/race_verdict.h"
 #include "checks/speed_check.h"
@@ -9,7 +10,21 @@
 
 namespace pathlab::grader {
 
-LabMeasurement measureLab(const GraderSetup& setup, Lab lab, StartUpTimes& startUps) {
+namespace {
+
+/// `setup` with the scenes that grade `lab` alone (GradingScene::labs).
+GraderSetup setupFor(const GraderSetup& setup, Lab lab) {
+    GraderSetup own = setup;
+    own.scenes.clear();
+    for (const GradingScene& scene : setup.scenes)
+        if (scene.grades(lab)) own.scenes.push_back(scene);
+    return own;
+}
+
+} // namespace
+
+LabMeasurement measureLab(const GraderSetup& allLabs, Lab lab, StartUpTimes& startUps) {
+    const GraderSetup setup = setupFor(allLabs, lab);
     LabMeasurement m;
     m.lab = lab;
     auto started = std::chrono::steady_clock::now();
@@ -25,6 +40,11 @@ LabMeasurement measureLab(const GraderSetup& setup, Lab lab, StartUpTimes& start
     if (setup.raceCheck && correctness.rendersFinished) {
         addRaceVerdict(setup.raceCheck(lab), correctness.check);
         m.seconds.race = lap();
+    }
+    // A lab that writes a lobe has its routines judged too (lobe_check.h).
+    if (writesLobe(lab) && correctness.rendersFinished) {
+        addLobeVerdict(setup, lab, correctness.check);
+        m.seconds.correctness += lap();
     }
     m.correctness = correctness.check;
     m.rendersFinished = correctness.rendersFinished;

@@ -287,6 +287,74 @@ std::vector<double> regionMeans(const std::vector<float>& image, int width, int 
     return sums;
 }
 
+LobeDumpRun dumpLobe(const LabRunner& runner, Lab lab, uint64_t seed, const std::string& scratch,
+                     const RenderLimits& limits) {
+    // A request of one "seed" with no image, for the process limits and the failure's words.
+    RenderRequest r;
+    r.runner = &runner;
+    r.identity.lab = lab;
+    r.scratch = scratch;
+    r.threads = 1;
+    const char* name = "lobe.bin";
+    char stall[32];
+    std::snprintf(stall, sizeof stall, "%g", limits.stallSeconds);
+    std::vector<std::string> arguments = {
+        "--lab", std::string(labName(lab)), "--seed", std::to_string(seed), "--watchdog", stall};
+    if (!runner.sandboxed() && runner.implementation == Implementation::Solution)
+        arguments.push_back("--solution");
+    LobeDumpRun run;
+    RenderResult result;
+    const std::string path = scratch + "/" + name;
+    fs::remove(path);
+    if (runner.sandboxed()) {
+        SandboxRun sandboxed;
+        sandboxed.command = {"/pathlab/viewer", "--lobe-dump", name};
+        sandboxed.command.insert(sandboxed.command.end(), arguments.begin(), arguments.end());
+        sandboxed.files = {{runner.viewer, "/pathlab/viewer"},
+                           {runner.libraryFor(lab), "/pathlab/labs.so"}};
+        sandboxed.environment = {{"PATHLAB_LABS_LIBRARY", "/pathlab/labs.so"}};
+        sandboxed.collect = {name};
+        sandboxed.scratchBytes = 64LL << 20;
+        ProcessLimits sandboxLimits = processLimits(r, limits);
+        sandboxLimits.fileBytes = 64LL << 20;
+        sandboxLimits.processes = 64 + 1;
+        SandboxOutcome outcome = runInSandbox(sandboxed, sandboxLimits, runner.sandbox);
+        result.process = outcome.process;
+        if (outcome.files.count(name)) run.bytes = outcome.files[name];
+        if (!outcome.problem.empty() && result.process.succeeded()) {
+            run.failure = "its output could not be read: " + outcome.problem;
+            run.failureKind = "unreadable output";
+            return run;
+        }
+    } else {
+        std::vector<std::string> argv = {runner.viewer, "--lobe-dump", path};
+        argv.insert(argv.end(), arguments.begin(), arguments.end());
+        ProcessOptions options;
+        options.cpus = runner.cpus;
+        result.process = runProcess(argv, processLimits(r, limits), options);
+        if (result.process.succeeded()) {
+            try {
+                run.bytes = readFile(path);
+            } catch (const InputError&) {
+            }
+        }
+    }
+    result.outputNote = result.process.outputNote();
+    if (!result.process.succeeded()) {
+        describeFailure(r, limits, result);
+        run.failure = result.failure;
+        run.failureKind = result.failureKind;
+        return run;
+    }
+    if (run.bytes.empty()) {
+        run.failure = std::string("it wrote no ") + name;
+        run.failureKind = "unreadable output";
+        return run;
+    }
+    run.ok = true;
+    return run;
+}
+
 RenderIdentity requestedIdentity(const LabRunner& runner, Lab lab, const LabParameters& parameters,
                                  uint64_t seed, int width, int height) {
     return {lab, runner.implementation, parameters, seed, width, height};

@@ -100,6 +100,19 @@ struct RenderLimits {
 /// Runs one viewer process for all the request's seeds; the limits hold for that process.
 RenderResult renderLab(const RenderRequest& request, const RenderLimits& limits);
 
+/// What a lab's lobe routines gave for the grader's inputs (viewer --lobe-dump), as its process
+/// wrote them: judged by the grader, never trusted (pathlab/warp/phong_lobe_check.h).
+struct LobeDumpRun {
+    bool ok = false;
+    std::string failure, failureKind; ///< as RenderResult's
+    std::string bytes;                ///< the dump file
+};
+
+/// Runs `runner`'s viewer for `lab` with --lobe-dump at `seed`, in the sandbox where the runner
+/// has one, under `limits`; the file goes through `scratch`.
+LobeDumpRun dumpLobe(const LabRunner& runner, Lab lab, uint64_t seed, const std::string& scratch,
+                     const RenderLimits& limits);
+
 /// A scene's files as a sandboxed render sees them: under /scene, laid out as on the host
 /// relative to the .ecs, so that no path of the host shows; `ecs` is the .ecs inside.
 struct SandboxedScene {

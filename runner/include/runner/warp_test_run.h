@@ -5,17 +5,13 @@
 #include "runner/lab_tables.h"
 
 #include "pathlab/render/lab_registry.h"
+#include "pathlab/warp/lobe_dump.h"
 #include "pathlab/warp/warp_test.h"
 
 #include <string>
 #include <vector>
 
 namespace pathlab {
-
-/// The exponents tested: a lobe nearly as wide as a diffuse one, and the two roughest plates of
-/// veach_plates. Sharper lobes fall inside the first row of cells, where the test would see
-/// little.
-inline const std::vector<float> WarpTestExponents = {1.0f, 12.0f, 60.0f};
 
 /// The chance that a right routine fails any of the exponents' tests: each is run at the Šidák
 /// share of it.
@@ -43,6 +39,12 @@ LobeRoutines lobeRoutinesToTest(Lab lab, Implementation implementation);
 /// crashes it says so. Throws InputError for a lab that writes no lobe.
 LabWarpTests runLabWarpTests(Lab lab, Implementation implementation, uint64_t seed,
                              uint64_t samples, double watchdogSeconds);
+
+/// viewer --lobe-dump: what `lab`'s sampleLobe gives for lobeDumpNumbers(seed) and its lobePdf
+/// at lobeCheckDirections(seed, ...), at each of WarpTestExponents (pathlab/warp/lobe_dump.h),
+/// written to `path` for the grader to judge. Watched as runLabWarpTests is.
+void writeLobeDump(const std::string& path, Lab lab, Implementation implementation, uint64_t seed,
+                   double watchdogSeconds);
 
 /// One line per exponent: "exponent 12: passed: chi-square ..." or its problems; and the verdict.
 std::string describeLabWarpTests(const LabWarpTests& tests);

@@ -60,4 +60,14 @@ constexpr bool isDepthLimited(Lab lab) {
     return limited[labIndex(lab)];
 }
 
+/// Whether the lab writes a glossy lobe's sampling routine and density beside pathTrace (lab 5;
+/// `lobe` in the lab list), which the warp test checks.
+constexpr bool writesLobe(Lab lab) {
+    bool lobe[LabCount] = {};
+#define PATHLAB_LAB_WRITES_LOBE(name, Enumerator) lobe[labIndex(Lab::Enumerator)] = true;
+    PATHLAB_FOR_EACH_LOBE_LAB(PATHLAB_LAB_WRITES_LOBE)
+#undef PATHLAB_LAB_WRITES_LOBE
+    return lobe[labIndex(lab)];
+}
+
 } // namespace pathlab

@@ -60,6 +60,7 @@ struct RenderOptions : RenderIdentity {
     bool warpTest = false;          ///< --warp-test
     std::string warpImage;          ///< --warp-image FILE.png: its picture
     uint64_t warpSamples = 1000000; ///< --warp-samples: per exponent
+    std::string lobeDump;           ///< --lobe-dump FILE: for the grader (warp/lobe_dump.h)
 
     bool help = false; ///< --help
 };
