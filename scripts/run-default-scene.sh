@@ -1,16 +1,21 @@
 #!/usr/bin/env bash
-# `make run [LAB=NAME]`: the VI2 Cornell box in the window where there is a display, otherwise
-# rendered headless to an image whose path is printed. The student release, which has no
-# solutions, renders the student's own labs/ (lab 1 unless LAB names another) and says which
-# steps of that lab are still to write; the instructor's kit renders the reference solution of
-# lab 3 (or of LAB).
+# `make run [LAB=NAME]`: the VI2 Cornell box (for a lab that writes a glossy lobe, Veach's plates
+# at continueProb 0.8) in the window where there is a display, otherwise rendered headless to an
+# image whose path is printed. The student release, which has no solutions, renders the student's
+# own labs/ (lab 1 unless LAB names another) and says which steps of that lab are still to write;
+# the instructor's kit renders the reference solution of lab 3 (or of LAB). The labs are those of
+# framework/lab_list.txt.
 set -uo pipefail
 build=${1:-build}
 lab=${2:-}
 kit=$(cd "$(dirname "$0")/.." && pwd)
 scene=models/cornell_box_VI2_Specular.ecs
-declare -A handout=([branching]=01-branching.md [uniform]=02-uniform-pick.md
-                    [importance]=03-importance-pick.md [roulette]=04-russian-roulette.md)
+# The list's labs, and the fourth field of each (lobe, or nothing).
+declare -A routines=()
+while read -r name _ _ fourth _; do
+    routines[$name]=${fourth:-none}
+done < <(grep -v '^[[:space:]]*#' "$kit/framework/lab_list.txt" | grep -v '^[[:space:]]*$')
+labs=$(grep -v '^[[:space:]]*#' "$kit/framework/lab_list.txt" | awk 'NF {print $1}' | tr '\n' ' ')
 
 if [ -d "$kit/solutions" ]; then
     lab=${lab:-importance}
@@ -23,9 +28,17 @@ else
     what="your labs/$lab.cpp"
     spp=64
 fi
-if [ -z "${handout[$lab]:-}" ]; then
-    echo "make run: LAB=$lab is not a lab: branching, uniform, importance or roulette" >&2
+if [ -z "${routines[$lab]:-}" ]; then
+    echo "make run: LAB=$lab is not a lab: ${labs% }" >&2
     exit 2
+fi
+# The lab's handout, as its file names it ("Handout: handouts/NN-NAME.md").
+handout=$(grep -o 'handouts/[0-9][0-9]-[A-Za-z-]*\.md' "$kit/labs/$lab.cpp" 2>/dev/null | head -1)
+handout=${handout:-handouts/}
+extra=()
+if [ "${routines[$lab]}" = lobe ]; then
+    scene=models/veach_plates.ecs
+    extra=(--continue-prob 0.8)
 fi
 
 # The steps of the student's lab still marked PATHLAB_TODO, in one line (a marker may go on to
@@ -33,7 +46,7 @@ fi
 if [ ${#whose[@]} -eq 0 ]; then
     todo=$(grep -o 'PATHLAB_TODO("lab[0-9.]*"' "$kit/labs/$lab.cpp" | grep -o 'lab[0-9.]*' | tr '\n' ' ')
     if [ -n "$todo" ]; then
-        echo "make run: labs/$lab.cpp has steps still to write: ${todo% } (handouts/${handout[$lab]});" \
+        echo "make run: labs/$lab.cpp has steps still to write: ${todo% } ($handout);" \
              "each adds nothing to the image until you write it (the stub renders direct light only)"
     else
         echo "make run: labs/$lab.cpp has no PATHLAB_TODO left"
@@ -47,7 +60,7 @@ if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] || [ "$(uname -s)" = Darwin ]; then
     echo "make run: opening the window on $what (h: help, q: quit)"
     problems=$(mktemp)
     # Its error output goes to the terminal as it comes, and to $problems for the test below.
-    { ./viewer -c "$scene" --lab "$lab" "${whose[@]}" 2>&1 1>&3 3>&- | tee "$problems" >&2
+    { ./viewer -c "$scene" --lab "$lab" "${whose[@]}" "${extra[@]}" 2>&1 1>&3 3>&- | tee "$problems" >&2
       status=${PIPESTATUS[0]}; } 3>&1
     # A display variable that leads nowhere (a stale ssh -X, say): render headless instead.
     if [ $status -ne 2 ] || ! grep -q "^viewer: no display" "$problems"; then
@@ -61,7 +74,7 @@ image=$lab.png
 echo "make run: no display, so rendering $what headless, $spp samples per pixel"
 problems=$(mktemp)
 report=$(mktemp)
-./viewer -c "$scene" --lab "$lab" "${whose[@]}" --spp "$spp" -o "$image" > "$report" 2> "$problems"
+./viewer -c "$scene" --lab "$lab" "${whose[@]}" "${extra[@]}" --spp "$spp" -o "$image" > "$report" 2> "$problems"
 status=$?
 # The TODO warnings are summed up above; anything else the viewer says is shown as it is, and
 # before its report of the render, as the viewer orders them: a NaN warning comes first.

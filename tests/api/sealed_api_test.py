@@ -40,6 +40,11 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
     radiance += m.Kd * pathTrace(diffuseRay(hit, u), depth + 1, ctx) * (d.x > 0 ? 1.0f : InvPi);
     radiance += m.Ks * pathTrace(mirrorRay(ray, hit), depth + 1, ctx);
     radiance += m.Kt * pathTrace(refractionRay(ray, hit), depth + 1, ctx);
+    if (m.Ns > 0) {
+        const Ray glossy = glossyRay(ray, hit, Vec3{0, 0, 1});
+        if (glossy.kind == RayKind::Glossy)
+            radiance += phongBrdf(m, 1.0f) * pathTrace(glossy, depth + 1, ctx);
+    }
     return isBlack(m.Ke) || ray.kind == RayKind::Diffuse ? radiance : radiance / reduceMax(m.Ke);
 }
 }
@@ -67,7 +72,8 @@ FORBIDDEN = [
 # from framework/lab_list.txt into BUILD/generated/include.
 DOCUMENTED_HEADERS = {
     "lab.h", "lab_declarations.h", "lab_list.h", "call_site.h", "color.h", "constants.h", "cosine_hemisphere.h", "hit.h",
-    "material.h", "orthonormal_basis.h", "path_context.h", "random_stream.h", "ray.h", "sampler.h",
+    "glossy_lobe.h", "material.h", "orthonormal_basis.h", "path_context.h", "random_stream.h", "ray.h",
+    "sampler.h",
     "scattering.h", "small_angle_sin_cos.h", "todo.h", "vec3.h",
 }
 

@@ -18,6 +18,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from checks import LABS  # noqa: E402
+
 SKIPPED = 77  # ctest's SKIP_RETURN_CODE for these tests
 
 # Per channel and path length, the two means may differ by at most this many standard errors of
@@ -99,7 +102,7 @@ def smoke(bench):
                          f"{name} raw {threads} {kind} rays per CPU-second")
         note(scene["busy_note"], f"{name} busy note")
         labs = [s["lab"] for s in scene["solutions"]]
-        if labs != ["branching", "uniform", "importance", "roulette"]:
+        if labs != list(LABS):
             sys.exit(f"{name}: solutions {labs}")
         for s in scene["solutions"]:
             what = f"{name} {s['lab']}"

@@ -5,13 +5,13 @@ student release.
 Usage: convergence_test.py --build BUILD --source KIT
 
 Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
-1. A tiny study (the four labs of labs/ as they are, at 2 and 4 spp, 64x64 against the grader's
+1. A tiny study (the labs of labs/ as they are, at 2 and 4 spp, 64x64 against the grader's
    references): exit 0, the plot named at the end; convergence.csv has a row per lab and spp,
-   labs 1-3 against the depth-limited reference and lab 4 against the unbiased one, the time
+   labs 1-3 against the depth-limited reference and labs 4-5 against the unbiased one, the time
    axis by CPU time first (cpu_seconds_256, the plot's x), every figure finite and positive,
    cpu_seconds_256 and seconds_256 the CPU and wall seconds scaled to 256x256, and the samples
    per CPU-second those of the render's samples; convergence.png is a PNG of the plot's size;
-   handout.csv holds the handout's curves of the four labs, every row of
+   handout.csv holds the handout's curves of the labs it draws, every row of
    handouts/figures/convergence.csv of those labs, its CPU seconds already at 256x256.
 2. The rows of made-up renders (the viewer replaced): a render that found the machine busy is
    said in one line after the renders, with how many more did.
@@ -25,7 +25,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from checks import check, run_in_scratch_folder  # noqa: E402
+from checks import LABS, UNBIASED, check, run_in_scratch_folder  # noqa: E402
 from png_pixels import png_size  # noqa: E402
 from script_tests import (check_make_refuses, check_script_refuses, check_succeeded,  # noqa: E402
                           close, import_script, read_csv, run, script_test_arguments)
@@ -33,7 +33,7 @@ from script_tests import (check_make_refuses, check_script_refuses, check_succee
 args = script_test_arguments()
 SCRIPT, convergence_script = import_script(args.source, "convergence")
 
-LABS = ["branching", "uniform", "importance", "roulette"]
+
 FIGURES = ["cpu_seconds", "cpu_seconds_256", "samples_per_cpu_second", "relative_rmse", "rel_mse",
            "noise", "seconds", "seconds_256", "samples_per_second"]
 # The CSV's numbers have 4 significant digits.
@@ -53,8 +53,9 @@ def check_study(scratch):
                                                          for spp in (2, 4)],
           f"convergence.csv has a row per lab and spp, in order: "
           f"{[(r['lab'], r['spp']) for r in rows]}")
-    check(all(r["reference"] == ("unbiased" if r["lab"] == "roulette" else "depth_limited")
-              for r in rows), "labs 1-3 against the depth-limited reference, lab 4 the unbiased")
+    check(all(r["reference"] == ("unbiased" if r["lab"] in UNBIASED else "depth_limited")
+              for r in rows), "labs 1-3 against the depth-limited reference, labs 4 and 5 the "
+                              "unbiased")
     header = list(rows[0]) if rows else []
     check(header == convergence_script.COLUMNS and header[5] == "cpu_seconds_256" and
           header[7] == "relative_rmse",
@@ -78,9 +79,11 @@ def check_study(scratch):
     handout = read_csv(os.path.join(out, "handout.csv"))
     keys = [key for _, _, key in convergence_script.LABS]
     theirs = [r for r in read_csv(convergence_script.HANDOUT_CSV) if r["estimator"] in keys]
-    check(sorted({r["lab"] for r in handout}) == sorted(LABS) and len(handout) == len(theirs) and
+    # The labs the handout has a curve of (a later lab has none yet).
+    drawn = sorted(lab for lab, _, key in convergence_script.LABS if key)
+    check(sorted({r["lab"] for r in handout}) == drawn and len(handout) == len(theirs) and
           all(float(r["relative_rmse"]) > 0 for r in handout),
-          f"handout.csv holds the handout's curves of the four labs ({len(handout)} rows of "
+          f"handout.csv holds the handout's curves of the labs {drawn} ({len(handout)} rows of "
           f"{len(theirs)})")
     check([(float(r["cpu_seconds_256"]), float(r["samples_per_cpu_second"])) for r in handout] ==
           [(float(r["cpu_seconds"]), float(r["samples_per_cpu_second"])) for r in theirs] and

@@ -203,6 +203,11 @@ def make_class(root, outside, port):
     reasons["hanging_initializer"] = reasons["endless_loop"]
     for case, reason in reasons.items():
         expected["hostile_" + case] = ({"branching": 0}, "graded", reason)
+    # A lab 5 whose lobe dump is rewritten after the viewer wrote it: the grader, which reads the
+    # numbers as untrusted, cannot read it as the dump it asked for.
+    expected["hostile_forged_lobe_dump"] = (
+        {"glossy": 0}, "graded",
+        "the lobe check could not read what the lab's process wrote: it is not the lobe dump")
     # Correct where it is not timed, and on the timing core (the first) it cuts corners: the
     # correctness renders run on the other core, so only the speed points go.
     expected["hostile_timed_run_detector"] = ({"uniform": 10 - SPEED_POINTS}, "graded",

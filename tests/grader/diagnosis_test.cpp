@@ -4,6 +4,7 @@
 #include "messages.h"
 
 #include "diagnosis/diagnosis.h"
+#include "diagnosis/diagnosis_table.h"
 
 #include <cmath>
 
@@ -100,7 +101,7 @@ TEST_CASE("the mirror furnace names missing emission after specular bounces", "[
     // Without emission after specular bounces a mirror-walled furnace shows the camera ray's Le
     // alone: no Kd, so next-event estimation adds nothing.
     for (Lab lab : AllLabs) {
-        const std::string step = "(TODO lab" + std::to_string(static_cast<int>(lab) + 1) + ".1)";
+        const std::string step = "(" + todoName(LabStep::Emission, lab) + ")";
         const std::string cause = likeliest(
             lab, {{diffuse, correctFurnaceValue(lab, diffuse), 0.002}, {mirror, 1.0, 0.0}});
         CHECK(contains(cause, "emission after a specular bounce missing"));

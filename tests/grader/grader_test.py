@@ -20,7 +20,7 @@ import subprocess
 import tempfile
 import xml.etree.ElementTree as ET
 
-from support import LABS, arguments, check, finish, grader
+from support import LABS, UNBIASED, arguments, check, finish, grader
 
 args = arguments((["--slow"], {"action": "store_true"}),
                  (["--part"], {"choices": ("timed", "untimed")}))
@@ -58,20 +58,21 @@ def solutions_pass(tmp):
         for lab in report["labs"]:
             for c in lab["checks"]:
                 check(c["passed"], f"solution {lab['lab']}: {c['name']} passes ({c['summary']})")
-        check(set(report["speed_ratios"]) == {"uniform/branching", "importance/branching", "roulette/branching"},
+        check(set(report["speed_ratios"]) == {f"{lab}/branching" for lab in LABS[1:]},
               "the speed ratios between labs are reported")
     # Gradescope's results.json: the fields and types its specification asks for.
     g = json.load(open(out["gradescope.json"]))
     check(isinstance(g["score"], (int, float)) and isinstance(g["execution_time"], int)
-          and isinstance(g["output"], str) and isinstance(g["tests"], list) and len(g["tests"]) == 12,
-          "Gradescope results.json has score, execution_time, output and 12 tests")
+          and isinstance(g["output"], str) and isinstance(g["tests"], list) and len(g["tests"]) == 3 * len(LABS),
+          f"Gradescope results.json has score, execution_time, output and {3 * len(LABS)} tests")
     check(all(isinstance(t["name"], str) and isinstance(t["score"], (int, float))
               and isinstance(t["max_score"], (int, float)) and t["status"] in ("passed", "failed")
               and isinstance(t["output"], str) and t["visibility"] in ("visible", "hidden", "after_due_date", "after_published")
               for t in g["tests"]), "every Gradescope test has name, score, max_score, status, output, visibility")
     suites = ET.parse(out["xml"]).getroot()
-    check(suites.tag == "testsuites" and len(suites.findall(".//testcase")) == 12
-          and not suites.findall(".//failure"), "the JUnit XML parses: 12 test cases, no failures")
+    check(suites.tag == "testsuites" and len(suites.findall(".//testcase")) == 3 * len(LABS)
+          and not suites.findall(".//failure"),
+          f"the JUnit XML parses: {3 * len(LABS)} test cases, no failures")
     # The lab report: each notebook row's figures, yours and the reference's, the ratios between
     # labs, and the checks; its noise is the figure a headless render of the same lab prints.
     sections = {}  # the table rows under each "## " heading
@@ -85,12 +86,15 @@ def solutions_pass(tmp):
     rows = [row for table in sections.values() for row in table]
     # estimator, correct, frame rate yours and the reference's, samples per CPU-second, noise and
     # efficiency, each yours and the reference's.
+    # One row per lab, and a second for each roulette lab (at the graded continueProb).
+    notebook_rows = len(LABS) + len(UNBIASED)
     figures = [r for r in rows if len(r) == 10 and r[1] in ("yes", "**no**")]
-    check(len(figures) == 5 and all(r[1] == "yes" and "fps" in r[2] and "fps" in r[3]
+    check(len(figures) == notebook_rows and all(r[1] == "yes" and "fps" in r[2] and "fps" in r[3]
                                     and all(float(c) > 0 for c in r[4:]) for r in figures),
-          f"the lab report has the five notebook rows, yours and the reference's: {figures}")
+          f"the lab report has the {notebook_rows} notebook rows, yours and the reference's: "
+          f"{figures}")
     ratios = sections.get("Ratios between the labs", [])[1:]
-    check(len(ratios) == 5 and all(float(r[1]) > 0 for r in ratios),
+    check(len(ratios) == notebook_rows and all(float(r[1]) > 0 for r in ratios),
           "the lab report has the ratios between labs")
     # Lab 4 at 64 and 256 spp, the solution as the reference: the same deterministic noise, and
     # at the graded continueProb (finite variance) a ratio of about 0.5.

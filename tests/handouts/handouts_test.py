@@ -410,10 +410,11 @@ def check_handout_rows(source):
               "with their samples per CPU-second")
     convergence = import_script(os.path.join(source, "scripts"), "convergence")
     rows = convergence.handout_rows()
-    labs = {lab for lab, _, _ in convergence.LABS}
+    # The labs the handout's convergence figure has a curve of (a later lab has none yet).
+    labs = {lab for lab, _, key in convergence.LABS if key}
     check({r["lab"] for r in rows} == labs and
           all(positive(r, "cpu_seconds_256", "samples_per_cpu_second") for r in rows),
-          f"make convergence reads the handout's curves of the four labs by CPU time "
+          f"make convergence reads the handout's curves of the labs {sorted(labs)} by CPU time "
           f"({len(rows)} rows)")
 
 

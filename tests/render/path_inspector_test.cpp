@@ -174,12 +174,12 @@ TEST_CASE("inspector: the replay is the render's sample", "[solutions]") {
 
 TEST_CASE("inspector: a JSON naming no lab of the kit is refused by name", "[solutions]") {
     std::string text = inspectionJson(inspectFurnace("branching"));
-    text.replace(text.find("\"branching\""), 11, "\"glossy\"");
+    text.replace(text.find("\"branching\""), 11, "\"velvet\"");
     std::string message;
     try {
         readInspectionJson(text, "replay.json");
     } catch (const InputError& error) {
         message = error.what();
     }
-    CHECK(message.find("replay.json: the lab \"glossy\" is none of this kit's") == 0);
+    CHECK(message.find("replay.json: the lab \"velvet\" is none of this kit's") == 0);
 }

@@ -11,18 +11,20 @@ import tempfile
 KIT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
 
-def _labs_in_order():
-    """The labs' names from the one list the build, the registry and the viewer follow
-    (framework/lab_list.txt: a lab per line, its name first; # starts a comment line)."""
+def _lab_lines():
+    """The fields of each lab's line in the one list the build, the registry and the viewer
+    follow (framework/lab_list.txt: a lab per line, its name first; # starts a comment line)."""
     with open(os.path.join(KIT, "framework", "lab_list.txt"), encoding="utf-8") as f:
         lines = [line.split() for line in f]
-    names = [fields[0] for fields in lines if fields and not fields[0].startswith("#")]
-    if not names:
+    labs = [fields for fields in lines if fields and not fields[0].startswith("#")]
+    if not labs:
         raise RuntimeError("framework/lab_list.txt names no lab")
-    return tuple(names)
+    return labs
 
 
-LABS = _labs_in_order()
+LABS = tuple(fields[0] for fields in _lab_lines())
+# The labs that end paths by Russian roulette (the list's "unbiased"), in order.
+UNBIASED = tuple(fields[0] for fields in _lab_lines() if fields[2] == "unbiased")
 
 failures = []
 

@@ -327,9 +327,9 @@ private:
     }
     /// Lab 1 sends a ray for every component that is not black; the others pick one.
     bool branches() const { return lab_.identity.lab == Lab::Branching; }
-    /// Labs 3 and 4 pick a component with probabilities that follow its weight.
+    /// Labs 3 to 5 pick a component with probabilities that follow its weight.
     bool picksByProbability() const {
-        return lab_.identity.lab == Lab::Importance || lab_.identity.lab == Lab::Roulette;
+        return lab_.identity.lab != Lab::Branching && lab_.identity.lab != Lab::Uniform;
     }
     /// The step that chooses the component: lab 2's uniform pick, lab 3's probabilities, lab 4's
     /// choice as in lab 3.

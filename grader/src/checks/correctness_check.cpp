@@ -149,7 +149,7 @@ SceneComparisons renderAndCompare(const GraderSetup& setup, Lab lab, uint64_t se
         if (!scene.hidden && (scene.reference.scene == r.noiseScene || !attempt.firstImage.scene))
             attempt.firstImage = {&scene, seedBase, setup.threads, runs.images.front()};
         if (&scene == speedScene(setup)) attempt.speedSceneImages = runs.images;
-        if (lab == Lab::Roulette && scene.furnace && scene.furnace->walls == FurnaceWalls::Diffuse)
+        if (!isDepthLimited(lab) && scene.furnace && scene.furnace->walls == FurnaceWalls::Diffuse)
             found.pathLengths.push_back({scene.furnace->continueProb, runs.rays.bounce});
         found.scenes.push_back(compare(runs, scene.reference.forLab(lab), r.seeds));
         found.spreads.push_back(seedSpread(runs.images, r.width, r.height, r.tiles));

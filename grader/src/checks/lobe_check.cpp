@@ -26,7 +26,7 @@ void fail(CheckResult& correctness, std::vector<std::string> lines, const std::s
 void addLobeVerdict(const GraderSetup& setup, Lab lab, CheckResult& correctness) {
     // A seed of the grading's own: the inputs differ from one grading to another.
     const uint64_t seed = setup.seedBase * 7919 + 17;
-    const LobeDumpRun run = dumpLobe(setup.student, lab, seed, setup.scratch, limitsOf(setup));
+    const LabToolRun run = dumpLobe(setup.student, lab, seed, setup.scratch, limitsOf(setup));
     const std::string number = std::to_string(labNumber(lab));
     if (!run.ok) {
         fail(correctness, {"the lobe check ran sampleLobe and lobePdf, and the lab " + run.failure},

@@ -15,6 +15,9 @@ const char* extraBounceCause(Lab lab) {
     case Lab::Uniform: return "a black component traced?";
     case Lab::Importance: return "more than one ray per hit, or rays from near-black surfaces?";
     case Lab::Roulette: return "paths continued without ctx.continueProb's roulette?";
+    case Lab::Glossy:
+        return "paths continued without ctx.continueProb's roulette, or a glossy "
+               "ray traced below the surface?";
     default: return "rays its steps do not ask for?"; // a lab added since: no cause of its own
     }
 }

@@ -29,6 +29,9 @@ std::string bounceSpecification(Lab lab) {
     case Lab::Roulette:
         return "lab 4 continues a path with probability ctx.continueProb at every hit "
                "(TODO lab4.2)";
+    case Lab::Glossy:
+        return "lab 5 continues a path with probability ctx.continueProb at every hit, as lab 4 "
+               "does, with one ray of the picked component (TODO lab5.3, lab5.4)";
     default:
         // A lab added to the lab list since these words were written: the reference solution's
         // count is its specification until it has words of its own here.
@@ -65,7 +68,7 @@ std::string specificationDeparture(Lab lab, const RaysPerSample& student,
     if (student.bounce > 1.15 * reference.bounce + 0.02)
         return bounceSpecification(lab) +
                "; yours traces more: " + figures("bounce rays", student.bounce, reference.bounce);
-    if (lab == Lab::Roulette && student.bounce < 0.85 * reference.bounce - 0.02)
+    if (!isDepthLimited(lab) && student.bounce < 0.85 * reference.bounce - 0.02)
         return bounceSpecification(lab) +
                "; yours ends paths sooner (a constant in place of ctx.continueProb?): " +
                figures("bounce rays", student.bounce, reference.bounce);

@@ -80,7 +80,7 @@ std::string rubricText(const Rubric& r, const std::string& rubricPath, int hidde
         out << " " << labName(lab) << " "
             << (r.forLab(lab).speedJudgedBy == SpeedMeasure::Efficiency ? "efficiency"
                                                                         : "samples/s")
-            << (lab == Lab::Roulette ? "" : ",");
+            << (lab == AllLabs.back() ? "" : ",");
     out << "\n\nlimits: " << r.secondsPerRun << " s of CPU time per render thread, "
         << r.secondsPerRun / 2 << " s without a finished sample, "
         << r.secondsPerRun * WallLimitFactor

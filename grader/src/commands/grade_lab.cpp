@@ -3,6 +3,7 @@
 #include "checks/correctness_check.h"
 #include "checks/lobe_check.h"
 #include "checks/noise_check.h"
+#include "checks/pick_report.h"
 #include "checks/race_verdict.h"
 #include "checks/speed_check.h"
 
@@ -44,6 +45,11 @@ LabMeasurement measureLab(const GraderSetup& allLabs, Lab lab, StartUpTimes& sta
     // A lab that writes a lobe has its routines judged too (lobe_check.h).
     if (writesLobe(lab) && correctness.rendersFinished) {
         addLobeVerdict(setup, lab, correctness.check);
+        m.seconds.correctness += lap();
+    }
+    // A lab that failed: where its picks and its divisions part, in words (pick_report.h).
+    if (!correctness.check.passed && correctness.rendersFinished) {
+        addPickTestReport(setup, lab, correctness.check);
         m.seconds.correctness += lap();
     }
     m.correctness = correctness.check;

@@ -16,7 +16,7 @@ double furnaceValue(Lab lab, const FurnaceModel& m, const FurnaceBehaviour& b) {
     const double s = m.walls == FurnaceWalls::Mirror ? m.reflectance : 0;
     // A branch that divides by continueProb k times weighs a continued path by q^(1-k).
     const auto roulette = [&](int divisions) {
-        return lab == Lab::Roulette ? std::pow(m.continueProb, 1 - divisions) : 1.0;
+        return !isDepthLimited(lab) ? std::pow(m.continueProb, 1 - divisions) : 1.0;
     };
     const double diffuseRoulette = roulette(b.rouletteDivisionsDiffuse);
     const double specularRoulette = roulette(b.rouletteDivisionsSpecular);

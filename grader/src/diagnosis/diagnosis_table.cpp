@@ -10,20 +10,20 @@ constexpr double Pi = 3.14159265358979;
 
 /// Labs 2-4 trace the picked component and weigh it in one step (lab 4 divides by both of its
 /// probabilities in step 4.4); lab 4 has no depth limit; labs 1-2 pick nothing that can be
-/// black, so they have no near-black stop.
+/// black, so they have no near-black stop. Lab 5 has all of lab 4's in its step 5.3 ("as your
+/// lab 4"); its own steps, the lobe's, are told by the lobe check (checks/lobe_check.h).
 const std::array<ByLab<int>, 7> StepNumbers = {{
-    {1, 1, 1, 1}, // Emission
-    {2, 2, 2, 2}, // DepthLimit (lab 4's step 2 replaces it with roulette)
-    {3, 3, 3, 2}, // FirstBounce
-    {3, 4, 4, 4}, // DiffuseWeight
-    {5, 4, 4, 3}, // Refraction
-    {0, 4, 4, 4}, // ProbabilityDivision
-    {0, 0, 3, 3}, // NearBlackStop
+    {1, 1, 1, 1, 3}, // Emission
+    {2, 2, 2, 2, 3}, // DepthLimit (lab 4's step 2 replaces it with roulette)
+    {3, 3, 3, 2, 3}, // FirstBounce
+    {3, 4, 4, 4, 3}, // DiffuseWeight
+    {5, 4, 4, 3, 3}, // Refraction
+    {0, 4, 4, 4, 3}, // ProbabilityDivision
+    {0, 0, 3, 3, 3}, // NearBlackStop
 }};
 
-constexpr LabSet DepthLimited =
-    labBit(Lab::Branching) | labBit(Lab::Uniform) | labBit(Lab::Importance);
-constexpr LabSet WithNearBlackStop = labBit(Lab::Importance) | labBit(Lab::Roulette);
+constexpr LabSet DepthLimited = EveryLab & ~RouletteLabs;
+constexpr LabSet WithNearBlackStop = labBit(Lab::Importance) | RouletteLabs;
 
 std::string replaced(std::string text, const std::string& placeholder, const std::string& by) {
     if (const size_t at = text.find(placeholder); at != std::string::npos)
@@ -133,30 +133,29 @@ const std::vector<KnownBug>& knownBugs() {
         {"a depth limit is still there",
          "lab 4 ends paths only by roulette; a test of depth against ctx.maxDepth, kept from lab "
          "3, cuts every path at maxDepth and darkens the image",
-         LabStep::DepthLimit, labBit(Lab::Roulette),
-         [](FurnaceBehaviour& b) { b.depthLimitKept = true; }},
+         LabStep::DepthLimit, RouletteLabs, [](FurnaceBehaviour& b) { b.depthLimitKept = true; }},
         {"Russian-roulette weight missing", "a continued path must be divided by continueProb",
-         LabStep::ProbabilityDivision, labBit(Lab::Roulette),
+         LabStep::ProbabilityDivision, RouletteLabs,
          [](FurnaceBehaviour& b) { b.rouletteDivisionsDiffuse = b.rouletteDivisionsSpecular = 0; }},
-        {"divided by continueProb twice", "", LabStep::ProbabilityDivision, labBit(Lab::Roulette),
+        {"divided by continueProb twice", "", LabStep::ProbabilityDivision, RouletteLabs,
          [](FurnaceBehaviour& b) { b.rouletteDivisionsDiffuse = b.rouletteDivisionsSpecular = 2; }},
         // One branch of the lab's own: the mirror furnace reads 1/(1 - s*q) where a correct lab
         // gives 1/(1 - s), the diffuse furnaces are right (or the other way round).
         {"Russian-roulette weight missing on the mirror and refraction branches",
          "the diffuse branch divides a continued path by continueProb, the Ks and Kt branches do "
          "not; each branch must",
-         LabStep::ProbabilityDivision, labBit(Lab::Roulette),
+         LabStep::ProbabilityDivision, RouletteLabs,
          [](FurnaceBehaviour& b) { b.rouletteDivisionsSpecular = 0; }},
         {"Russian-roulette weight missing on the diffuse branch",
          "the Ks and Kt branches divide a continued path by continueProb, the diffuse branch does "
          "not; each branch must",
-         LabStep::ProbabilityDivision, labBit(Lab::Roulette),
+         LabStep::ProbabilityDivision, RouletteLabs,
          [](FurnaceBehaviour& b) { b.rouletteDivisionsDiffuse = 0; }},
         {"divided by continueProb twice on the mirror and refraction branches", "",
-         LabStep::ProbabilityDivision, labBit(Lab::Roulette),
+         LabStep::ProbabilityDivision, RouletteLabs,
          [](FurnaceBehaviour& b) { b.rouletteDivisionsSpecular = 2; }},
         {"divided by continueProb twice on the diffuse branch", "", LabStep::ProbabilityDivision,
-         labBit(Lab::Roulette), [](FurnaceBehaviour& b) { b.rouletteDivisionsDiffuse = 2; }},
+         RouletteLabs, [](FurnaceBehaviour& b) { b.rouletteDivisionsDiffuse = 2; }},
     };
     return bugs;
 }
@@ -191,7 +190,7 @@ const std::vector<Hint>& hints() {
          "components sit beside teal mirrors and cyan glass, a lab that divides by any other "
          "number makes some colour channels too bright and others too dark",
          LabStep::ProbabilityDivision},
-        {HintTopic::PickDivideMismatch, labBit(Lab::Importance) | labBit(Lab::Roulette),
+        {HintTopic::PickDivideMismatch, labBit(Lab::Importance) | RouletteLabs,
          "pick and division disagree: the probability you divide by must be the one you picked "
          "with; on mixed_surfaces, whose red diffuse components sit beside teal mirrors and cyan "
          "glass, strengths by luminance, channel sum or average give other probabilities than "
@@ -209,7 +208,7 @@ const std::vector<Hint>& hints() {
          "zero, is this noisy; the probabilities should follow reduceMax(Kd), reduceMax(Ks), "
          "reduceMax(Kt)",
          std::nullopt},
-        {HintTopic::TooNoisy, labBit(Lab::Roulette),
+        {HintTopic::TooNoisy, RouletteLabs,
          "Russian roulette should pick the component by importance, as in lab 3", std::nullopt},
         {HintTopic::TooNoisy, EveryLab,
          "more noise than the reference at the same mean: is a component sampled with the wrong "

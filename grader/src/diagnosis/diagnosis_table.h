@@ -32,7 +32,14 @@ std::string todoName(LabStep step, Lab lab);
 /// The labs a diagnosis or hint is about, as a set of bits (labBit).
 using LabSet = unsigned;
 constexpr LabSet labBit(Lab lab) { return 1u << static_cast<unsigned>(lab); }
-constexpr LabSet EveryLab = 0xF;
+constexpr LabSet EveryLab = (1u << LabCount) - 1;
+/// The labs that end paths by Russian roulette (unbiased in the lab list: labs 4 and 5).
+constexpr LabSet RouletteLabs = [] {
+    LabSet labs = 0;
+    for (Lab lab : AllLabs)
+        if (!isDepthLimited(lab)) labs |= labBit(lab);
+    return labs;
+}();
 
 /// How a (possibly wrong) lab behaves in a furnace, in the few numbers that decide its value.
 struct FurnaceBehaviour {

@@ -287,72 +287,93 @@ std::vector<double> regionMeans(const std::vector<float>& image, int width, int 
     return sums;
 }
 
-LobeDumpRun dumpLobe(const LabRunner& runner, Lab lab, uint64_t seed, const std::string& scratch,
-                     const RenderLimits& limits) {
+LabToolRun runLabTool(const LabToolRequest& request, const RenderLimits& limits) {
+    const LabRunner& runner = *request.runner;
     // A request of one "seed" with no image, for the process limits and the failure's words.
     RenderRequest r;
     r.runner = &runner;
-    r.identity.lab = lab;
-    r.scratch = scratch;
+    r.identity.lab = request.lab;
+    r.scratch = request.scratch;
     r.threads = 1;
-    const char* name = "lobe.bin";
     char stall[32];
     std::snprintf(stall, sizeof stall, "%g", limits.stallSeconds);
     std::vector<std::string> arguments = {
-        "--lab", std::string(labName(lab)), "--seed", std::to_string(seed), "--watchdog", stall};
+        "--lab", std::string(labName(request.lab)), "--watchdog", stall, "--threads", "1"};
     if (!runner.sandboxed() && runner.implementation == Implementation::Solution)
         arguments.push_back("--solution");
-    LobeDumpRun run;
+    LabToolRun run;
     RenderResult result;
-    const std::string path = scratch + "/" + name;
-    fs::remove(path);
+    const std::string& name = request.collect;
+    if (!name.empty()) fs::remove(request.scratch + "/" + name);
     if (runner.sandboxed()) {
         SandboxRun sandboxed;
-        sandboxed.command = {"/pathlab/viewer", "--lobe-dump", name};
-        sandboxed.command.insert(sandboxed.command.end(), arguments.begin(), arguments.end());
+        sandboxed.command = {"/pathlab/viewer"};
         sandboxed.files = {{runner.viewer, "/pathlab/viewer"},
-                           {runner.libraryFor(lab), "/pathlab/labs.so"}};
+                           {runner.libraryFor(request.lab), "/pathlab/labs.so"}};
+        if (!request.scene.empty()) {
+            const SandboxedScene scene = sandboxedScene(request.scene);
+            sandboxed.command.insert(sandboxed.command.end(), {"-c", scene.ecs});
+            sandboxed.files.insert(sandboxed.files.end(), scene.files.begin(), scene.files.end());
+        }
+        sandboxed.command.insert(sandboxed.command.end(), request.arguments.begin(),
+                                 request.arguments.end());
+        sandboxed.command.insert(sandboxed.command.end(), arguments.begin(), arguments.end());
         sandboxed.environment = {{"PATHLAB_LABS_LIBRARY", "/pathlab/labs.so"}};
-        sandboxed.collect = {name};
+        if (!name.empty()) sandboxed.collect = {name};
         sandboxed.scratchBytes = 64LL << 20;
         ProcessLimits sandboxLimits = processLimits(r, limits);
         sandboxLimits.fileBytes = 64LL << 20;
         sandboxLimits.processes = 64 + 1;
         SandboxOutcome outcome = runInSandbox(sandboxed, sandboxLimits, runner.sandbox);
         result.process = outcome.process;
-        if (outcome.files.count(name)) run.bytes = outcome.files[name];
-        if (!outcome.problem.empty() && result.process.succeeded()) {
+        if (!name.empty() && outcome.files.count(name)) run.bytes = outcome.files[name];
+        if (!outcome.problem.empty() && request.succeeded(result.process)) {
             run.failure = "its output could not be read: " + outcome.problem;
             run.failureKind = "unreadable output";
             return run;
         }
     } else {
-        std::vector<std::string> argv = {runner.viewer, "--lobe-dump", path};
+        std::vector<std::string> argv = {runner.viewer};
+        if (!request.scene.empty()) argv.insert(argv.end(), {"-c", request.scene});
+        for (const std::string& argument : request.arguments)
+            argv.push_back(argument == name ? request.scratch + "/" + name : argument);
         argv.insert(argv.end(), arguments.begin(), arguments.end());
         ProcessOptions options;
         options.cpus = runner.cpus;
         result.process = runProcess(argv, processLimits(r, limits), options);
-        if (result.process.succeeded()) {
+        if (!name.empty() && request.succeeded(result.process)) {
             try {
-                run.bytes = readFile(path);
+                run.bytes = readFile(request.scratch + "/" + name);
             } catch (const InputError&) {
             }
         }
     }
+    run.output = result.process.output;
     result.outputNote = result.process.outputNote();
-    if (!result.process.succeeded()) {
+    if (!request.succeeded(result.process)) {
         describeFailure(r, limits, result);
         run.failure = result.failure;
         run.failureKind = result.failureKind;
         return run;
     }
-    if (run.bytes.empty()) {
-        run.failure = std::string("it wrote no ") + name;
+    if (!name.empty() && run.bytes.empty()) {
+        run.failure = "it wrote no " + name;
         run.failureKind = "unreadable output";
         return run;
     }
     run.ok = true;
     return run;
+}
+
+LabToolRun dumpLobe(const LabRunner& runner, Lab lab, uint64_t seed, const std::string& scratch,
+                    const RenderLimits& limits) {
+    LabToolRequest request;
+    request.runner = &runner;
+    request.lab = lab;
+    request.scratch = scratch;
+    request.collect = "lobe.bin";
+    request.arguments = {"--lobe-dump", request.collect, "--seed", std::to_string(seed)};
+    return runLabTool(request, limits);
 }
 
 RenderIdentity requestedIdentity(const LabRunner& runner, Lab lab, const LabParameters& parameters,

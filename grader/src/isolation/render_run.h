@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -100,18 +101,36 @@ struct RenderLimits {
 /// Runs one viewer process for all the request's seeds; the limits hold for that process.
 RenderResult renderLab(const RenderRequest& request, const RenderLimits& limits);
 
-/// What a lab's lobe routines gave for the grader's inputs (viewer --lobe-dump), as its process
-/// wrote them: judged by the grader, never trusted (pathlab/warp/phong_lobe_check.h).
-struct LobeDumpRun {
-    bool ok = false;
-    std::string failure, failureKind; ///< as RenderResult's
-    std::string bytes;                ///< the dump file
+/// A run of the viewer for one of its tools other than a render (--lobe-dump, --pick-test) with
+/// a lab of `runner`, in the sandbox where the runner has one.
+struct LabToolRequest {
+    const LabRunner* runner = nullptr;
+    Lab lab = Lab::Branching;
+    std::string scene;                  ///< .ecs path, or "" for a tool that needs none
+    std::vector<std::string> arguments; ///< the tool's; `collect` among them names its file
+    std::string collect;                ///< the file it writes, read back ("": none)
+    std::string scratch;
+    /// Which outcomes are a finished run (the pick test ends with 1 when the picks differ).
+    std::function<bool(const ProcessOutcome&)> succeeded = [](const ProcessOutcome& p) {
+        return p.succeeded();
+    };
 };
 
-/// Runs `runner`'s viewer for `lab` with --lobe-dump at `seed`, in the sandbox where the runner
-/// has one, under `limits`; the file goes through `scratch`.
-LobeDumpRun dumpLobe(const LabRunner& runner, Lab lab, uint64_t seed, const std::string& scratch,
-                     const RenderLimits& limits);
+/// What it gave: the file and the output, as the lab's process wrote them (judged by the
+/// grader, never trusted), or why it failed in a render's words.
+struct LabToolRun {
+    bool ok = false;
+    std::string failure, failureKind; ///< as RenderResult's
+    std::string bytes;                ///< the collected file
+    std::string output;               ///< standard output and error
+};
+
+LabToolRun runLabTool(const LabToolRequest& request, const RenderLimits& limits);
+
+/// viewer --lobe-dump at `seed`: what a lab's lobe routines gave for the grader's inputs
+/// (pathlab/warp/phong_lobe_check.h judges them).
+LabToolRun dumpLobe(const LabRunner& runner, Lab lab, uint64_t seed, const std::string& scratch,
+                    const RenderLimits& limits);
 
 /// A scene's files as a sandboxed render sees them: under /scene, laid out as on the host
 /// relative to the .ecs, so that no path of the host shows; `ecs` is the .ecs inside.

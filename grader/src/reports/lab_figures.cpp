@@ -41,6 +41,7 @@ std::string notebookLabel(Lab lab) {
     switch (lab) {
     case Lab::Uniform: return "uniform pick" + number;
     case Lab::Importance: return "importance pick" + number;
+    case Lab::Glossy: return "glossy lobe" + number;
     default: return std::string(labName(lab)) + number; // "branching (lab 1)"
     }
 }
@@ -101,7 +102,7 @@ Machine thisMachine(int threads) {
     return m;
 }
 
-bool measuresLateNoise(const NotebookEstimator& row) { return !isDepthLimited(row.lab); }
+bool measuresLateNoise(const NotebookEstimator& row) { return row.lab == Lab::Roulette; }
 
 namespace {
 

@@ -1,5 +1,5 @@
-// Mutant 'glossy_cosine_lobe': sampleLobe draws cos α from a cosine lobe (n = 1) whatever the exponent
-// A plausible student bug; the lab tests must fail it (tests/estimators/CMakeLists.txt).
+// Mutant 'glossy_cosine_lobe': sampleLobe draws cos α from a cosine lobe (n = 1) whatever the
+// exponent A plausible student bug; the lab tests must fail it (tests/estimators/CMakeLists.txt).
 // Lab 5: sampling a glossy lobe (handouts/05-glossy-lobe.md).
 #include "pathlab/lab.h"
 
@@ -10,7 +10,7 @@ namespace pathlab::glossy {
 
 // The Phong lobe cosⁿ α about z, normalised: p(ω) = (n + 1) / (2π) · cosⁿ α. Its marginal in
 // α has the CDF 1 − cosⁿ⁺¹ α, inverted with 1 − u (as uniform as u); φ is uniform (TODO lab5.1).
-Vec3 sampleLobe(Vec2 u, float exponent) {
+Vec3 sampleLobe(Vec2 u, float /*exponent: ignored, the bug*/) {
     const float cosAlpha = std::sqrt(1.0f - u.x);
     const float sinAlpha = std::sqrt(std::max(0.0f, 1.0f - cosAlpha * cosAlpha));
     const float phi = 2.0f * Pi * u.y;

@@ -1,6 +1,6 @@
-// Mutant 'glossy_no_jacobian': sampleLobe draws α uniformly in its cosⁿ weight, forgetting the sin α of the solid angle: cos α = u^(1/n)
-// A plausible student bug; the lab tests must fail it (tests/estimators/CMakeLists.txt).
-// Lab 5: sampling a glossy lobe (handouts/05-glossy-lobe.md).
+// Mutant 'glossy_no_jacobian': sampleLobe draws α uniformly in its cosⁿ weight, forgetting the sin
+// α of the solid angle: cos α = u^(1/n) A plausible student bug; the lab tests must fail it
+// (tests/estimators/CMakeLists.txt). Lab 5: sampling a glossy lobe (handouts/05-glossy-lobe.md).
 #include "pathlab/lab.h"
 
 #include <algorithm>
