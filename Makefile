@@ -87,8 +87,11 @@ sweep:
 # on the same random numbers, with the first vertex where they part, where the kit has it (the
 # student release has no solutions: there it shows your lab's paths alone). X and Y name the
 # pixel of the 512x512 Cornell box (0 0 the top left); LAB=roulette for another lab (default
-# branching), SAMPLES=16 for more samples, ARGS="--continue-prob 0.8" for other parameters.
-INSPECT_SCENE = models/cornell_box_VI2_Specular.ecs
+# branching), SAMPLES=16 for more samples, ARGS="--continue-prob 0.8" for other parameters. A lab
+# that samples a glossy lobe (the lab list's fourth field) is inspected on veach_plates at
+# continueProb 0.8, the scene make run shows it on.
+LOBE_LABS := $(shell awk '!/^[ \t]*\#/ && NF == 4 {print $$1}' framework/lab_list.txt)
+INSPECT_SCENE = $(if $(filter $(LAB),$(LOBE_LABS)),models/veach_plates.ecs --continue-prob 0.8,models/cornell_box_VI2_Specular.ecs)
 inspect: configure
 	@test -n "$(X)" -a -n "$(Y)" || { echo "make inspect: give the pixel, e.g. make inspect LAB=roulette X=30 Y=256" >&2; exit 2; }
 	@cmake --build $(BUILD) -j $(JOBS) --target viewer

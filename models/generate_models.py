@@ -384,7 +384,7 @@ def veach_plates():
     each turned so that the camera sees the row of four sphere lights reflected in it, before a
     dark diffuse wall and over a diffuse floor. Sampling the lobe alone is noisy where a rough
     plate reflects a small light, sampling the lights alone where a sharp plate reflects a large
-    one: labs 5 and 6's scene."""
+    one: lab 5's scene."""
     mesh = Mesh()
     camera = (0.0, 2.0, 9.0)
     lights_centre = (0.0, 4.2, -2.5)
@@ -419,22 +419,27 @@ def veach_plates():
     write_mtl(os.path.join(HERE, "veach_plates.mtl"), materials)
     write_ecs(os.path.join(HERE, "veach_plates.ecs"),
               "Veach's glossy plates (rough to sharp) lit by four lights (small to large) of one\n"
-              "power: labs 5 and 6.",
+              "power: lab 5 (lobe sampling alone).",
               "-i veach_plates.obj\n-vp 0 2 9\n-vi 0 1.4 0\n-vu 0 1 0\n-fov 40\n")
     return n
 
 
 GLOSSY_FURNACE_KS = 0.8
 GLOSSY_FURNACE_EXPONENT = 12
+GLOSSY_FURNACE_TILT = 60  # degrees from the plate's normal, glossy_furnace_tilted's view
 
 
 def glossy_furnace():
-    """A glossy plate (Ks k, a Phong lobe of exponent n) seen head-on inside a closed sphere that
-    emits Le = 1 and reflects nothing. Seen along its normal, the plate's lobe is about the normal
-    and reflects exactly k of the light arriving from all around (the (n + 2)/(2π) of the
-    modified Phong BRDF: handout 05), so its radiance is k·Le; the camera's field of view is 1
-    degree, where the lobe's tilt loses less than 1e-4 of it past the horizon. Labs 5 and 6's
-    analytic check of the glossy bounce."""
+    """A glossy plate (Ks k, a Phong lobe of exponent n) seen inside a closed sphere that emits
+    Le = 1 and reflects nothing, in two views. Head-on (glossy_furnace) the plate's lobe lies
+    about its normal and reflects exactly k of the light arriving from all around (the (n + 2)/(2π)
+    of the modified Phong BRDF: handout 05), so its radiance is k·Le; the camera's field of view
+    is 1 degree, where the lobe's tilt loses less than 1e-4 of it past the horizon. Seen at
+    GLOSSY_FURNACE_TILT degrees (glossy_furnace_tilted, the same mesh), the lobe leans toward the
+    horizon and reflects k·Le·ρ(β), ρ the lobe's integral of cos θ above the surface (about 0.503
+    at 60 degrees and n = 12; the grader integrates it), where a mirror would still show k·Le: the
+    view tells a glossy bounce from a mirror one. Its field of view is 0.05 degrees, across which
+    ρ changes by less than 0.1%. Lab 5's analytic checks of the glossy bounce."""
     mesh = Mesh()
     mesh.sphere(mesh.group("enclosure", "glow"), (0.0, 0.0, 0.0), 1.0, 64, 32, outward=False, smooth=False)
     mesh.polygon(mesh.group("plate", "plate"), [(-0.4, -0.4, 0), (0.4, -0.4, 0), (0.4, 0.4, 0), (-0.4, 0.4, 0)],
@@ -450,6 +455,12 @@ def glossy_furnace():
               f"Glossy furnace: a glossy plate (Ks {k:g}, Phong exponent {e}) seen head-on inside a sphere\n"
               f"that emits Le = 1 and reflects nothing: its radiance is Ks·Le = {k:g}.",
               "-i glossy_furnace.obj\n-vp 0 0 -0.8\n-vi 0 0 0\n-vu 0 1 0\n-fov 1\n")
+    tilt = math.radians(GLOSSY_FURNACE_TILT)
+    at = (0.0, 0.8 * math.sin(tilt), -0.8 * math.cos(tilt))
+    write_ecs(os.path.join(HERE, "glossy_furnace_tilted.ecs"),
+              f"The glossy furnace's plate seen at {GLOSSY_FURNACE_TILT} degrees from its normal: its lobe leans\n"
+              f"toward the horizon and reflects Ks·Le·rho, rho about 0.503 (a mirror would show Ks·Le).",
+              f"-i glossy_furnace.obj\n-vp {at[0]:.6g} {at[1]:.6g} {at[2]:.6g}\n-vi 0 0 0\n-vu 0 1 0\n-fov 0.05\n")
     return n
 
 

@@ -39,6 +39,7 @@ extra=()
 if [ "${routines[$lab]}" = lobe ]; then
     scene=models/veach_plates.ecs
     extra=(--continue-prob 0.8)
+    what="$what on veach_plates at continueProb 0.8"
 fi
 
 # The steps of the student's lab still marked PATHLAB_TODO, in one line (a marker may go on to

@@ -195,8 +195,10 @@ int testWarp(const RenderOptions& options) {
     std::printf("%s", describeLabWarpTests(tests).c_str());
     if (!options.warpImage.empty()) {
         writeWarpTestImage(options.warpImage, tests);
-        std::printf("wrote %s: per exponent, the samples counted, the density's expectation, "
-                    "and their difference (blue: fewer than expected, red: more)\n",
+        std::printf("wrote %s: a row per exponent (1, 12, 60 from the top); in each, theta from "
+                    "the lobe's axis down (0 to 180 degrees) and phi across: the samples "
+                    "counted, lobePdf's expectation, and their difference (blue: fewer than "
+                    "expected, red: more)\n",
                     options.warpImage.c_str());
     }
     return tests.passed ? 0 : 1;

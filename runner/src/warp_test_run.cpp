@@ -102,11 +102,11 @@ void writeLobeDump(const std::string& path, Lab lab, Implementation implementati
     const RenderWatchdog watchdog(
         progress, watchdogSeconds, [watched] { return watched; }, true);
     const LabCrashLine crashLine(watched);
-    progress.passStarts(uint64_t(LobeDumpSamples + LobeDumpDensityPoints) *
-                        WarpTestExponents.size());
+    const std::vector<float> exponents = lobeCheckExponents(seed);
+    progress.passStarts(uint64_t(LobeDumpSamples + LobeDumpDensityPoints) * exponents.size());
     const std::vector<Vec2> numbers = lobeDumpNumbers(seed, LobeDumpSamples);
     LobeDump dump;
-    for (float exponent : WarpTestExponents) {
+    for (float exponent : exponents) {
         LobeDumpExponent& e = dump.exponents.emplace_back();
         e.exponent = exponent;
         for (const Vec2& u : numbers) {

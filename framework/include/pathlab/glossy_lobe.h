@@ -1,5 +1,5 @@
 #pragma once
-/// The glossy component of labs 5 and 6: a Phong lobe about the mirror direction.
+/// The glossy component of lab 5: a Phong lobe about the mirror direction.
 
 #include "pathlab/color.h"
 #include "pathlab/constants.h"

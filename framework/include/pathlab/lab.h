@@ -10,9 +10,9 @@
 ///
 ///   Types      Color (linear RGB: + - * / += *= /=, c[i], reduceMax, average, isBlack,
 ///              isFinite), Vec3 (+ - * / +=, dot, cross, length, normalize), Vec2, Ray (origin,
-///              direction: unit length, kind), RayKind (Camera, Diffuse, Specular), Hit (found,
-///              position, normal, geometricNormal, frontFace, distance, material, emitted),
-///              Material (Kd, Ks, Kt, Ni, Ke, Ns).
+///              direction: unit length, kind), RayKind (Camera, Diffuse, Specular, Glossy),
+///              Hit (found, position, normal, geometricNormal, frontFace, distance, material,
+///              emitted), Material (Kd, Ks, Kt, Ni, Ke, Ns).
 ///   Tracing    ctx.trace(ray) -> Hit; ctx.directLight(hit) -> Color (next-event estimation).
 ///              A mistake these or the bounces can see (a missed hit, a direction that is not
 ///              unit length) stops the program with "labs/FILE.cpp:LINE: check failed: ...",
@@ -20,11 +20,11 @@
 ///   Bounces    diffuseRay(hit, u), mirrorRay(ray, hit), refractionRay(ray, hit);
 ///              sampleCosineHemisphere(normal, u) underneath diffuseRay, and its density
 ///              cosineHemispherePdf.
-///   Glossy     labs 5-6: a material with Ns > 0 has a glossy lobe where Ks is a mirror in
+///   Glossy     lab 5: a material with Ns > 0 has a glossy lobe where Ks is a mirror in
 ///              labs 1-4; glossyRay(ray, hit, d) leaves in the lobe's direction d, and
 ///              phongBrdf(m, cosAlpha) is its BRDF (handout 05).
 ///   Randomness ctx.sampler.get1D() -> float in [0,1), ctx.sampler.get2D() -> Vec2.
-///   Parameters ctx.maxDepth (default 3), ctx.continueProb (default 0.1).
+///   Parameters ctx.maxDepth (default 3), ctx.continueProb (default 0.1; labs 4-5).
 ///   Bookkeeping PATHLAB_TODO("lab1.2", depth) marks a step not written yet (and the names it
 ///              will use): it warns once, naming the file and line, and the program runs on.
 ///

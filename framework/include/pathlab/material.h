@@ -14,7 +14,7 @@ struct Material {
     float Ni = 1.0f; ///< index of refraction of the inside (the side the normal points away from)
     Color Ke;        ///< emitted radiance, from the front side only
     /// The exponent of Ks's glossy (Phong) lobe about the mirror direction, from an MTL material
-    /// with `illum 2` and `Ns`; 0 where Ks is a perfect mirror. Labs 5 and 6 use it (handout
+    /// with `illum 2` and `Ns`; 0 where Ks is a perfect mirror. Lab 5 uses it (handout
     /// 05); labs 1–4 take every Ks for a mirror, as their handouts say.
     float Ns = 0.0f;
 };

@@ -12,7 +12,7 @@ enum class RayKind {
     Camera,   ///< a primary ray from the eye
     Diffuse,  ///< left a surface in a cosine-sampled direction
     Specular, ///< left a surface by mirror reflection or refraction
-    Glossy,   ///< left a surface in a direction sampled from a glossy lobe (labs 5 and 6)
+    Glossy,   ///< left a surface in a direction sampled from a glossy lobe (lab 5)
 };
 
 /// A half-line origin + t·direction, t > 0. `direction` is unit length.

@@ -22,7 +22,7 @@ Ray mirrorRay(const Ray& ray, const Hit& hit, CallSite caller = {});
 /// under total internal reflection it is the mirror ray instead, so no energy is lost.
 Ray refractionRay(const Ray& ray, const Hit& hit, CallSite caller = {});
 
-/// Labs 5 and 6: the ray leaving `hit` in `lobeDirection`, a direction given in the frame of
+/// Lab 5: the ray leaving `hit` in `lobeDirection`, a direction given in the frame of
 /// the glossy lobe (z along the mirror reflection of `ray`, as sampleLobe returns it), turned
 /// into the world. It may point below the surface, where the lobe reaches past the horizon:
 /// such a ray carries nothing (its cos θ is negative). `lobeDirection` must be a unit vector

@@ -26,6 +26,7 @@ std::string materialText(const Material& m) {
     add("Ks", m.Ks);
     add("Kt", m.Kt);
     add("Ke", m.Ke);
+    if (m.Ns > 0) text += " Ns " + threeDigits(m.Ns); // Ks is a glossy lobe (lab 5)
     return text.empty() ? "black" : text;
 }
 

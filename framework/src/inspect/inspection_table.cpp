@@ -118,7 +118,8 @@ std::string inspectionTable(const PixelInspection& inspection) {
     out +=
         "(throughput: the weight the lab gave light found at the vertex; emission + and direct +:\n"
         " what it added there; went on by: the ray to the next vertex and the probability divided\n"
-        " by, ? where it cannot be measured: a ray that left the scene, a vertex NOT LINEAR" +
+        " by, ? where it cannot be measured: a ray that left the scene, a vertex NOT LINEAR, a\n"
+        " glossy ray (weighted by f cos θ / p, not by one probability)" +
         std::string(weightedByOther ? ";\n weighted by Kt: the ray's weight is another component's "
                                       "colour, not its own's.)\n"
                                     : ".)\n");

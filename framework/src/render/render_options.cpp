@@ -270,7 +270,7 @@ estimator
            labNames(" | ") + " (default " + std::string(labName(AllLabs[0])) + ")\n" +
            R"(  --solution             run the reference solution instead of your labs/ code
   --max-depth N          labs 1-3: bounces after the primary hit (default 3)
-  --continue-prob P      lab 4: Russian-roulette continuation probability, 0<P<1 (default 0.1)
+  --continue-prob P      labs 4-5: Russian-roulette continuation probability, 0<P<1 (default 0.1)
   --seed S               random seed (default 0); the image depends only on it
   --threads N            worker threads (default: all cores)
   --reverse-tiles        render the tiles last to first: the same image when the lab takes

@@ -37,6 +37,12 @@ std::vector<Vec2> lobeDumpNumbers(uint64_t seed, uint32_t count) {
     return numbers;
 }
 
+std::vector<float> lobeCheckExponents(uint64_t seed) {
+    RandomStream random(seed ^ 0x5851f42d4c957f2dull);
+    const float first = 1 + random.nextFloat(), second = 8 + 16 * random.nextFloat();
+    return {first, second, 40 + 60 * random.nextFloat()};
+}
+
 std::vector<Vec3> lobeCheckDirections(uint64_t seed, float exponent, uint32_t count) {
     // A stream of its own, apart from the samples' numbers.
     RandomStream random(seed ^ 0x9e3779b97f4a7c15ull);

@@ -1,5 +1,6 @@
 #include "pathlab/warp/phong_lobe_check.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -49,6 +50,44 @@ WarpTestResult checkSamples(const LobeDumpExponent& e, double alpha, const std::
                                   r.worst.observed, r.worst.expected, step.c_str()));
     r.passed = r.notDirections == 0 && r.belowSurface == 0 && r.fit.pValue >= alpha;
     return r;
+}
+
+/// Mapped through the lobe's own CDF, (cos^(n+1) α, φ/2π) of its directions is uniform over
+/// [0, 1)² (handout 05's inversion, read backwards): a chi-square test of that over
+/// UniformCells² cells sees inside the warp test's cells, where a sampler whose directions are
+/// few (cell centres) or clumped could match each cell's count and still not be the lobe.
+constexpr int UniformCells = 50;
+
+void checkUniformAfterCdf(const LobeDumpExponent& e, double alpha, const std::string& step,
+                          std::vector<std::string>& problems) {
+    std::vector<double> observed(UniformCells * UniformCells, 0.0);
+    for (const Vec3& w : e.samples) {
+        const double t = std::pow(std::fmax(0.0, std::fmin(1.0, double(w.z))), e.exponent + 1.0);
+        double phi = std::atan2(double(w.y), double(w.x));
+        if (phi < 0) phi += 2 * Pi;
+        const int row = std::min(UniformCells - 1, static_cast<int>(t * UniformCells));
+        const int column =
+            std::min(UniformCells - 1, static_cast<int>(phi / (2 * Pi) * UniformCells));
+        observed[static_cast<size_t>(row * UniformCells + column)] += 1;
+    }
+    const std::vector<double> expected(observed.size(),
+                                       double(e.samples.size()) / double(observed.size()));
+    const ChiSquareFit fit = chiSquareFit(observed, expected);
+    if (fit.pValue >= alpha) return;
+    size_t worst = 0;
+    for (size_t i = 0; i < observed.size(); ++i)
+        if (std::fabs(observed[i] - expected[i]) > std::fabs(observed[worst] - expected[worst]))
+            worst = i;
+    const double t = (double(worst / UniformCells) + 0.5) / UniformCells;
+    const double phi = (double(worst % UniformCells) + 0.5) / UniformCells * 360;
+    problems.push_back(format("sampleLobe's directions at exponent %g are not spread as the "
+                              "lobe's: through the lobe's CDF, cos^(n+1) α and φ/2π should be "
+                              "uniform in [0, 1) and are not (chi-square p = %.2g), most off near "
+                              "α = %.1f°, φ = %.0f°, with %.0f directions where %.0f are expected "
+                              "(%s)",
+                              e.exponent, fit.pValue,
+                              std::acos(std::pow(t, 1 / (e.exponent + 1.0))) * Degrees, phi,
+                              observed[worst], expected[worst], step.c_str()));
 }
 
 /// lobePdf's values against the lobe's density: one line for the worst point, or for a constant
@@ -102,10 +141,15 @@ PhongLobeFinding checkAgainstPhongLobe(const LobeDump& dump, uint64_t seed, doub
                                        int labNumber) {
     PhongLobeFinding finding;
     const std::string number = std::to_string(labNumber);
-    const double each = sidakAlpha(alpha, static_cast<int>(dump.exponents.size()));
+    // Two tests of the directions per exponent share the false-fail rate.
+    const double each = sidakAlpha(alpha, 2 * static_cast<int>(dump.exponents.size()));
+    const std::string sampling = "TODO lab" + number + ".1";
     for (const LobeDumpExponent& e : dump.exponents) {
-        finding.sampling.push_back(
-            checkSamples(e, each, "TODO lab" + number + ".1", finding.problems));
+        const size_t before = finding.problems.size();
+        finding.sampling.push_back(checkSamples(e, each, sampling, finding.problems));
+        // Within the cells, once the directions are directions above the plane in them.
+        if (finding.problems.size() == before)
+            checkUniformAfterCdf(e, each, sampling, finding.problems);
         checkDensities(e, seed, "TODO lab" + number + ".2", finding.problems);
     }
     finding.passed = finding.problems.empty();

@@ -1,18 +1,21 @@
 #pragma once
-/// The glossy furnace (models/glossy_furnace.ecs) as a grading scene of the labs that write a
-/// glossy lobe: a plate seen head-on inside a sphere that emits Le = 1 and reflects nothing, whose
-/// radiance is its Ks exactly (the modified Phong BRDF reflects all of Ks about the normal;
-/// handout 05). Its reference is that value, read from the scene's own material, with no
-/// standard error; labs 1-4 are not graded on it.
+/// The glossy furnaces (models/glossy_furnace.ecs and glossy_furnace_tilted.ecs) as grading
+/// scenes of the labs that write a glossy lobe: a plate inside a sphere that emits Le = 1 and
+/// reflects nothing, seen head-on, where its radiance is its Ks exactly (the modified Phong BRDF
+/// reflects all of Ks about the normal; handout 05), and at 60 degrees, where it is Ks·ρ(β) with
+/// ρ the lobe's reflectance above the surface (pathlab/warp/phong_albedo.h) and a mirror would
+/// still show Ks: the view that tells a glossy bounce from a mirror one. Each reference is its
+/// value, from the scene's own material and camera, with no standard error; labs 1-4 are not
+/// graded on them.
 
 #include "checks/grader_setup.h"
 
 namespace pathlab::grader {
 
-/// The scene's name in models/.
-inline constexpr const char* GlossyFurnaceScene = "glossy_furnace";
+/// The scenes' names in models/.
+inline constexpr const char* GlossyFurnaceScenes[] = {"glossy_furnace", "glossy_furnace_tilted"};
 
-/// The scene, for the labs of the kit that write a lobe; nothing when none does.
-std::optional<GradingScene> glossyFurnaceScene(const Rubric& rubric);
+/// The scenes, for the labs of the kit that write a lobe; none when no lab does.
+std::vector<GradingScene> glossyFurnaceScenes(const Rubric& rubric);
 
 } // namespace pathlab::grader

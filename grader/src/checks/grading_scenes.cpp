@@ -107,8 +107,7 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const SceneSources
         scenes.push_back(std::move(s));
     }
     scenes.push_back(parameterCheckScene(rubric));
-    if (std::optional<GradingScene> glossy = glossyFurnaceScene(rubric))
-        scenes.push_back(std::move(*glossy));
+    for (GradingScene& glossy : glossyFurnaceScenes(rubric)) scenes.push_back(std::move(glossy));
     if (sources.hidden.empty()) return scenes;
     const std::vector<std::string> hidden = hiddenScenePaths(sources.hidden);
     for (size_t i = 0; i < hidden.size(); ++i) {

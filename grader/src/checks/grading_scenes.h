@@ -27,7 +27,7 @@ struct SceneSources {
 };
 
 /// The rubric's public scenes (models/NAME.ecs) with their stored references, then the parameter
-/// check's furnace (analytic), the glossy furnace for the labs that write a lobe (analytic), then
+/// check's furnace (analytic), the glossy furnaces for the labs that write a lobe (analytic), then
 /// the hidden scenes with references measured from the solutions `solution` runs. Measured
 /// references are kept in the cache and taken from there while the scene files, rubric and kit they
 /// were made from are unchanged, so a batch measures each scene once. A public scene without a

@@ -35,7 +35,8 @@ void addLobeVerdict(const GraderSetup& setup, Lab lab, CheckResult& correctness)
     }
     LobeDump dump;
     std::string problem;
-    if (!readLobeDump(run.bytes, WarpTestExponents, dump, problem)) {
+    const std::vector<float> exponents = lobeCheckExponents(seed);
+    if (!readLobeDump(run.bytes, exponents, dump, problem)) {
         fail(correctness,
              {"the lobe check could not read what the lab's process wrote: " + problem},
              "the lobe check's output could not be read");
@@ -43,11 +44,13 @@ void addLobeVerdict(const GraderSetup& setup, Lab lab, CheckResult& correctness)
     }
     const PhongLobeFinding finding =
         checkAgainstPhongLobe(dump, seed, LobeCheckFalseFailRate, labNumber(lab));
-    char how[200];
+    char how[260];
     std::snprintf(how, sizeof how,
-                  "%u directions at each of the exponents 1, 12 and 60, and the density at %u "
-                  "points each; right routines fail with probability %g",
-                  LobeDumpSamples, LobeDumpDensityPoints, LobeCheckFalseFailRate);
+                  "%u directions at each of the exponents %.3g, %.3g and %.3g (drawn for this "
+                  "grading), and the density at %u points each; right routines fail with "
+                  "probability %g",
+                  LobeDumpSamples, exponents[0], exponents[1], exponents[2], LobeDumpDensityPoints,
+                  LobeCheckFalseFailRate);
     if (finding.passed) {
         correctness.details.push_back("the lobe check: sampleLobe and lobePdf follow the Phong "
                                       "lobe (" +

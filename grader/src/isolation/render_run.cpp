@@ -173,6 +173,13 @@ void describeFailure(const RenderRequest& r, const RenderLimits& limits, RenderR
                       limits.stallSeconds);
         result.failure = words;
         result.failureKind = "endless loop";
+    } else if (p.usedUpCpuTime() && r.seeds == 0) {
+        // A tool run (runLabTool), which renders no seed.
+        std::snprintf(words, sizeof words,
+                      "used up its CPU time (%.0f s): too slow for the limit (%g s per thread)",
+                      p.cpuSeconds, limits.cpuSecondsPerThread);
+        result.failure = words;
+        result.failureKind = "too slow";
     } else if (p.usedUpCpuTime()) {
         std::snprintf(words, sizeof words,
                       "finished %d of %d seeds in %.0f s of CPU time: too slow for the limit "
@@ -289,12 +296,13 @@ std::vector<double> regionMeans(const std::vector<float>& image, int width, int 
 
 LabToolRun runLabTool(const LabToolRequest& request, const RenderLimits& limits) {
     const LabRunner& runner = *request.runner;
-    // A request of one "seed" with no image, for the process limits and the failure's words.
+    // A request of no seed, for the process limits and the failure's words.
     RenderRequest r;
     r.runner = &runner;
     r.identity.lab = request.lab;
     r.scratch = request.scratch;
     r.threads = 1;
+    r.seeds = 0;
     char stall[32];
     std::snprintf(stall, sizeof stall, "%g", limits.stallSeconds);
     std::vector<std::string> arguments = {

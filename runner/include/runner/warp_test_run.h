@@ -41,8 +41,9 @@ LabWarpTests runLabWarpTests(Lab lab, Implementation implementation, uint64_t se
                              uint64_t samples, double watchdogSeconds);
 
 /// viewer --lobe-dump: what `lab`'s sampleLobe gives for lobeDumpNumbers(seed) and its lobePdf
-/// at lobeCheckDirections(seed, ...), at each of WarpTestExponents (pathlab/warp/lobe_dump.h),
-/// written to `path` for the grader to judge. Watched as runLabWarpTests is.
+/// at lobeCheckDirections(seed, ...), at each of lobeCheckExponents(seed)
+/// (pathlab/warp/lobe_dump.h), written to `path` for the grader to judge. Watched as
+/// runLabWarpTests is.
 void writeLobeDump(const std::string& path, Lab lab, Implementation implementation, uint64_t seed,
                    double watchdogSeconds);
 

@@ -18,6 +18,11 @@ namespace pathlab {
 /// inside the first row of the warp test's cells, where it would see little.
 inline const std::vector<float> WarpTestExponents = {1.0f, 12.0f, 60.0f};
 
+/// The exponents the grader's check uses, drawn from its seed: one in [1, 2), one in [8, 24) and
+/// one in [40, 100), so that a routine right only at the exponents a student can see tested
+/// (WarpTestExponents) is not right at these.
+std::vector<float> lobeCheckExponents(uint64_t seed);
+
 /// Directions per exponent, and points at which the density is read.
 constexpr uint32_t LobeDumpSamples = 200000;
 constexpr uint32_t LobeDumpDensityPoints = 256;

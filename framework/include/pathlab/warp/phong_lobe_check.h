@@ -1,9 +1,10 @@
 #pragma once
 /// A lab's lobe routines judged against the lobe handout 05 derives, from what they gave for
 /// the grader's inputs (lobe_dump.h): sampleLobe's directions by the warp test with the Phong
-/// lobe's own density in place of the lab's, and lobePdf's values against that density point by
-/// point. Unlike the students' warp test (their samples against their own density, which a pair
-/// of another shape would pass), this tells whether they sample the lobe the BRDF has.
+/// lobe's own density in place of the lab's and by their spread through the lobe's CDF, and
+/// lobePdf's values against that density point by point. Unlike the students' warp test (their
+/// samples against their own density, which a pair of another shape would pass), this tells whether
+/// they sample the lobe the BRDF has.
 
 #include "pathlab/warp/lobe_dump.h"
 #include "pathlab/warp/warp_test.h"
@@ -25,8 +26,11 @@ struct PhongLobeFinding {
 };
 
 /// Judges `dump`, made for `seed`. `alpha`: the chance that right routines fail, shared among
-/// the exponents' chi-square tests (Šidák); lobePdf's values are exact up to float rounding and
-/// are held to 0.2%.
+/// the exponents' chi-square tests (Šidák): per exponent, the directions counted over the
+/// sphere's cells against the lobe's density, and, mapped through the lobe's CDF to
+/// (cos^(n+1) α, φ/2π), counted over 50 × 50 cells against a uniform spread, which sees inside
+/// the first test's cells (a sampler of few distinct directions matches their counts and fails
+/// this). lobePdf's values are exact up to float rounding and are held to 0.2%.
 PhongLobeFinding checkAgainstPhongLobe(const LobeDump& dump, uint64_t seed, double alpha,
                                        int labNumber);
 
