@@ -71,7 +71,8 @@ report: configure
 
 # Your own lab rendered at a range of one parameter's values, with CSV and PNG plots (frame rate,
 # noise, efficiency) beside the handout's figures, into $(BUILD)/sweep/LAB-PARAM/ (scripts/sweep.py):
-# LAB=roulette (the default) sweeps continueProb, LAB=branching, uniform or importance maxDepth.
+# LAB=roulette (the default) sweeps continueProb, LAB=branching, uniform or importance maxDepth,
+# LAB=glossy PARAM=glossy-exponent the Phong exponent of veach_plates' plates.
 # VALUES="0.1 0.5 0.9" for other values, SIZE=256 and SPP=64 for another render. The options are
 # checked before anything is configured, built or written.
 SWEEP_OPTIONS = --lab='$(LAB)' --param='$(PARAM)' --values='$(VALUES)' --size='$(SIZE)' --spp='$(SPP)'

@@ -36,6 +36,18 @@ def lab_estimates():
     return labs
 
 
+def lab_routines():
+    """{lab: "lobe" | None}: what each lab writes beside pathTrace (framework/lab_list.txt's
+    fourth column, "lobe" for a lab that samples a glossy lobe)."""
+    labs = {}
+    with open(os.path.join(KIT, "framework", "lab_list.txt"), encoding="utf-8") as f:
+        for line in f:
+            fields = line.split()
+            if fields and not fields[0].startswith("#"):
+                labs[fields[0]] = fields[3] if len(fields) > 3 else None
+    return labs
+
+
 @contextlib.contextmanager
 def output_folder(out):
     """A scratch folder beside OUT, holding an empty renders/, to write a run's files into: it

@@ -2,7 +2,7 @@
 # (per CPU-second) against one lab parameter, the student's render beside the handout's figures of the reference solution.
 # Variables (gnuplot -e): data (sweep.csv), handout (handout.csv, or '' when there is none), out
 # (PNG), width and height (its pixels), title, xlabel, yours (the key of this render's line),
-# pixels ("256x256"), xmin, xmax.
+# pixels ("256x256"), xmin, xmax, logx (1: a logarithmic x axis, for the Phong exponent).
 # Both CSVs start with the same columns: the parameter, samples_per_cpu_second, rays_per_sample,
 # noise_per_sample, efficiency.
 set terminal pngcairo size width,height font "sans,11"
@@ -11,6 +11,7 @@ set datafile separator ","
 set key top right
 set xlabel xlabel
 set xrange [xmin:xmax]
+if (logx) { set logscale x }
 set grid lc rgb "#dddddd"
 set multiplot layout 1,3 title title
 

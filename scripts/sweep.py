@@ -7,11 +7,13 @@ Usage: sweep.py --build BUILD [--lab LAB] [--param PARAM] [--values "V1 V2 ..."]
 
 The student's own labs/LAB.cpp (the viewer's default implementation; --solution for the
 reference solution, which only the instructor's kit has) is rendered headless on the VI2 Cornell
-box, the handouts' scene, once per value (`viewer ... --spp N -o VALUE.png --stats VALUE.json`),
+box, the handouts' scene (veach_plates for glossy-exponent), once per value (`viewer ... --spp N -o VALUE.png --stats VALUE.json`),
 at SIZE×SIZE pixels and N samples per pixel, seed 0. PARAM is what the lab lets you choose:
 
-  continue-prob   lab 4 (roulette): Russian roulette's continueProb, values in (0, 1)
+  continue-prob   labs 4-5: Russian roulette's continueProb, values in (0, 1)
   max-depth       labs 1-3: the depth limit, whole numbers from 0
+  glossy-exponent lab 5 (a lab that writes a lobe): the Phong exponent of every glossy plate of
+                  veach_plates (viewer --glossy-exponent), values above 0, at continueProb 0.8
 
 (each does nothing in the other labs, so asking for it there is refused). Writes, into
 BUILD/sweep/LAB-PARAM/ (printed at the end):
@@ -41,6 +43,7 @@ import headless_viewer
 
 KIT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENE = os.path.join(KIT, "models", "cornell_box_VI2_Specular.ecs")
+GLOSSY_SCENE = os.path.join(KIT, "models", "veach_plates.ecs")
 FIGURES = os.path.join(KIT, "handouts", "figures")
 PLOT = os.path.join(KIT, "scripts", "sweep.gp")
 DEFAULT_SIZE, DEFAULT_SPP = 256, 64
@@ -59,13 +62,31 @@ UsageError = headless_viewer.UsageError
 class Parameter:
     """A lab parameter the viewer takes: its option, its CSV column and its range."""
 
-    def __init__(self, option, column, label, estimate, defaults, handout_csv):
+    def __init__(self, option, column, label, estimate, defaults, handout_csv, scene=SCENE,
+                 scene_words="the VI2 Cornell box", extra=(), routines=None):
         self.option, self.column, self.label = option, column, label
         self.estimate = estimate        # the labs it matters in (framework/lab_list.txt)
         self.defaults = defaults
         self.handout_csv = handout_csv  # the reference's figures, in handouts/figures/
+        self.scene, self.scene_words = scene, scene_words
+        self.extra = list(extra)        # further viewer options
+        self.routines = routines        # the lab list's fourth field the labs need, if any
+
+    def applies_to(self, estimate, routines):
+        """Whether it does something in a lab of this estimate and these routines."""
+        if self.routines:
+            return routines == self.routines
+        return estimate == self.estimate
 
     def parse(self, text):
+        if self.option == "glossy-exponent":
+            try:
+                n = float(text)
+            except ValueError:
+                raise UsageError(f"VALUES: {text!r} is not a number (a Phong exponent is above 0)")
+            if not 0 < n <= 1e6:
+                raise UsageError(f"VALUES: Phong exponent {text} is not above 0 and at most 1e6")
+            return n
         if self.option == "continue-prob":
             try:
                 q = float(text)
@@ -94,6 +115,10 @@ PARAMETERS = {
                                "roulette_sweep.csv"),
     "max-depth": Parameter("max-depth", "max_depth", "maxDepth", "depth-limited",
                            [1, 2, 3, 4, 5, 6, 7, 8], "depth_sweep.csv"),
+    "glossy-exponent": Parameter("glossy-exponent", "glossy_exponent", "Phong exponent",
+                                 "unbiased", [1, 3, 10, 30, 100, 300, 1000, 3000],
+                                 "glossy_exponent_sweep.csv", GLOSSY_SCENE, "veach_plates",
+                                 ["--continue-prob", "0.8"], routines="lobe"),
 }
 
 
@@ -126,19 +151,25 @@ def whole_number(name, text, default, low, high):
 def checked_sweep(args):
     """The sweep the options ask for; UsageError for bad input."""
     labs = headless_viewer.lab_estimates()
+    routines = headless_viewer.lab_routines()
     lab = args.lab or "roulette"
     if lab not in labs:
         raise UsageError(f"LAB={lab} is not a lab: {', '.join(labs)}")
-    by_estimate = {p.estimate: p for p in PARAMETERS.values()}
+    by_estimate = {p.estimate: p for p in PARAMETERS.values() if not p.routines}
     name = args.param or by_estimate[labs[lab]].option
     if name not in PARAMETERS:
-        raise UsageError(f"PARAM={name} is not a parameter: continue-prob (lab 4, roulette) or "
-                         "max-depth (labs 1-3)")
+        raise UsageError(f"PARAM={name} is not a parameter: continue-prob (labs 4-5), "
+                         "max-depth (labs 1-3) or glossy-exponent (lab 5)")
     parameter = PARAMETERS[name]
+    if parameter.routines and not parameter.applies_to(labs[lab], routines.get(lab)):
+        lobe = ", ".join(name for name, r in routines.items() if r == "lobe")
+        raise UsageError(f"PARAM={name} does nothing in lab {lab}: only a lab that samples a "
+                         f"glossy lobe ({lobe}) renders glossy plates")
     if parameter.estimate != labs[lab]:
         if name == "continue-prob":
-            raise UsageError(f"PARAM=continue-prob does nothing in lab {lab}: only roulette (lab 4) "
-                             f"plays Russian roulette; sweep PARAM=max-depth there")
+            roulette = ", ".join(name for name, e in labs.items() if e == "unbiased")
+            raise UsageError(f"PARAM=continue-prob does nothing in lab {lab}: only {roulette} "
+                             f"play Russian roulette; sweep PARAM=max-depth there")
         raise UsageError(f"PARAM=max-depth does nothing in lab {lab}: it has no depth limit "
                          "(handouts/04-russian-roulette.md); sweep PARAM=continue-prob there")
     texts = args.values.replace(",", " ").split()
@@ -150,7 +181,8 @@ def checked_sweep(args):
 
 def viewer_options(sweep, value, spp, size=None):
     size = size or sweep.size
-    return ["-c", SCENE, "--lab", sweep.lab, *(["--solution"] if sweep.solution else []),
+    return ["-c", sweep.parameter.scene, "--lab", sweep.lab,
+            *(["--solution"] if sweep.solution else []), *sweep.parameter.extra,
             f"--{sweep.parameter.option}", f"{value:g}", "--spp", str(spp),
             "--size", str(size), str(size), "--seed", "0"]
 
@@ -271,15 +303,19 @@ def write_csv(path, rows, columns):
 
 def plot(sweep, folder, has_handout):
     whose = "the reference solution" if sweep.solution else f"your labs/{sweep.lab}.cpp"
-    title = (f"{whose} on the VI2 Cornell box, {sweep.size}x{sweep.size} pixels, {sweep.spp} "
-             "samples per pixel each")
+    title = (f"{whose} on {sweep.parameter.scene_words}, {sweep.size}x{sweep.size} pixels, "
+             f"{sweep.spp} samples per pixel each")
+    exponent = sweep.parameter.option == "glossy-exponent"
     variables = {"data": "sweep.csv", "handout": "handout.csv" if has_handout else "",
                  "out": "sweep.png", "xlabel": sweep.parameter.label, "title": title,
                  "yours": "the reference solution here" if sweep.solution else "yours",
                  "pixels": f"{sweep.size}x{sweep.size}", "width": PLOT_WIDTH,
                  "height": PLOT_HEIGHT,
-                 "xmin": 0 if sweep.parameter.option == "continue-prob" else min(sweep.values) - 0.5,
-                 "xmax": 1 if sweep.parameter.option == "continue-prob" else max(sweep.values) + 0.5}
+                 "logx": 1 if exponent else 0,
+                 "xmin": 0 if sweep.parameter.option == "continue-prob"
+                 else min(sweep.values) / 1.5 if exponent else min(sweep.values) - 0.5,
+                 "xmax": 1 if sweep.parameter.option == "continue-prob"
+                 else max(sweep.values) * 1.5 if exponent else max(sweep.values) + 0.5}
     definitions = "; ".join(f"{k}='{v}'" if isinstance(v, str) else f"{k}={v}"
                             for k, v in variables.items())
     run = subprocess.run(["gnuplot", "-e", definitions, PLOT], cwd=folder, capture_output=True,

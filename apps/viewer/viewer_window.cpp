@@ -10,6 +10,7 @@
 #include "screenshots.h"
 #include "view_mode.h"
 #include "viewer_panel.h"
+#include "warp_test_panel.h"
 #include "window_input.h"
 
 #include "runner/lab_tables.h"
@@ -67,8 +68,12 @@ public:
                        settings_.camera),
           renderer_(scene, options.threads, settings_, frameLines(windowOptions),
                     windowOptions.frames, options.watchdogSeconds),
-          input_(window, settings_), inspector_(options, scene) {
-        panel_.alsoDraw([this] { inspector_.draw(settings_); });
+          input_(window, settings_), inspector_(options, scene), warp_(options.watchdogSeconds) {
+        panel_.alsoDraw([this] {
+            inspector_.draw(settings_);
+            warp_.draw();
+        });
+        if (windowOptions.warpPanel) warp_.run(settings_.lab, settings_.implementation);
         if (options.inspect) inspector_.inspect(settings_, options.inspectX, options.inspectY);
         if (windowOptions.view) {
             mode_ = *windowOptions.view;
@@ -110,6 +115,7 @@ public:
         case KeyCommand::NextViewMode: nextMode(); break;
         case KeyCommand::Screenshot: screenshot(""); break;
         case KeyCommand::ToggleHelp: panel_.toggleHelp(); break;
+        case KeyCommand::WarpTest: warp_.run(settings_.lab, settings_.implementation); break;
         }
     }
 
@@ -185,6 +191,7 @@ private:
     FrameTexture texture_;
     WindowInput input_;
     PathInspectorPanel inspector_; ///< replays on a worker thread of its own (inspection_job.h)
+    WarpTestPanel warp_;           ///< the t key's warp test, run on this thread
     ViewerPanel panel_;
     Frame frame_;
     uint64_t generation_ = 0;

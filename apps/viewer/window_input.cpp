@@ -27,6 +27,7 @@ std::string keyHelp() {
            "+ / -    continueProb up / down (lab 4)\n"
            "[ / ]    maxDepth down / up (labs 1-3)\n"
            "v        view: image, difference, split, noise, efficiency\n"
+           "t        warp test of the lab's lobe (lab 5): samples against density\n"
            "r        restart accumulation\n"
            "Space    screenshot (.exr linear + .png)\n"
            "c        print the camera as .ecs options\n"
@@ -47,6 +48,7 @@ KeyCommand WindowInput::onKey(int key, int action) {
     case GLFW_KEY_R: return KeyCommand::Restart;
     case GLFW_KEY_V: return KeyCommand::NextViewMode;
     case GLFW_KEY_SPACE: return KeyCommand::Screenshot;
+    case GLFW_KEY_T: return KeyCommand::WarpTest;
     default: return KeyCommand::None;
     }
 }

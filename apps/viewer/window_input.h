@@ -13,7 +13,7 @@ struct GLFWwindow;
 namespace pathlab::viewer {
 
 /// What a key asks of the window beyond the settings and the window that WindowInput changes.
-enum class KeyCommand { None, Restart, NextViewMode, Screenshot, ToggleHelp };
+enum class KeyCommand { None, Restart, NextViewMode, Screenshot, ToggleHelp, WarpTest };
 
 /// The keys, one a line, for the panel's help; the labs' from the list of labs.
 std::string keyHelp();

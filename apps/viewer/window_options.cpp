@@ -37,6 +37,7 @@ ExtraOptions windowOptionReaders(WindowOptions& w) {
                                               "or efficiency");
          }},
         {"inspect-window", [&w](OptionReader&, const Token&) { w.inspectInWindow = true; }},
+        {"warp-panel", [&w](OptionReader&, const Token&) { w.warpPanel = true; }},
     };
 }
 
@@ -76,6 +77,8 @@ const char* windowOptionsHelp() {
                          open the window with pixel (X,Y) inspected, as a click does (a
                          click without moving the mouse, or shift+click); --inspect alone
                          replays headless and prints the tables
+  --warp-panel           open the window with the lab's warp test shown, as t shows it (lab 5:
+                         its sampleLobe's directions against its lobePdf)
 )";
 }
 

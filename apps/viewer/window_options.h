@@ -20,6 +20,7 @@ struct WindowOptions {
     std::string referenceImage;   ///< --reference: image for the difference view
     std::optional<ViewMode> view; ///< --view: the mode shown first (then v as usual)
     bool inspectInWindow = false; ///< --inspect-window: --inspect X Y in the window, not headless
+    bool warpPanel = false;       ///< --warp-panel: open with the lab's warp test shown (t)
 };
 
 /// The readers of the window's options, into `window`, for parseRenderOptions.

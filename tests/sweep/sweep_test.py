@@ -86,10 +86,18 @@ def check_sweep(scratch, lab, param, values, column):
     size = png_size(os.path.join(out, "sweep.png"))
     check(size == (sweep_script.PLOT_WIDTH, sweep_script.PLOT_HEIGHT),
           f"{name}: sweep.png is a {sweep_script.PLOT_WIDTH}x{sweep_script.PLOT_HEIGHT} PNG: {size}")
-    handout = read_csv(os.path.join(out, "handout.csv"))
+    renders = sorted(os.listdir(os.path.join(out, "renders")))
+    check(len(renders) == 2 * len(wanted), f"{name}: an image and a stats file per value")
     parameter = sweep_script.PARAMETERS[param]
-    theirs = [r for r in read_csv(os.path.join(sweep_script.FIGURES, parameter.handout_csv))
-              if r.get("lab", lab) == lab]
+    figures = os.path.join(sweep_script.FIGURES, parameter.handout_csv)
+    if not os.path.exists(figures):
+        # The handouts have no figures of it: the plot shows the student's alone, and says so.
+        check(not os.path.exists(os.path.join(out, "handout.csv")) and
+              any("the plot shows yours alone" in line for line in lines),
+              f"{name}: no handout.csv, and the output says the plot shows the student's alone")
+        return
+    handout = read_csv(os.path.join(out, "handout.csv"))
+    theirs = [r for r in read_csv(figures) if r.get("lab", lab) == lab]
     check(len(handout) >= 2 and len(handout) == len(theirs) and
           [float(r[column]) for r in handout] == [float(r[column]) for r in theirs],
           f"{name}: handout.csv holds the handout's {len(theirs)} rows of {lab} "
@@ -100,8 +108,6 @@ def check_sweep(scratch, lab, param, values, column):
           all(close(a, b, ROUNDING) for a, b in recomputed),
           f"{name}: handout.csv has the handout's samples per CPU-second and their efficiency "
           f"at 16x16 pixels {recomputed[:2]}")
-    renders = sorted(os.listdir(os.path.join(out, "renders")))
-    check(len(renders) == 2 * len(wanted), f"{name}: an image and a stats file per value")
 
 
 def check_made_up_renders(scratch):
@@ -144,6 +150,10 @@ def check_bad_input(scratch):
              ("--lab roulette --param depth", "PARAM=depth"),
              ("--lab roulette --param max-depth", "PARAM=max-depth does nothing in lab roulette"),
              ("--lab uniform --param continue-prob", "PARAM=continue-prob does nothing"),
+             ("--lab roulette --param glossy-exponent",
+              "PARAM=glossy-exponent does nothing in lab roulette: only a lab that samples a "
+              "glossy lobe (glossy)"),
+             ("--lab glossy --param glossy-exponent --values 0", "Phong exponent 0 is not above 0"),
              ("--lab roulette --values 0", "continueProb 0 is outside"),
              ("--lab roulette --values '0.5 1'", "continueProb 1 never ends"),
              ("--lab roulette --values 1.5", "continueProb 1.5 is outside"),
@@ -163,6 +173,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="pathlab-sweep-test-") as scratch:
         check_sweep(scratch, "roulette", "continue-prob", "0.2 0.8", "continue_prob")
         check_sweep(scratch, "branching", "max-depth", "1 3", "max_depth")
+        check_sweep(scratch, "glossy", "glossy-exponent", "10 100", "glossy_exponent")
         check_made_up_renders(scratch)
         check_bad_input(scratch)
     return exit_code()

@@ -103,6 +103,14 @@ Handlers sceneOptions(RenderOptions& o, OptionReader& in, int& scriptDepth) {
          }},
         {"directionallight", directionalLight},
         {"dirlight", directionalLight},
+        {"glossy-exponent",
+         [&](const Token& t) {
+             const float n = in.number(t, "a Phong exponent");
+             if (!(n > 0 && n <= 1e6f))
+                 OptionReader::fail(t, "option " + t.text +
+                                           " expects a Phong exponent above 0 and at most 1e6");
+             o.glossyExponent = n;
+         }},
         {"size",
          [&](const Token& t) {
              o.width = in.positive(t, "a width in pixels", 16384);
@@ -264,6 +272,8 @@ std::string renderOptionsHelp() {
   --dirlight DX DY DZ R G B
                          a directional light travelling along (DX,DY,DZ), irradiance (R,G,B)
                          in W/m² on a surface facing it (also --directionallight)
+  --glossy-exponent N    every glossy material (MTL illum 2 with Ns) takes the Phong exponent N
+                         instead of its own (labs 5-6; make sweep's exponent sweep)
   --size W H             image size in pixels (default 512 512)
 estimator
 )") + "  --lab NAME             " +

@@ -51,6 +51,17 @@ Scene loadScene(const RenderOptions& options) {
         throw InputError("no scene given: use -c FILE.ecs or -i FILE.obj");
     Scene scene;
     for (const std::string& obj : options.objFiles) loadObj(obj, scene);
+    if (options.glossyExponent > 0) {
+        bool glossy = false;
+        for (Material& m : scene.materials)
+            if (m.Ns > 0) {
+                m.Ns = options.glossyExponent;
+                glossy = true;
+            }
+        if (!glossy)
+            std::fprintf(stderr, "warning: --glossy-exponent changes nothing here: the scene "
+                                 "has no glossy material (MTL illum 2 with Ns)\n");
+    }
     for (const PointLight& light : options.pointLights) scene.pointLights.push_back(light);
     for (const DirectionalLight& light : options.directionalLights)
         scene.directionalLights.push_back(light);

@@ -26,6 +26,9 @@ struct RenderOptions : RenderIdentity {
     std::vector<std::string> objFiles;     ///< -i, resolved relative to the .ecs that named them
     std::vector<PointLight> pointLights;   ///< --pointlight
     std::vector<DirectionalLight> directionalLights; ///< --dirlight, --directionallight
+    /// --glossy-exponent: every glossy material's Phong exponent (Material::Ns) in its place;
+    /// 0 = as the MTL files say. make sweep's lobe-exponent sweep (labs 5 and 6).
+    float glossyExponent = 0;
     CameraSettings camera;
     bool cameraSet = false; ///< any of --vp/--vi/--vd/--vu/--fov was given
     /// Which of them place the camera; loadScene() frames the model for what they leave open

@@ -1,0 +1,101 @@
+#include "warp_test_panel.h"
+
+#include "pathlab/images/false_colour.h"
+#include "pathlab/render/render_identity.h"
+#include "pathlab/support/input_error.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+
+namespace pathlab::viewer {
+
+namespace {
+
+/// Directions per exponent: enough for the test to see a wrong routine, few enough to keep the
+/// window responsive (the headless test draws a million).
+constexpr uint64_t PanelSamples = 200000;
+/// Screen pixels per cell side, and between panels.
+constexpr float Cell = 4, Gap = 8;
+
+/// One panel of cells at the cursor, each in the colour `colourOf` gives it (RGBA8).
+void drawCells(const SphereCells& cells,
+               const std::function<void(size_t, unsigned char*)>& colourOf) {
+    ImDrawList* list = ImGui::GetWindowDrawList();
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    for (int cell = 0; cell < cells.count(); ++cell) {
+        unsigned char c[4];
+        colourOf(static_cast<size_t>(cell), c);
+        const ImVec2 from(origin.x + (cell % cells.phiCells) * Cell,
+                          origin.y + cells.thetaRow(cell) * Cell);
+        list->AddRectFilled(from, ImVec2(from.x + Cell, from.y + Cell),
+                            IM_COL32(c[0], c[1], c[2], 255));
+    }
+    ImGui::Dummy(ImVec2(cells.phiCells * Cell, cells.thetaCells * Cell));
+}
+
+void drawExponent(const LabWarpTest& test) {
+    const WarpTestResult& r = test.result;
+    const SphereCells& cells = r.settings.cells;
+    double highest = 1;
+    for (size_t i = 0; i < r.observed.size(); ++i)
+        highest = std::max({highest, r.observed[i], r.expected[i]});
+    ImGui::Text("exponent %g: %s", test.exponent, r.passed ? "passed" : "FAILED");
+    drawCells(cells, [&](size_t i, unsigned char* c) {
+        heatColour(static_cast<float>(r.observed[i] / highest), c);
+    });
+    ImGui::SameLine(0, Gap);
+    drawCells(cells, [&](size_t i, unsigned char* c) {
+        heatColour(static_cast<float>(r.expected[i] / highest), c);
+    });
+    ImGui::SameLine(0, Gap);
+    drawCells(cells, [&](size_t i, unsigned char* c) {
+        const double sd = std::sqrt(std::max(r.expected[i], 1.0));
+        divergingColour(static_cast<float>((r.observed[i] - r.expected[i]) / sd / 5), c);
+    });
+}
+
+} // namespace
+
+void WarpTestPanel::run(Lab lab, Implementation implementation) {
+    open_ = true;
+    tests_.reset();
+    try {
+        tests_ = runLabWarpTests(lab, implementation, 1, PanelSamples, watchdogSeconds_);
+        text_ = describeLabWarpTests(*tests_);
+    } catch (const InputError& e) {
+        text_ = e.what();
+    }
+    std::printf("warp test: %s", text_.c_str());
+    if (text_.empty() || text_.back() != '\n') std::printf("\n");
+    std::fflush(stdout);
+}
+
+void WarpTestPanel::draw() {
+    if (!open_) return;
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.35f, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    ImGui::Begin("Warp test", &open_, ImGuiWindowFlags_AlwaysAutoResize);
+    if (tests_) {
+        RenderIdentity identity;
+        identity.lab = tests_->lab;
+        identity.implementation = tests_->implementation;
+        ImGui::Text("lab %s: %llu directions per exponent from sampleLobe, counted over the "
+                    "sphere",
+                    labAndImplementation(identity).c_str(),
+                    static_cast<unsigned long long>(PanelSamples));
+        ImGui::TextDisabled("theta down from the lobe's axis (0 to 180 degrees), phi across; "
+                            "counted | lobePdf's expectation | difference (blue fewer, red more)");
+        for (const LabWarpTest& test : tests_->exponents) drawExponent(test);
+    }
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 60);
+    ImGui::TextUnformatted(text_.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::End();
+}
+
+} // namespace pathlab::viewer
