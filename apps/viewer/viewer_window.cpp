@@ -150,11 +150,16 @@ private:
     /// the start (--inspect-window) has its replay, so that the window captured shows its paths.
     void finishWhenDone() {
         if (!lastFrameIn_ || finishing_ || inspector_.busy()) return;
+        // ImGui lays out a window that fits its contents in its first frame and shows it from the
+        // second: a capture needs two drawn before it (the frames may all be in before the first
+        // draw, when the window's start took a while, a warp test's say).
+        while (draws_ < 2) draw();
         if (!windowOptions_.screenshot.empty()) screenshot(windowOptions_.screenshot);
         finishing_ = true; // the next draw captures the window if asked, then the loop ends
     }
 
     void draw() {
+        ++draws_;
         int width = 0, height = 0;
         glfwGetFramebufferSize(window_, &width, &height);
         glViewport(0, 0, width, height);
@@ -192,6 +197,7 @@ private:
     WindowInput input_;
     PathInspectorPanel inspector_; ///< replays on a worker thread of its own (inspection_job.h)
     WarpTestPanel warp_;           ///< the t key's warp test, run on this thread
+    int draws_ = 0;                ///< draw() calls so far
     ViewerPanel panel_;
     Frame frame_;
     uint64_t generation_ = 0;

@@ -19,7 +19,7 @@ namespace {
 /// window responsive (the headless test draws a million).
 constexpr uint64_t PanelSamples = 200000;
 /// Screen pixels per cell side, and between panels.
-constexpr float Cell = 4, Gap = 8;
+constexpr float Cell = 3, Gap = 8;
 
 /// One panel of cells at the cursor, each in the colour `colourOf` gives it (RGBA8).
 void drawCells(const SphereCells& cells,
@@ -80,19 +80,23 @@ void WarpTestPanel::draw() {
     ImGui::SetNextWindowPos(ImVec2(display.x * 0.35f, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.85f);
     ImGui::Begin("Warp test", &open_, ImGuiWindowFlags_AlwaysAutoResize);
+    // Wrapped to the width of the three panels, so that the window fits beside the figures.
+    const SphereCells cells;
+    ImGui::PushTextWrapPos(ImGui::GetCursorPos().x + 3 * cells.phiCells * Cell + 2 * Gap);
     if (tests_) {
         RenderIdentity identity;
         identity.lab = tests_->lab;
         identity.implementation = tests_->implementation;
-        ImGui::Text("lab %s: %llu directions per exponent from sampleLobe, counted over the "
-                    "sphere",
-                    labAndImplementation(identity).c_str(),
-                    static_cast<unsigned long long>(PanelSamples));
-        ImGui::TextDisabled("theta down from the lobe's axis (0 to 180 degrees), phi across; "
-                            "counted | lobePdf's expectation | difference (blue fewer, red more)");
+        ImGui::TextWrapped("lab %s: %llu directions per exponent from sampleLobe, counted over "
+                           "the sphere",
+                           labAndImplementation(identity).c_str(),
+                           static_cast<unsigned long long>(PanelSamples));
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+        ImGui::TextWrapped("theta down from the lobe's axis (0 to 180 degrees), phi across; "
+                           "counted | lobePdf's expectation | difference (blue fewer, red more)");
+        ImGui::PopStyleColor();
         for (const LabWarpTest& test : tests_->exponents) drawExponent(test);
     }
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 60);
     ImGui::TextUnformatted(text_.c_str());
     ImGui::PopTextWrapPos();
     ImGui::End();

@@ -50,7 +50,7 @@ def panel_in_capture(env, tmp):
     check("warp test: " in outputs["panel"] and "passed: sampleLobe and lobePdf of lab glossy" in
           outputs["panel"],
           f"--warp-panel prints the reference solution's verdict: {outputs['panel'].strip()[-300:]!r}")
-    check(counts["panel"] - counts["plain"] >= 2000,
+    check(counts["panel"] - counts["plain"] >= 500,
           f"the capture shows the panel's cells: {counts['panel']} pixels of the heat palette "
           f"against {counts['plain']} without --warp-panel")
 

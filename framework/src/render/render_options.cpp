@@ -273,7 +273,7 @@ std::string renderOptionsHelp() {
                          a directional light travelling along (DX,DY,DZ), irradiance (R,G,B)
                          in W/m² on a surface facing it (also --directionallight)
   --glossy-exponent N    every glossy material (MTL illum 2 with Ns) takes the Phong exponent N
-                         instead of its own (labs 5-6; make sweep's exponent sweep)
+                         instead of its own (lab 5; make sweep's exponent sweep)
   --size W H             image size in pixels (default 512 512)
 estimator
 )") + "  --lab NAME             " +
