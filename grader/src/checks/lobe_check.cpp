@@ -1,5 +1,6 @@
 #include "checks/lobe_check.h"
 
+#include "checks/glossy_furnace_scene.h"
 #include "checks/run_limits.h"
 #include "isolation/render_run.h"
 
@@ -24,8 +25,9 @@ void fail(CheckResult& correctness, std::vector<std::string> lines, const std::s
 } // namespace
 
 void addLobeVerdict(const GraderSetup& setup, Lab lab, CheckResult& correctness) {
-    // A seed of the grading's own: the inputs differ from one grading to another.
-    const uint64_t seed = setup.seedBase * 7919 + 17;
+    // A seed of this submission's own: the inputs differ from one submission to another, and
+    // stay the same when the same lab is graded again.
+    const uint64_t seed = labVariantSeed(setup, lab);
     const LabToolRun run = dumpLobe(setup.student, lab, seed, setup.scratch, limitsOf(setup));
     const std::string number = std::to_string(labNumber(lab));
     if (!run.ok) {
@@ -47,7 +49,7 @@ void addLobeVerdict(const GraderSetup& setup, Lab lab, CheckResult& correctness)
     char how[260];
     std::snprintf(how, sizeof how,
                   "%u directions at each of the exponents %.3g, %.3g and %.3g (drawn for this "
-                  "grading), and the density at %u points each; right routines fail with "
+                  "submission), and the density at %u points each; right routines fail with "
                   "probability %g",
                   LobeDumpSamples, exponents[0], exponents[1], exponents[2], LobeDumpDensityPoints,
                   LobeCheckFalseFailRate);

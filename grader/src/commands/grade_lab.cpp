@@ -1,6 +1,7 @@
 #include "commands/grade_lab.h"
 
 #include "checks/correctness_check.h"
+#include "checks/glossy_furnace_scene.h"
 #include "checks/lobe_check.h"
 #include "checks/noise_check.h"
 #include "checks/pick_report.h"
@@ -13,12 +14,19 @@ namespace pathlab::grader {
 
 namespace {
 
-/// `setup` with the scenes that grade `lab` alone (GradingScene::labs).
+/// `setup` with the scenes that grade `lab` alone (GradingScene::labs), the tilted glossy
+/// furnace as this submission's variant of it (glossy_furnace_scene.h).
 GraderSetup setupFor(const GraderSetup& setup, Lab lab) {
     GraderSetup own = setup;
     own.scenes.clear();
-    for (const GradingScene& scene : setup.scenes)
-        if (scene.grades(lab)) own.scenes.push_back(scene);
+    for (const GradingScene& scene : setup.scenes) {
+        if (!scene.grades(lab)) continue;
+        if (scene.name == GlossyFurnaceScenes[1] && !scene.hidden)
+            own.scenes.push_back(tiltedGlossyFurnaceVariant(
+                setup.rubric, labVariantSeed(setup, lab), setup.scratch));
+        else
+            own.scenes.push_back(scene);
+    }
     return own;
 }
 
