@@ -32,7 +32,7 @@ void addLobeVerdict(const GraderSetup& setup, Lab lab, CheckResult& correctness)
     const std::string number = std::to_string(labNumber(lab));
     if (!run.ok) {
         fail(correctness, {"the lobe check ran sampleLobe and lobePdf, and the lab " + run.failure},
-             "the lobe check's run of sampleLobe and lobePdf " + run.failureKind);
+             "the lobe check's run of sampleLobe and lobePdf failed: " + run.failureKind);
         return;
     }
     LobeDump dump;
