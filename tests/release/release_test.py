@@ -26,7 +26,7 @@ Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
    estimators.lab1 to estimators.lab4 among the failures; `make grade LAB=branching` fails the stub with the
    diagnosis "direct light only" and a note that speed is not checked without the solutions;
    once labs/branching.cpp is done (the solution copied in), estimators.lab1 passes while the
-   other labs' tests still fail; and with all four labs done, `make grade` passes with the speed
+   other labs' tests still fail; and with every lab done, `make grade` passes with the speed
    points shown apart and prints the speed ratios between labs beside the reference's, `make
    sweep LAB=roulette` plots the student's lab 4, a lab 2 that traces black components is told
    its speed points are at risk and why, and `make report` writes lab-report.md with
@@ -34,6 +34,7 @@ Checks, each printing PASS/FAIL (the script exits non-zero if any failed):
 5. The targets that need the solutions say so in one line and exit non-zero (`make bench`).
 """
 import glob
+import json
 import os
 import re
 import shutil
@@ -272,25 +273,30 @@ def check_builds_and_tests(root, logs):
                             os.path.join(logs, "make-test-labs-lab1-done.log"))
     results = ctest_results(output)
     check(results.get("estimators.lab1") == "Passed" and
-          all(results.get(f"estimators.lab{n}") == "Failed" for n in range(2, 5)),
+          all(results.get(f"estimators.lab{n}") == "Failed" for n in range(2, len(LABS) + 1)),
           f"with lab 1 done, its tests pass and the others still fail: {results}")
 
 
 def check_finished_labs(root, logs):
-    """All four labs done (the solutions copied in): the local grade and the lab report."""
+    """All the labs done (the solutions copied in): the local grade and the lab report."""
     for lab in LABS:
         shutil.copy(os.path.join(KIT, "solutions", lab + ".cpp"), os.path.join(root, "labs"))
     status, output, _ = run(["make", "grade"], root, os.path.join(logs, "make-grade-done.log"))
-    check(status == 0 and "total 32/32 (+8 speed: graded by the instructor)" in output,
-          "make grade passes the four labs and shows the speed points apart" +
-          ("" if status == 0 else ":\n" + tail(output)))
-    ratios = re.findall(r"^  (uniform|importance|roulette)/branching\s+(\d+\.\d+)\s+(\d+\.\d+)$",
-                        output, re.M)
-    check(len(ratios) == 3, f"make grade prints the speed ratios between labs, yours and the "
-                            f"reference's: {ratios}")
+    # The kit's rubric's points: correctness and noise graded here, speed by the instructor.
+    points = json.load(open(os.path.join(KIT, "grader", "rubric.json")))["points"]
+    here = sum(p["correctness"] + p["noise"] for p in points.values())
+    speed = sum(p["speed"] for p in points.values())
+    total = f"total {here}/{here} (+{speed} speed: graded by the instructor)"
+    check(status == 0 and total in output,
+          f"make grade passes every lab and shows the speed points apart: {total!r}" +
+          ("" if status == 0 and total in output else ":\n" + tail(output)))
+    others = "|".join(LABS[1:])
+    ratios = re.findall(rf"^  ({others})/branching\s+(\d+\.\d+)\s+(\d+\.\d+)$", output, re.M)
+    check(len(ratios) == len(LABS) - 1, f"make grade prints the speed ratios between labs, yours "
+                                         f"and the reference's: {ratios}")
     # The README: the kit's own tests pass from the start, and still once the labs are written.
     status, output, _ = run(["make", "test"], root, os.path.join(logs, "make-test-done.log"))
-    check(status == 0, "make test still passes with the four labs done" +
+    check(status == 0, "make test still passes with every lab done" +
           ("" if status == 0 else ":\n" + tail(output)))
     status, output, _ = run(["./grader", "submission", "../labs", "--out", "graded"],
                             os.path.join(root, "build"), os.path.join(logs, "grader-submission.log"))
