@@ -122,7 +122,7 @@ def stubs_fail(tmp):
     for lab in ("branching", "roulette"):
         run, report = grade(os.path.join(args.build, "viewer"), ["--lab", lab, "--no-speed"], tmp, "stub-" + lab)
         correctness = report["labs"][0]["checks"][0] if report else None
-        text = json.dumps(correctness)
+        text = json.dumps(correctness, ensure_ascii=False)
         check(run.returncode == 1 and correctness and not correctness["passed"]
               and "direct light only" in text, f"the {lab} stub fails correctness, diagnosed as direct light only")
 
@@ -168,7 +168,7 @@ def mutants(tmp, slow, timed=(True, False)):
         run, report = grade(viewer, extra, tmp, name)
         checks = {c["name"]: c for c in report["labs"][0]["checks"]} if report else {}
         target = checks.get(target_name)
-        text = json.dumps(target) if target else ""
+        text = json.dumps(target, ensure_ascii=False) if target else ""
         passed = bool(target and target["passed"])
         verdict = ("passed" if passed else "failed") if target else "NOT GRADED"
         diagnosis = next((d for d in (target or {}).get("details", []) if d.startswith("likely cause")),

@@ -30,7 +30,7 @@ import tempfile
 import time
 import zipfile
 
-from support import LABS, arguments, check, finish, grader, write
+from support import LABS, LOBE, arguments, check, finish, grader, write
 
 args = arguments((["--keep"], {"help": "work in this (new) folder and keep it, to look at afterwards"}))
 GRADER = grader(args)
@@ -85,6 +85,16 @@ def light_rubric(root, roulette_correctness=6, max_noise_ratio=1.5):
     path = os.path.join(root, "rubric.json")
     json.dump(rubric, open(path, "w"), indent=1)
     return path
+
+
+# The totals, from the kit's points with --no-speed (correctness and noise, 8 a lab): the class's
+# full marks; a lab lost (bob's lab 2, carol's lab 4 not handed in); after step 4 raises lab 4's
+# correctness from 6 to 16, the same three.
+FULL = str(8 * len(LABS))
+LAB_LOST = str(8 * len(LABS) - 8)
+RAISED = str(8 * len(LABS) + 10)
+RAISED_LAB_LOST = str(8 * len(LABS) + 10 - 8)
+RAISED_NO_LAB_4 = str(8 * len(LABS) + 10 - 18)
 
 
 def batch(step, *options):
@@ -144,10 +154,12 @@ def main():
         # 1. The class, with a hidden scene and a deadline that everyone met.
         run = batch("first grading", "--deadline", "2999-01-01T00:00Z")
         rows = gradebook()
-        check(run.returncode == 0 and canaries() == [("32", "32")], "the canary: the solutions get 32/32 first")
-        check([rows[i]["total"] for i in ("alice", "bob", "carol")] == ["32", "24", "24"]
-              and all(r["max_total"] == "32" for r in rows.values()),
-              "alice (the solutions, disguised) 32/32, bob (lab 2 does not divide) 24, carol (no lab 4) 24")
+        check(run.returncode == 0 and canaries() == [(FULL, FULL)],
+              f"the canary: the solutions get {FULL}/{FULL} first")
+        check([rows[i]["total"] for i in ("alice", "bob", "carol")] == [FULL, LAB_LOST, LAB_LOST]
+              and all(r["max_total"] == FULL for r in rows.values()),
+              f"alice (the solutions, disguised) {FULL}/{FULL}, bob (lab 2 does not divide) {LAB_LOST}, "
+              f"carol (no lab 4) {LAB_LOST}")
         check(rows["carol"]["status"] == "graded; not submitted: roulette" and rows["carol"]["missing_labs"] == "roulette",
               "the status names the lab not submitted")
         check(all(rows[i]["late"] == "no" and rows[i]["submitted_at"] and len(rows[i]["files_hash"]) == 16
@@ -155,7 +167,8 @@ def main():
         check(rows["bob"]["uniform_correctness"] == "0" and rows["bob"]["branching_correctness"] == "6"
               and rows["bob"]["uniform_speed"] == "", "a column per check (speed empty: not checked)")
         lms = read(os.path.join(OUT, "lms.csv")).splitlines()
-        check(lms[0] == "Student,SIS Login ID,PathLab (32 points)" and "alice,alice,32" in lms, "lms.csv")
+        check(lms[0] == f"Student,SIS Login ID,PathLab ({FULL} points)" and f"alice,alice,{FULL}" in lms,
+              "lms.csv")
         summary = read(os.path.join(OUT, "summary.html"))
         pairs = re.findall(r"<tr><td>(\d+)%</td><td>(\w+)</td><td>([\w ]+)</td><td>([\w ]+)</td></tr>", summary)
         disguised = {lab for pct, lab, a, b in pairs if {a, b} == {"alice", "reference solutions"} and int(pct) >= 95}
@@ -171,7 +184,8 @@ def main():
               "alice's feedback says hidden scene 1 matches, by that name")
         page = read(os.path.join(OUT, "submissions", "bob", "index.html"))
         pictures = re.findall(r"<p>([^<:]+): yours, the reference", page)
-        check(len(pictures) == 4 * 2 and "hidden scene 1" not in pictures,
+        # The furnace and the parameter check per lab, and the glossy furnaces for lab 5's.
+        check(len(pictures) == 2 * len(LABS) + 2 * len(LOBE) and "hidden scene 1" not in pictures,
               f"bob's page shows the furnace and the parameter check per lab, no hidden scene ({len(pictures)} pictures)")
 
         # 2. The instructor doubles the hidden scene's light: every result is stale (other scenes)
@@ -179,10 +193,10 @@ def main():
         mtl = os.path.join(HIDDEN, SECRET + ".mtl")
         write(mtl, read(mtl).replace("Ke 20 14 8", "Ke 40 28 16"))
         run = batch("after the scene's light changed")
-        check(run.returncode == 0 and canaries()[-1] == ("32", "32") and graded_in_last_batch() == ["alice", "bob", "carol"],
+        check(run.returncode == 0 and canaries()[-1] == (FULL, FULL) and graded_in_last_batch() == ["alice", "bob", "carol"],
               "an edited hidden scene: its reference measured again, the canary passes, everyone regraded")
         rows = gradebook()
-        check(rows["alice"]["total"] == "32", "alice still gets full marks on the edited scene")
+        check(rows["alice"]["total"] == FULL, "alice still gets full marks on the edited scene")
         check(all(r["late"] == "no" for r in rows.values()), "a batch run again keeps its deadline")
 
         # 3. A reference made wrong on purpose (its expected means halved, its keys kept): the
@@ -195,27 +209,27 @@ def main():
         os.remove(os.path.join(OUT, ".canary", "passed"))
         before = read(os.path.join(OUT, "gradebook.csv"))
         run = batch("a wrong reference", "--force")
-        check(run.returncode != 0 and "canary: the reference solutions score 0 / 32 " in run.stderr
+        check(run.returncode != 0 and f"canary: the reference solutions score 0 / {FULL} " in run.stderr
               and "nothing was graded" in run.stderr,
               "a wrong reference: the canary fails every lab and stops the batch, saying why")
         check(read(os.path.join(OUT, "gradebook.csv")) == before, "... and the gradebook is as it was")
         os.remove(cached)  # measured again next time
 
         # 4. The rubric changes (lab 4's correctness worth 16): --keep-stale keeps the results and
-        # marks them; their totals are out of 32, not the new 42, so none is shown.
+        # marks them; their totals are out of FULL, not the new RAISED, so none is shown.
         light_rubric(root, roulette_correctness=16)
         run = batch("rubric changed, --keep-stale", "--keep-stale")
         rows = gradebook()
         check(run.returncode == 0 and graded_in_last_batch() == [], "--keep-stale grades nobody")
         check(all(r["status"].startswith("stale: graded under another rubric") and r["total"] == ""
-                  and r["max_total"] == "42" for r in rows.values()),
-              "stale results are marked, and no total out of 32 stands in a gradebook out of 42")
+                  and r["max_total"] == RAISED for r in rows.values()),
+              f"stale results are marked, and no total out of {FULL} stands in a gradebook out of {RAISED}")
         check(len(read(os.path.join(OUT, "lms.csv")).splitlines()) == 1, "lms.csv holds no total out of another maximum")
 
         # 5. One student regraded.
         run = batch("--only alice", "--only", "alice")
         rows = gradebook()
-        check(graded_in_last_batch() == ["alice"] and rows["alice"]["total"] == "42"
+        check(graded_in_last_batch() == ["alice"] and rows["alice"]["total"] == RAISED
               and rows["bob"]["total"] == "" and rows["bob"]["status"].startswith("stale"),
               "--only alice regrades alice alone; the others stay stale, without totals")
 
@@ -225,9 +239,9 @@ def main():
         rows = gradebook()
         log = read(os.path.join(OUT, "batch.log")).split(" batch of ")[-1]
         check(graded_in_last_batch() == [] and re.findall(r" (\w+): re-scored from attempt", log) == ["bob", "carol"]
-              and [rows[i]["total"] for i in ("alice", "bob", "carol")] == ["42", "34", "24"]
+              and [rows[i]["total"] for i in ("alice", "bob", "carol")] == [RAISED, RAISED_LAB_LOST, RAISED_NO_LAB_4]
               and all(not r["status"].startswith("stale") for r in rows.values()),
-              "a resumed batch re-scores what only the rubric's points made stale: every total out of 42")
+              f"a resumed batch re-scores what only the rubric's points made stale: every total out of {RAISED}")
 
         # 7. A threshold changes (noise at most 1.2 times the reference's): everyone re-scored in
         # seconds, the canary too, nothing rendered; each grading kept as an attempt.
@@ -235,7 +249,7 @@ def main():
         light_rubric(root, roulette_correctness=16, max_noise_ratio=1.2)
         run = batch("a threshold changed")
         log = read(os.path.join(OUT, "batch.log")).split(" batch of ")[-1]
-        check(run.returncode == 0 and graded_in_last_batch() == [] and "canary: reference solutions 42 / 42, re-scored" in log
+        check(run.returncode == 0 and graded_in_last_batch() == [] and f"canary: reference solutions {RAISED} / {RAISED}, re-scored" in log
               and sorted(re.findall(r" (\w+): re-scored from attempt", log)) == ["alice", "bob", "carol"],
               "a threshold changed: the canary and every student re-scored from their measurements, no render")
         check(timings["a threshold changed"] < 20, f"... in seconds ({timings['a threshold changed']:.0f} s)")
@@ -252,10 +266,11 @@ def main():
         # The log handed back with the feedback ends with the grade of now, not the one it printed.
         alice_log = read(os.path.join(OUT, "submissions", "alice", "grader.log"))
         tail = alice_log.split("The grade now:")[-1]
-        check("The grade now:" in alice_log and "total 42/42" in tail
+        check("The grade now:" in alice_log and f"total {RAISED}/{RAISED}" in tail
               and "(at most 1.2)" in tail,
-              "alice's grader.log ends with the re-score and the grade of now (total 42/42, noise "
-              "at most 1.2)" + ("" if "total 42/42" in tail else f"; it ends:\n{alice_log[-800:]}"))
+              f"alice's grader.log ends with the re-score and the grade of now (total {RAISED}/{RAISED}, "
+              "noise at most 1.2)" + ("" if f"total {RAISED}/{RAISED}" in tail
+                                      else f"; it ends:\n{alice_log[-800:]}"))
 
         # 8. Carol hands in lab 4, into the folder the batch reads: graded again without --only,
         # saying so; the others kept as they are.
@@ -263,7 +278,7 @@ def main():
         run = batch("carol resubmits")
         rows = gradebook()
         check(graded_in_last_batch() == ["carol"] and "carol: changed since it was graded: graded again" in run.stderr
-              and rows["carol"]["total"] == "42",
+              and rows["carol"]["total"] == RAISED,
               "a changed submission is graded again on a plain batch run, and the run says so")
 
         # 9. The Gradescope zip holds a hidden scene that git does not track, and says so.

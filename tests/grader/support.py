@@ -6,7 +6,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 # The tests import these from here.
-from checks import LABS, UNBIASED, check, exit_code, finish  # noqa: E402,F401
+from checks import LABS, LOBE, UNBIASED, check, exit_code, finish  # noqa: E402,F401
 
 
 def arguments(*options, source=True):

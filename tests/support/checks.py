@@ -25,6 +25,8 @@ def _lab_lines():
 LABS = tuple(fields[0] for fields in _lab_lines())
 # The labs that end paths by Russian roulette (the list's "unbiased"), in order.
 UNBIASED = tuple(fields[0] for fields in _lab_lines() if fields[2] == "unbiased")
+# The labs that write a glossy lobe (the list's fourth field, "lobe"), in order.
+LOBE = tuple(fields[0] for fields in _lab_lines() if fields[3:] == ["lobe"])
 
 failures = []
 

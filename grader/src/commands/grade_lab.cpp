@@ -50,13 +50,16 @@ LabMeasurement measureLab(const GraderSetup& allLabs, Lab lab, StartUpTimes& sta
         addRaceVerdict(setup.raceCheck(lab), correctness.check);
         m.seconds.race = lap();
     }
-    // A lab that writes a lobe has its routines judged too (lobe_check.h).
-    if (writesLobe(lab) && correctness.rendersFinished) {
+    // A lab that writes a lobe has its routines judged too (lobe_check.h), also when its renders
+    // failed: the routines may be why (a wrong sampler's weights overflow), and their own run
+    // says so in its words.
+    if (writesLobe(lab)) {
         addLobeVerdict(setup, lab, correctness.check);
         m.seconds.correctness += lap();
     }
-    // A lab that failed: where its picks and its divisions part, in words (pick_report.h).
-    if (!correctness.check.passed && correctness.rendersFinished) {
+    // A lab that failed: where its picks and its divisions part, in words (pick_report.h). Lab 1
+    // sends a ray for every component and picks none.
+    if (!correctness.check.passed && correctness.rendersFinished && lab != Lab::Branching) {
         addPickTestReport(setup, lab, correctness.check);
         m.seconds.correctness += lap();
     }

@@ -34,7 +34,9 @@ Color glossyBounce(const Ray& ray, const Hit& hit, int depth, PathContext& ctx) 
     const Ray bounce = glossyRay(ray, hit, d);
     const float cosTheta = dot(bounce.direction, hit.normal);
     if (cosTheta <= 0 || pdf <= 0) return Color();
-    return phongBrdf(m, d.z) * (cosTheta / pdf) * pathTrace(bounce, depth + 1, ctx);
+    // f·cos θ first, then / p: a density that underflows (a wrong sampler far out in the lobe)
+    // must not overflow cos θ / p.
+    return phongBrdf(m, d.z) * cosTheta / pdf * pathTrace(bounce, depth + 1, ctx);
 }
 
 } // namespace
