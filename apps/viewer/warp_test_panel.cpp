@@ -1,15 +1,11 @@
 #include "warp_test_panel.h"
 
-#include "pathlab/images/false_colour.h"
 #include "pathlab/render/render_identity.h"
 #include "pathlab/support/input_error.h"
 
 #include <imgui.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <functional>
 
 namespace pathlab::viewer {
 
@@ -21,14 +17,15 @@ constexpr uint64_t PanelSamples = 200000;
 /// Screen pixels per cell side, and between panels.
 constexpr float Cell = 3, Gap = 8;
 
-/// One panel of cells at the cursor, each in the colour `colourOf` gives it (RGBA8).
-void drawCells(const SphereCells& cells,
-               const std::function<void(size_t, unsigned char*)>& colourOf) {
+/// One panel of the test's cells at the cursor, coloured as the picture colours them.
+void drawCells(const WarpTestResult& result, WarpPanel panel) {
+    const SphereCells& cells = result.settings.cells;
     ImDrawList* list = ImGui::GetWindowDrawList();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const double scale = warpCountScale(result);
     for (int cell = 0; cell < cells.count(); ++cell) {
         unsigned char c[4];
-        colourOf(static_cast<size_t>(cell), c);
+        warpCellColour(result, panel, static_cast<size_t>(cell), scale, c);
         const ImVec2 from(origin.x + (cell % cells.phiCells) * Cell,
                           origin.y + cells.thetaRow(cell) * Cell);
         list->AddRectFilled(from, ImVec2(from.x + Cell, from.y + Cell),
@@ -38,24 +35,12 @@ void drawCells(const SphereCells& cells,
 }
 
 void drawExponent(const LabWarpTest& test) {
-    const WarpTestResult& r = test.result;
-    const SphereCells& cells = r.settings.cells;
-    double highest = 1;
-    for (size_t i = 0; i < r.observed.size(); ++i)
-        highest = std::max({highest, r.observed[i], r.expected[i]});
-    ImGui::Text("exponent %g: %s", test.exponent, r.passed ? "passed" : "FAILED");
-    drawCells(cells, [&](size_t i, unsigned char* c) {
-        heatColour(static_cast<float>(r.observed[i] / highest), c);
-    });
+    ImGui::Text("exponent %g: %s", test.exponent, test.result.passed ? "passed" : "FAILED");
+    drawCells(test.result, WarpPanel::Observed);
     ImGui::SameLine(0, Gap);
-    drawCells(cells, [&](size_t i, unsigned char* c) {
-        heatColour(static_cast<float>(r.expected[i] / highest), c);
-    });
+    drawCells(test.result, WarpPanel::Expected);
     ImGui::SameLine(0, Gap);
-    drawCells(cells, [&](size_t i, unsigned char* c) {
-        const double sd = std::sqrt(std::max(r.expected[i], 1.0));
-        divergingColour(static_cast<float>((r.observed[i] - r.expected[i]) / sd / 5), c);
-    });
+    drawCells(test.result, WarpPanel::Difference);
 }
 
 } // namespace

@@ -14,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 
 namespace pathlab {
 
@@ -25,7 +24,41 @@ constexpr int CellPixels = 6;
 /// Pixels between panels and between rows.
 constexpr int Gap = 6;
 
+/// The lab's code running outside a render, watched as a render's: a routine that finishes no
+/// sample for the watchdog's seconds ends the process with a line naming the lab, one that
+/// crashes it says so. `progress` counts the routine's calls.
+struct WatchedRoutines {
+    WatchedRoutines(Lab lab, Implementation implementation, double watchdogSeconds)
+        : watched{lab, implementation},
+          watchdog(
+              progress, watchdogSeconds, [w = watched] { return w; }, true),
+          crashLine(watched) {}
+
+    RenderProgress progress;
+    WatchedLab watched;
+    RenderWatchdog watchdog;
+    LabCrashLine crashLine;
+};
+
 } // namespace
+
+double warpCountScale(const WarpTestResult& r) {
+    double highest = 1;
+    for (size_t i = 0; i < r.observed.size(); ++i)
+        highest = std::max({highest, r.observed[i], r.expected[i]});
+    return highest;
+}
+
+void warpCellColour(const WarpTestResult& r, WarpPanel panel, size_t cell, double scale,
+                    unsigned char* rgba) {
+    if (panel == WarpPanel::Difference) {
+        const double sd = std::sqrt(std::max(r.expected[cell], 1.0));
+        divergingColour(static_cast<float>((r.observed[cell] - r.expected[cell]) / sd / 5), rgba);
+        return;
+    }
+    const double value = panel == WarpPanel::Observed ? r.observed[cell] : r.expected[cell];
+    heatColour(static_cast<float>(value / scale), rgba);
+}
 
 LobeRoutines lobeRoutinesToTest(Lab lab, Implementation implementation) {
     const LobeRoutines routines = findLobeRoutines(lab, implementation);
@@ -43,14 +76,14 @@ LobeRoutines lobeRoutinesToTest(Lab lab, Implementation implementation) {
 
 namespace {
 
-/// One panel of the picture, its top left corner at (left, topRow): each cell in the colour
-/// `colourOf` gives it (RGBA8).
-void drawPanel(const SphereCells& cells,
-               const std::function<void(size_t, unsigned char*)>& colourOf, int left, int topRow,
-               int width, std::vector<unsigned char>& rgb) {
+/// One panel of the picture, its top left corner at (left, topRow).
+void drawPanel(const WarpTestResult& result, WarpPanel panel, int left, int topRow, int width,
+               std::vector<unsigned char>& rgb) {
+    const SphereCells& cells = result.settings.cells;
+    const double scale = warpCountScale(result);
     for (int cell = 0; cell < cells.count(); ++cell) {
         unsigned char colour[4];
-        colourOf(static_cast<size_t>(cell), colour);
+        warpCellColour(result, panel, static_cast<size_t>(cell), scale, colour);
         const int x0 = left + (cell % cells.phiCells) * CellPixels;
         const int y0 = topRow + cells.thetaRow(cell) * CellPixels;
         for (int y = y0; y < y0 + CellPixels; ++y)
@@ -65,13 +98,8 @@ LabWarpTests runLabWarpTests(Lab lab, Implementation implementation, uint64_t se
                              uint64_t samples, double watchdogSeconds) {
     const LobeRoutines routines = lobeRoutinesToTest(lab, implementation);
     LabWarpTests tests{lab, implementation, {}, true};
-    // The student's routines run as a lab's pathTrace does: watched for an endless loop, and
-    // named when they crash.
-    RenderProgress progress;
-    const WatchedLab watched{lab, implementation};
-    const RenderWatchdog watchdog(
-        progress, watchdogSeconds, [watched] { return watched; }, true);
-    const LabCrashLine crashLine(watched);
+    WatchedRoutines watch(lab, implementation, watchdogSeconds);
+    RenderProgress& progress = watch.progress;
     progress.passStarts(samples * WarpTestExponents.size());
     for (float exponent : WarpTestExponents) {
         WarpTestSettings settings;
@@ -97,11 +125,8 @@ LabWarpTests runLabWarpTests(Lab lab, Implementation implementation, uint64_t se
 void writeLobeDump(const std::string& path, Lab lab, Implementation implementation, uint64_t seed,
                    double watchdogSeconds) {
     const LobeRoutines routines = lobeRoutinesToTest(lab, implementation);
-    RenderProgress progress;
-    const WatchedLab watched{lab, implementation};
-    const RenderWatchdog watchdog(
-        progress, watchdogSeconds, [watched] { return watched; }, true);
-    const LabCrashLine crashLine(watched);
+    WatchedRoutines watch(lab, implementation, watchdogSeconds);
+    RenderProgress& progress = watch.progress;
     const std::vector<float> exponents = lobeCheckExponents(seed);
     progress.passStarts(uint64_t(LobeDumpSamples + LobeDumpDensityPoints) * exponents.size());
     const std::vector<Vec2> numbers = lobeDumpNumbers(seed, LobeDumpSamples);
@@ -149,23 +174,9 @@ void writeWarpTestImage(const std::string& path, const LabWarpTests& tests) {
     for (int row = 0; row < rows; ++row) {
         const WarpTestResult& r = tests.exponents[static_cast<size_t>(row)].result;
         const int top = Gap + row * (panelHeight + Gap);
-        double highest = 1;
-        for (size_t i = 0; i < r.observed.size(); ++i)
-            highest = std::max({highest, r.observed[i], r.expected[i]});
-        const auto observed = [&](size_t i, unsigned char* c) {
-            heatColour(static_cast<float>(r.observed[i] / highest), c);
-        };
-        const auto expected = [&](size_t i, unsigned char* c) {
-            heatColour(static_cast<float>(r.expected[i] / highest), c);
-        };
-        // Standard deviations of a count about its expectation; ±5 at the palette's ends.
-        const auto difference = [&](size_t i, unsigned char* c) {
-            const double sd = std::sqrt(std::max(r.expected[i], 1.0));
-            divergingColour(static_cast<float>((r.observed[i] - r.expected[i]) / sd / 5), c);
-        };
-        drawPanel(cells, observed, Gap, top, width, rgb);
-        drawPanel(cells, expected, 2 * Gap + panelWidth, top, width, rgb);
-        drawPanel(cells, difference, 3 * Gap + 2 * panelWidth, top, width, rgb);
+        drawPanel(r, WarpPanel::Observed, Gap, top, width, rgb);
+        drawPanel(r, WarpPanel::Expected, 2 * Gap + panelWidth, top, width, rgb);
+        drawPanel(r, WarpPanel::Difference, 3 * Gap + 2 * panelWidth, top, width, rgb);
     }
     writeDisplayImage(path, width, height, rgb);
 }

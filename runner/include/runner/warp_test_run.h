@@ -50,6 +50,18 @@ void writeLobeDump(const std::string& path, Lab lab, Implementation implementati
 /// One line per exponent: "exponent 12: passed: chi-square ..." or its problems; and the verdict.
 std::string describeLabWarpTests(const LabWarpTests& tests);
 
+/// The three panels the picture and the window draw of one exponent's result, left to right.
+enum class WarpPanel { Observed, Expected, Difference };
+
+/// The top of the counts' heat scale: the largest count or expectation of any cell (at least 1).
+double warpCountScale(const WarpTestResult& result);
+
+/// The RGBA8 colour of `cell` in `panel`: the counts and the expectations on one heat scale up
+/// to `scale` (warpCountScale), their difference in standard deviations of the count on the
+/// diverging palette (±5 at its ends).
+void warpCellColour(const WarpTestResult& result, WarpPanel panel, size_t cell, double scale,
+                    unsigned char* rgba);
+
 /// The picture: one row per exponent, its observed counts and the density's expected counts side
 /// by side over the cells (θ down from the lobe's axis, φ across), on the same colour scale, and
 /// their difference in standard deviations (blue: fewer samples than expected, red: more).
