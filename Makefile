@@ -9,7 +9,7 @@ NATIVE ?= ON
 # off by default, so that a newer compiler's new warning does not stop a student's build.
 WARNINGS_AS_ERRORS ?= OFF
 
-.PHONY: run configure build test test-labs test-slow grade report sweep inspect pick-test warptest convergence reference bench profile \
+.PHONY: run configure build test test-labs test-slow grade report sweep inspect pick-test warptest strategies convergence reference bench profile \
         deps clean \
         handouts handouts-html student-release gradescope
 
@@ -113,6 +113,15 @@ pick-test: configure
 warptest: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target viewer
 	@cd $(BUILD) && ./viewer --warp-test --lab $(or $(LAB),glossy) --warp-image warptest.png $(ARGS)
+
+# Lab 6's three-panel figure, after Veach's (viewer --strategy-figure): veach_plates rendered by
+# your lab with the light strategy alone, the lobe strategy alone and both, side by side, into
+# $(BUILD)/strategies.png, and each one's noise figure printed. A few seconds.
+STRATEGY_SCENE = models/veach_plates.ecs
+strategies: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target viewer
+	@cd $(BUILD) && ./viewer -c $(STRATEGY_SCENE) --lab $(or $(LAB),mis) --continue-prob 0.8 \
+	    --size 320 240 --spp $(or $(SPP),16) --strategy-figure strategies.png $(ARGS)
 
 # The error-versus-time plot of your four labs, as handouts/figures/convergence.png shows the
 # reference solutions': each lab rendered headless at increasing spp (SPP="4 16 64" for others)

@@ -384,7 +384,7 @@ def veach_plates():
     each turned so that the camera sees the row of four sphere lights reflected in it, before a
     dark diffuse wall and over a diffuse floor. Sampling the lobe alone is noisy where a rough
     plate reflects a small light, sampling the lights alone where a sharp plate reflects a large
-    one: lab 5's scene."""
+    one: lab 5's scene, and lab 6's, whose noise check compares the two strategies on it."""
     mesh = Mesh()
     camera = (0.0, 2.0, 9.0)
     lights_centre = (0.0, 4.2, -2.5)
@@ -419,7 +419,7 @@ def veach_plates():
     write_mtl(os.path.join(HERE, "veach_plates.mtl"), materials)
     write_ecs(os.path.join(HERE, "veach_plates.ecs"),
               "Veach's glossy plates (rough to sharp) lit by four lights (small to large) of one\n"
-              "power: lab 5 (lobe sampling alone).",
+              "power: lab 5 (lobe sampling alone), lab 6 (both strategies, or one: --strategy).",
               "-i veach_plates.obj\n-vp 0 2 9\n-vi 0 1.4 0\n-vu 0 1 0\n-fov 40\n")
     return n
 

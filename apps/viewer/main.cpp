@@ -8,8 +8,9 @@
 
 #include "runner/headless_render.h"
 #include "runner/pick_test_run.h"
-#include "runner/warp_test_run.h"
 #include "runner/pixel_replay.h"
+#include "runner/strategy_figure.h"
+#include "runner/warp_test_run.h"
 
 #include "pathlab/images/image_io.h"
 #include "pathlab/inspect/inspection_json.h"
@@ -204,9 +205,22 @@ int testWarp(const RenderOptions& options) {
     return tests.passed ? 0 : 1;
 }
 
-/// The headless runs: -o's render, --inspect's replay, --pick-test, or several (in that order).
+/// --strategy-figure: lab 6's three renders, light alone, lobe alone and both, side by side.
+void drawStrategyFigure(const RenderOptions& options, const RenderScene& scene) {
+    std::printf("lab %s with each strategy alone and both, %dx%d at %d spp ...\n",
+                labAndImplementation(options).c_str(), options.width, options.height, options.spp);
+    std::fflush(stdout);
+    const std::vector<StrategyPanel> panels = renderStrategyPanels(options, scene);
+    writeStrategyFigure(options.strategyFigure, panels, options.width, options.height);
+    std::printf("wrote %s: light alone, lobe alone and both, left to right\n%s",
+                options.strategyFigure.c_str(), describeStrategyPanels(panels).c_str());
+}
+
+/// The headless runs: -o's render, --inspect's replay, --pick-test, --strategy-figure, or several
+/// (in that order).
 int runHeadless(const RenderOptions& options, const HeadlessExtras& extras) {
     const RenderScene scene(loadScene(options));
+    if (!options.strategyFigure.empty()) drawStrategyFigure(options, scene);
     if (!options.outputImage.empty()) renderToFile(options, extras, scene);
     if (options.inspect) inspectPixel(options, scene);
     return options.pickTest ? testPicks(options, scene) : 0;
@@ -241,7 +255,9 @@ int main(int argc, char** argv) {
         viewer::checkMapOptions(extras.maps, options, window);
         checkInspectOptions(options);
         viewer::checkInspectWindow(window, options);
-        if (!options.outputImage.empty() || options.pickTest ||
+        if (!options.strategyFigure.empty())
+            checkImageOutputPath(options.strategyFigure, "--strategy-figure");
+        if (!options.outputImage.empty() || options.pickTest || !options.strategyFigure.empty() ||
             (options.inspect && !window.inspectInWindow)) {
             if (!options.outputImage.empty() && !window.referenceImage.empty()) {
                 extras.referenceFile = window.referenceImage;

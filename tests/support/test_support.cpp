@@ -51,4 +51,6 @@ ShellCommandResult runViewer(const std::string& arguments) {
     return runShellCommand(std::string(PATHLAB_VIEWER) + " " + arguments);
 }
 
+std::string builtViewer() { return PATHLAB_VIEWER; }
+
 } // namespace pathlab::test

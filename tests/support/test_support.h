@@ -40,4 +40,7 @@ Estimate estimateOf(const HeadlessResult& result);
 /// what it printed on stdout and stderr together.
 ShellCommandResult runViewer(const std::string& arguments);
 
+/// The built viewer's path (the one runViewer runs).
+std::string builtViewer();
+
 } // namespace pathlab::test

@@ -27,7 +27,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from checks import check, exit_code  # noqa: E402
+from checks import LOBE, check, exit_code  # noqa: E402
 from png_pixels import png_size  # noqa: E402
 from script_tests import (check_make_refuses, check_script_refuses, check_succeeded,  # noqa: E402
                           close, import_script, read_csv, run, script_test_arguments)
@@ -152,7 +152,7 @@ def check_bad_input(scratch):
              ("--lab uniform --param continue-prob", "PARAM=continue-prob does nothing"),
              ("--lab roulette --param glossy-exponent",
               "PARAM=glossy-exponent does nothing in lab roulette: only a lab that samples a "
-              "glossy lobe (glossy)"),
+              f"glossy lobe ({', '.join(LOBE)})"),
              ("--lab glossy --param glossy-exponent --values 0", "Phong exponent 0 is not above 0"),
              ("--lab roulette --values 0", "continueProb 0 is outside"),
              ("--lab roulette --values '0.5 1'", "continueProb 1 never ends"),

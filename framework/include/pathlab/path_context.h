@@ -4,6 +4,7 @@
 #include "pathlab/call_site.h"
 #include "pathlab/color.h"
 #include "pathlab/hit.h"
+#include "pathlab/light_sample.h"
 #include "pathlab/ray.h"
 #include "pathlab/sampler.h"
 
@@ -34,6 +35,24 @@ public:
     /// diffuse BRDF, so a lab adds it as it is. `hit` must be a found surface.
     Color directLight(const Hit& hit, CallSite caller = {});
 
+    /// Lab 6: a direction toward one light, picked by power as directLight() picks it, at a
+    /// point chosen uniformly on it; with the radiance arriving from it (one shadow ray) and its
+    /// density per unit solid angle (pathlab/light_sample.h). `hit` must be a found surface.
+    LightSample sampleLight(const Hit& hit, CallSite caller = {});
+
+    /// Lab 6: the density per unit solid angle with which sampleLight(hit) would have chosen
+    /// the direction toward `onLight`, a surface a ray from `hit` found: 0 when it emits
+    /// nothing toward `hit` (it is no light, or is seen from its back).
+    float lightPdf(const Hit& hit, const Hit& onLight, CallSite caller = {}) const;
+
+    /// Lab 6: `misWeight` (your heuristic's weight for `strategy`) as it is, or, where the
+    /// viewer was asked for one strategy alone (--strategy light or lobe), 1 for that strategy
+    /// and 0 for the other. Pass every weight of the two strategies through it: the handout's
+    /// three-panel figure renders your lab three ways with it. (A point or directional light's
+    /// sample, LightSample::delta, is light sampling's alone, weight 1 in every render: no
+    /// bounce can find it.)
+    float strategyWeight(Strategy strategy, float misWeight) const;
+
     Sampler sampler;          ///< this path's random numbers: get1D(), get2D()
     const int maxDepth;       ///< labs 1–3: no bounce ray is traced from a hit at depth maxDepth
     const float continueProb; ///< lab 4: Russian roulette continues a path with this probability
@@ -50,10 +69,12 @@ private:
     Hit traceUnrecorded(const Ray& ray, CallSite caller);
     Color directLightUnrecorded(const Hit& hit, CallSite caller);
     Color directionalLight(const Hit& hit, const LightSource& light);
+    LightSample sampleLightUnrecorded(const Hit& hit, CallSite caller);
     Hit recordedTrace(const Ray& ray, CallSite caller);
     Color recordedDirectLight(const Hit& hit, CallSite caller);
 
     const RenderScene& scene_;
+    const StrategyChoice strategies_;
     uint64_t closestHitRays_ = 0;          ///< rays trace() sent, camera rays included
     uint64_t shadowRays_ = 0;              ///< rays directLight() sent
     RayLog* log_ = nullptr;                ///< where to record rays, if anywhere

@@ -29,4 +29,9 @@ Ray refractionRay(const Ray& ray, const Hit& hit, CallSite caller = {});
 /// with z >= 0: a check stops the render, naming the line, when it is not.
 Ray glossyRay(const Ray& ray, const Hit& hit, Vec3 lobeDirection, CallSite caller = {});
 
+/// Lab 6: `worldDirection` (a unit vector, such as a light sample's direction) in the frame of
+/// the glossy lobe at `hit`, the inverse of glossyRay's turn: z is cos α, its cosine to the
+/// mirror reflection of `ray`, as phongBrdf and lobePdf take it.
+Vec3 lobeFrameDirection(const Ray& ray, const Hit& hit, Vec3 worldDirection, CallSite caller = {});
+
 } // namespace pathlab

@@ -95,6 +95,7 @@ void LightSampler::buildAliasTable(const std::vector<double>& power) {
     // Vose's construction of Walker's alias table.
     double total = 0;
     for (double p : power) total += p;
+    inverseTotalPower_ = static_cast<float>(1.0 / total);
     pmf_.resize(n);
     threshold_.assign(n, 1.0f);
     alias_.resize(n);

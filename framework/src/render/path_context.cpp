@@ -33,7 +33,7 @@ const char* rayKindName(RayKind kind) {
 
 PathContext::PathContext(const RenderScene& scene, const LabParameters& parameters)
     : sampler(PathDriver::samplerFor(0, 0, 0)), maxDepth(parameters.maxDepth),
-      continueProb(parameters.continueProb), scene_(scene) {}
+      continueProb(parameters.continueProb), scene_(scene), strategies_(parameters.strategies) {}
 
 Hit PathContext::traceUnrecorded(const Ray& ray, CallSite caller) {
     // A ray built by a lab: Embree would trace a non-unit direction, with every distance and

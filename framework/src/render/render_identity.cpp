@@ -7,7 +7,8 @@ namespace pathlab {
 bool operator==(const RenderIdentity& a, const RenderIdentity& b) {
     return a.lab == b.lab && a.implementation == b.implementation &&
            a.parameters.maxDepth == b.parameters.maxDepth &&
-           a.parameters.continueProb == b.parameters.continueProb && a.seed == b.seed &&
+           a.parameters.continueProb == b.parameters.continueProb &&
+           a.parameters.strategies == b.parameters.strategies && a.seed == b.seed &&
            a.width == b.width && a.height == b.height;
 }
 
@@ -29,6 +30,11 @@ std::vector<std::string> renderIdentityArguments(const RenderIdentity& identity)
                                           std::to_string(identity.width),
                                           std::to_string(identity.height)};
     if (identity.implementation == Implementation::Solution) arguments.push_back("--solution");
+    // Only where it is not the default, so that labs 1-5's arguments stay as they were.
+    if (identity.parameters.strategies == StrategyChoice::LightOnly)
+        arguments.insert(arguments.end(), {"--strategy", "light"});
+    if (identity.parameters.strategies == StrategyChoice::LobeOnly)
+        arguments.insert(arguments.end(), {"--strategy", "lobe"});
     return arguments;
 }
 

@@ -152,6 +152,19 @@ Handlers estimatorOptions(RenderOptions& o, OptionReader& in) {
                                            std::to_string(p));
              o.parameters.continueProb = p;
          }},
+        {"strategy",
+         [&](const Token& t) {
+             const Token& name = in.value(t, "a strategy");
+             if (name.text == "both")
+                 o.parameters.strategies = StrategyChoice::Both;
+             else if (name.text == "light")
+                 o.parameters.strategies = StrategyChoice::LightOnly;
+             else if (name.text == "lobe")
+                 o.parameters.strategies = StrategyChoice::LobeOnly;
+             else
+                 OptionReader::fail(t, "option --strategy expects both, light or lobe, got '" +
+                                           name.text + "'");
+         }},
         {"seed",
          [&](const Token& t) {
              const long long s = in.integer(t, "a seed (0 or more)");
@@ -198,6 +211,8 @@ Handlers outputOptions(RenderOptions& o, OptionReader& in) {
              o.warpImage = in.value(t, "a .png file name").text;
          }},
         {"lobe-dump", [&](const Token& t) { o.lobeDump = in.value(t, "a file name").text; }},
+        {"strategy-figure",
+         [&](const Token& t) { o.strategyFigure = in.value(t, "a .png file name").text; }},
         {"warp-samples",
          [&](const Token& t) {
              o.warpSamples =
@@ -280,7 +295,9 @@ estimator
            labNames(" | ") + " (default " + std::string(labName(AllLabs[0])) + ")\n" +
            R"(  --solution             run the reference solution instead of your labs/ code
   --max-depth N          labs 1-3: bounces after the primary hit (default 3)
-  --continue-prob P      labs 4-5: Russian-roulette continuation probability, 0<P<1 (default 0.1)
+  --continue-prob P      labs 4-6: Russian-roulette continuation probability, 0<P<1 (default 0.1)
+  --strategy S           lab 6: both (multiple importance sampling, the default), or light or
+                         lobe alone: ctx.strategyWeight gives the other strategy weight 0
   --seed S               random seed (default 0); the image depends only on it
   --threads N            worker threads (default: all cores)
   --reverse-tiles        render the tiles last to first: the same image when the lab takes
@@ -312,7 +329,7 @@ path inspector
   --pick-test            labs 2-4: replay 16 samples of each of 32x32 pixels and test, material
                          by material, how often the lab went on by each component against the
                          probability it divided by (chi-square); exit status 1 when they differ
-warp test (lab 5; no scene needed)
+warp test (labs 5 and 6; no scene needed)
   --warp-test            draw --warp-samples directions from the lab's sampleLobe at exponents
                          1, 12 and 60, count them over the sphere against lobePdf integrated
                          over the same cells (chi-square; a right pair fails 1 time in 1000),
@@ -321,6 +338,11 @@ warp test (lab 5; no scene needed)
   --warp-samples N       directions per exponent (default 1000000)
   --lobe-dump FILE       the grader's: write what sampleLobe and lobePdf give for inputs drawn
                          from --seed, for the grader to judge against the Phong lobe
+strategies (lab 6)
+  --strategy-figure FILE.png
+                         render the scene (-c) three times at --spp, with the light strategy
+                         alone, the lobe strategy alone and both (--strategy), write the
+                         three side by side, and print each one's noise figure
 )";
 }
 

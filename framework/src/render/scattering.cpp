@@ -66,4 +66,10 @@ Ray glossyRay(const Ray& ray, const Hit& hit, Vec3 lobeDirection, CallSite calle
     return {offsetRayOrigin(hit, direction), direction, RayKind::Glossy};
 }
 
+Vec3 lobeFrameDirection(const Ray& ray, const Hit& hit, Vec3 worldDirection, CallSite caller) {
+    checkFound(hit, "lobeFrameDirection(ray, hit, direction)", caller);
+    const Vec3 mirror = normalize(reflect(ray.direction, hit.normal));
+    return OrthonormalBasis(mirror).toLocal(worldDirection);
+}
+
 } // namespace pathlab

@@ -101,35 +101,37 @@ nlohmann::json measurementJson(const LabMeasurement& m, const std::string& folde
                             {"region_p", p.regionP}});
     }
     const TimedMeasurement& t = m.speed;
-    return {
-        {"lab", labName(m.lab)},
-        {"seconds",
-         {{"correctness", m.seconds.correctness},
-          {"race_check", m.seconds.race},
-          {"speed", m.seconds.speed}}},
-        {"ungraded", m.ungraded},
-        {"ungraded_details", m.ungradedDetails},
-        {"correctness", checkJson(m.correctness)},
-        {"renders_finished", m.rendersFinished},
-        {"noise",
-         {{"student", m.noise.student}, {"solution", m.noise.solution}, {"scene", m.noise.scene}}},
-        {"speed_measured", m.speedMeasured},
-        {"speed",
-         {{"not_timed", t.notTimed},
-          {"not_timed_diagnosis", t.notTimedDiagnosis},
-          {"student", t.student},
-          {"solution", t.solution},
-          {"student_wall_seconds", t.studentWall},
-          {"solution_wall_seconds", t.solutionWall},
-          {"student_rays", raysJson(t.studentRays)},
-          {"solution_rays", raysJson(t.solutionRays)},
-          {"student_samples", t.studentSamples},
-          {"solution_samples", t.solutionSamples},
-          {"cpu_seconds", t.cpuSeconds},
-          {"wall_seconds", t.wallSeconds},
-          {"timing_cores", t.timingCores},
-          {"images_differ", t.imagesDiffer}}},
-        {"pictures", pictures}};
+    return {{"lab", labName(m.lab)},
+            {"seconds",
+             {{"correctness", m.seconds.correctness},
+              {"race_check", m.seconds.race},
+              {"speed", m.seconds.speed}}},
+            {"ungraded", m.ungraded},
+            {"ungraded_details", m.ungradedDetails},
+            {"correctness", checkJson(m.correctness)},
+            {"renders_finished", m.rendersFinished},
+            {"noise",
+             {{"student", m.noise.student},
+              {"solution", m.noise.solution},
+              {"scene", m.noise.scene},
+              {"strategies", strategyTilesJson(m.noise.strategies)}}},
+            {"speed_measured", m.speedMeasured},
+            {"speed",
+             {{"not_timed", t.notTimed},
+              {"not_timed_diagnosis", t.notTimedDiagnosis},
+              {"student", t.student},
+              {"solution", t.solution},
+              {"student_wall_seconds", t.studentWall},
+              {"solution_wall_seconds", t.solutionWall},
+              {"student_rays", raysJson(t.studentRays)},
+              {"solution_rays", raysJson(t.solutionRays)},
+              {"student_samples", t.studentSamples},
+              {"solution_samples", t.solutionSamples},
+              {"cpu_seconds", t.cpuSeconds},
+              {"wall_seconds", t.wallSeconds},
+              {"timing_cores", t.timingCores},
+              {"images_differ", t.imagesDiffer}}},
+            {"pictures", pictures}};
 }
 
 LabMeasurement readMeasurement(const nlohmann::json& j, const std::string& folder) {
@@ -147,7 +149,9 @@ LabMeasurement readMeasurement(const nlohmann::json& j, const std::string& folde
         m.correctness = readCheck(j.at("correctness"));
         m.rendersFinished = j.at("renders_finished");
         const nlohmann::json& n = j.at("noise");
-        m.noise = {n.at("student"), n.at("solution"), n.at("scene")};
+        m.noise = {n.at("student"), n.at("solution"), n.at("scene"), {}};
+        // Measurements stored before lab 6 have no strategies.
+        if (n.contains("strategies")) m.noise.strategies = readStrategyTiles(n.at("strategies"));
         m.speedMeasured = j.at("speed_measured");
         const nlohmann::json& s = j.at("speed");
         TimedMeasurement& t = m.speed;

@@ -6,6 +6,7 @@
 
 #include "checks/check_result.h"
 #include "checks/rubric.h"
+#include "checks/strategy_tiles.h"
 
 #include "pathlab/render/ray_counters.h"
 
@@ -21,6 +22,9 @@ struct NoiseMeasurement {
     double student = -1; ///< the lab's per-sample variance on the noise scene; -1: not measured
     double solution = 0; ///< the reference solution's, from the scene's reference
     std::string scene;
+    /// Lab 6's per-tile variances against each strategy alone (strategy_noise.h); empty for
+    /// the other labs, and for a lab 6 that failed correctness.
+    StrategyTiles strategies;
 };
 
 /// The speed check's timed runs (speed_check.h), or why there are none.

@@ -18,6 +18,9 @@ const char* extraBounceCause(Lab lab) {
     case Lab::Glossy:
         return "paths continued without ctx.continueProb's roulette, or a glossy "
                "ray traced below the surface?";
+    case Lab::Mis:
+        return "paths continued without ctx.continueProb's roulette, a glossy ray traced below "
+               "the surface, or the glossy bounce's first hit traced twice?";
     default: return "rays its steps do not ask for?"; // a lab added since: no cause of its own
     }
 }

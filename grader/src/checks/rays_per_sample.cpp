@@ -32,6 +32,10 @@ std::string bounceSpecification(Lab lab) {
     case Lab::Glossy:
         return "lab 5 continues a path with probability ctx.continueProb at every hit, as lab 4 "
                "does, with one ray of the picked component (TODO lab5.3, lab5.4)";
+    case Lab::Mis:
+        return "lab 6 continues a path with probability ctx.continueProb at every hit, as lab 5 "
+               "does, with one ray of the picked component; its light sample at a glossy "
+               "surface is a shadow ray (TODO lab6.3 to lab6.5)";
     default:
         // A lab added to the lab list since these words were written: the reference solution's
         // count is its specification until it has words of its own here.

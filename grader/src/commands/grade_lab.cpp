@@ -7,6 +7,7 @@
 #include "checks/pick_report.h"
 #include "checks/race_verdict.h"
 #include "checks/speed_check.h"
+#include "checks/strategy_noise.h"
 
 #include <chrono>
 
@@ -67,6 +68,12 @@ LabMeasurement measureLab(const GraderSetup& allLabs, Lab lab, StartUpTimes& sta
     m.rendersFinished = correctness.rendersFinished;
     m.pictures = std::move(correctness.pictures);
     m.noise = measureNoise(setup, lab, correctness.noise);
+    // Lab 6: its noise tile by tile against each strategy alone (strategy_noise.h), which, like
+    // the noise figure, counts only for a correct lab.
+    if (combinesStrategies(lab) && m.correctness.passed) {
+        m.noise.strategies = measureStrategyTiles(setup, lab);
+        m.seconds.correctness += lap();
+    }
     m.speedMeasured = setup.measureSpeed;
     if (!setup.measureSpeed) return m;
     if (!m.rendersFinished) {

@@ -11,15 +11,16 @@ constexpr double Pi = 3.14159265358979;
 /// Labs 2-4 trace the picked component and weigh it in one step (lab 4 divides by both of its
 /// probabilities in step 4.4); lab 4 has no depth limit; labs 1-2 pick nothing that can be
 /// black, so they have no near-black stop. Lab 5 has all of lab 4's in its step 5.3 ("as your
-/// lab 4"); its own steps, the lobe's, are told by the lobe check (checks/lobe_check.h).
+/// lab 4"), lab 6 in its step 6.5 ("your lab 5 path"); their own steps, the lobe's, are told by
+/// the lobe check (checks/lobe_check.h), lab 6's weights by the lab tests and the noise check.
 const std::array<ByLab<int>, 7> StepNumbers = {{
-    {1, 1, 1, 1, 3}, // Emission
-    {2, 2, 2, 2, 3}, // DepthLimit (lab 4's step 2 replaces it with roulette)
-    {3, 3, 3, 2, 3}, // FirstBounce
-    {3, 4, 4, 4, 3}, // DiffuseWeight
-    {5, 4, 4, 3, 3}, // Refraction
-    {0, 4, 4, 4, 3}, // ProbabilityDivision
-    {0, 0, 3, 3, 3}, // NearBlackStop
+    {1, 1, 1, 1, 3, 5}, // Emission
+    {2, 2, 2, 2, 3, 5}, // DepthLimit (lab 4's step 2 replaces it with roulette)
+    {3, 3, 3, 2, 3, 5}, // FirstBounce
+    {3, 4, 4, 4, 3, 5}, // DiffuseWeight
+    {5, 4, 4, 3, 3, 5}, // Refraction
+    {0, 4, 4, 4, 3, 5}, // ProbabilityDivision
+    {0, 0, 3, 3, 3, 5}, // NearBlackStop
 }};
 
 constexpr LabSet DepthLimited = EveryLab & ~RouletteLabs;

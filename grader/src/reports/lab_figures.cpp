@@ -42,6 +42,7 @@ std::string notebookLabel(Lab lab) {
     case Lab::Uniform: return "uniform pick" + number;
     case Lab::Importance: return "importance pick" + number;
     case Lab::Glossy: return "glossy lobe" + number;
+    case Lab::Mis: return "multiple importance sampling" + number;
     default: return std::string(labName(lab)) + number; // "branching (lab 1)"
     }
 }

@@ -2,6 +2,7 @@
 /// Picks a light for next-event estimation in proportion to its power, in constant time.
 
 #include "pathlab/color.h"
+#include "pathlab/constants.h"
 #include "pathlab/scene_io/scene.h"
 #include "pathlab/vec3.h"
 
@@ -53,6 +54,14 @@ public:
 
     /// The probability pick() returns light i.
     float pmf(size_t i) const { return pmf_[i]; }
+
+    /// The density per unit area with which pick() and a uniform point on the picked triangle
+    /// choose a point of an emitting triangle of radiance `Ke`: its pick probability
+    /// π·area·average(Ke) / (total power) over its area. The area cancels, so the density needs
+    /// no lookup of which triangle was hit (ctx.lightPdf, lab 6).
+    float trianglePointDensity(const Color& Ke) const {
+        return Pi * average(Ke) * inverseTotalPower_;
+    }
     const LightSource& light(size_t i) const { return lights_[i]; }
 
 private:
@@ -63,6 +72,7 @@ private:
     std::vector<float> pmf_;
     std::vector<float> threshold_;
     std::vector<uint32_t> alias_;
+    float inverseTotalPower_ = 0;
 };
 
 } // namespace pathlab

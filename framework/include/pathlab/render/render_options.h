@@ -64,6 +64,9 @@ struct RenderOptions : RenderIdentity {
     std::string warpImage;          ///< --warp-image FILE.png: its picture
     uint64_t warpSamples = 1000000; ///< --warp-samples: per exponent
     std::string lobeDump;           ///< --lobe-dump FILE: for the grader (warp/lobe_dump.h)
+    /// --strategy-figure FILE.png (lab 6): the scene rendered with each strategy alone and with
+    /// both, side by side
+    std::string strategyFigure;
 
     bool help = false; ///< --help
 };
