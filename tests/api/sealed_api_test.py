@@ -44,6 +44,13 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
         const Ray glossy = glossyRay(ray, hit, Vec3{0, 0, 1});
         if (glossy.kind == RayKind::Glossy)
             radiance += phongBrdf(m, 1.0f) * pathTrace(glossy, depth + 1, ctx);
+        const LightSample light = ctx.sampleLight(hit);
+        const Vec3 local = lobeFrameDirection(ray, hit, light.direction);
+        const float weight = light.delta ? 1.0f : ctx.strategyWeight(Strategy::Light, 0.5f);
+        if (light.pdf > 0 && light.distance > 0 && light.cosAtLight > 0)
+            radiance += light.radiance * phongBrdf(m, local.z) * (weight / light.pdf);
+        const Hit next = ctx.trace(glossy);
+        radiance += next.emitted * ctx.strategyWeight(Strategy::Lobe, ctx.lightPdf(hit, next));
     }
     return isBlack(m.Ke) || ray.kind == RayKind::Diffuse ? radiance : radiance / reduceMax(m.Ke);
 }
@@ -72,6 +79,7 @@ FORBIDDEN = [
 # from framework/lab_list.txt into BUILD/generated/include.
 DOCUMENTED_HEADERS = {
     "lab.h", "lab_declarations.h", "lab_list.h", "call_site.h", "color.h", "constants.h", "cosine_hemisphere.h", "hit.h",
+    "light_sample.h",
     "glossy_lobe.h", "material.h", "orthonormal_basis.h", "path_context.h", "random_stream.h", "ray.h",
     "sampler.h",
     "scattering.h", "small_angle_sin_cos.h", "todo.h", "vec3.h",

@@ -70,6 +70,15 @@ constexpr int LongRayLine = __LINE__ + 2;
 Color traceLongRay(const Ray& ray, int, PathContext& ctx) {
     return ctx.trace({ray.origin, ray.direction * 2.0f, ray.kind}).emitted;
 }
+constexpr float NotAWeight = std::numeric_limits<float>::quiet_NaN();
+constexpr int WeightLine = __LINE__ + 3;
+Color weighNaN(const Ray& ray, int, PathContext& ctx) {
+    const Hit hit = ctx.trace(ray);
+    return hit.emitted * ctx.strategyWeight(Strategy::Lobe, NotAWeight);
+}
+Color sampleLightAtMissedHit(const Ray&, int, PathContext& ctx) {
+    return ctx.sampleLight(Hit()).radiance;
+}
 
 /// NaN for the samples whose first random number after the pixel jitter is below 1%, after one
 /// bounce (two rays traced); the scene's radiance otherwise.
@@ -92,6 +101,16 @@ TEST_CASE("the bounce helpers and directLight refuse a missed hit, naming themse
                    "scattering.cpp:", ": hit.found]"});
     checkMentions(checkMessage(mirrorOffMissedHit), {"mirrorRay(ray, hit) needs a surface"});
     checkMentions(checkMessage(lightAtMissedHit), {"ctx.directLight(hit) needs a surface"});
+}
+
+TEST_CASE("lab 6's ctx.strategyWeight refuses a weight outside [0, 1], and sampleLight a missed "
+          "hit, naming the lab's line",
+          "[render][checks]") {
+    checkMentions(checkMessage(weighNaN),
+                  {"checks_test.cpp:" + std::to_string(WeightLine) + ": check failed",
+                   "ctx.strategyWeight's weight nan is not between 0 and 1",
+                   "misWeight (TODO lab6.2)"});
+    checkMentions(checkMessage(sampleLightAtMissedHit), {"ctx.sampleLight(hit) needs a surface"});
 }
 
 TEST_CASE("ctx.trace refuses a direction that is not unit length, naming the lab's line and "

@@ -51,7 +51,9 @@ public:
     /// three-panel figure renders your lab three ways with it. (A point or directional light's
     /// sample, LightSample::delta, is light sampling's alone, weight 1 in every render: no
     /// bounce can find it.)
-    float strategyWeight(Strategy strategy, float misWeight) const;
+    /// `misWeight` must be a number from 0 to 1: a check stops the render, naming the line,
+    /// when it is not (a NaN or negative density given to your heuristic, most likely).
+    float strategyWeight(Strategy strategy, float misWeight, CallSite caller = {}) const;
 
     Sampler sampler;          ///< this path's random numbers: get1D(), get2D()
     const int maxDepth;       ///< labs 1–3: no bounce ray is traced from a hit at depth maxDepth

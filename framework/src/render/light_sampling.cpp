@@ -10,6 +10,7 @@
 #include "pathlab/support/check.h"
 
 #include <cmath>
+#include <string>
 #include <utility>
 
 namespace pathlab {
@@ -18,11 +19,13 @@ LightSample PathContext::sampleLight(const Hit& hit, CallSite caller) {
     if (!recorder_) return sampleLightUnrecorded(hit, caller);
     // The inspector draws the shadow ray with the path's, as it does directLight()'s.
     RayLog* renderLog = std::exchange(log_, &recorder_->shadowRays());
+    const Sampler before = sampler;
     const size_t shadowRaysBefore = log_->occlusion.size();
     const LightSample sample = sampleLightUnrecorded(hit, caller);
     if (renderLog && log_->occlusion.size() > shadowRaysBefore)
         renderLog->occlusion.push_back(log_->occlusion.back());
     log_ = renderLog;
+    recorder_->sampledLight(before, sampler);
     return sample;
 }
 
@@ -97,7 +100,12 @@ float PathContext::lightPdf(const Hit& hit, const Hit& onLight, CallSite caller)
     return std::isfinite(pdf) ? pdf : 0.0f;
 }
 
-float PathContext::strategyWeight(Strategy strategy, float misWeight) const {
+float PathContext::strategyWeight(Strategy strategy, float misWeight, CallSite caller) const {
+    // A little past 1 for the float rounding of p²/(p² + q²).
+    PATHLAB_CHECK_CALLER(misWeight >= 0.0f && misWeight <= 1.0f + 1e-5f, caller,
+                         "ctx.strategyWeight's weight " + std::to_string(misWeight) +
+                             " is not between 0 and 1: misWeight (TODO lab6.2) must return a "
+                             "weight, from two densities that are numbers of 0 or more");
     switch (strategies_) {
     case StrategyChoice::Both: return misWeight;
     case StrategyChoice::LightOnly: return strategy == Strategy::Light ? 1.0f : 0.0f;

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace pathlab {
 
@@ -28,7 +29,7 @@ PathRecorder::PathRecorder(PathProbe probe, const Sampler& start)
     : probe_(probe), stream_(start.rng_) {}
 
 std::vector<float> PathRecorder::drawsSince(const Sampler& now) {
-    std::vector<float> draws;
+    std::vector<float> draws = std::exchange(pendingDraws_, {});
     RandomStream stepping = stream_;
     while (!(stepping == now.rng_)) {
         if (draws.size() == MaxDrawsCounted) {
@@ -78,6 +79,11 @@ Color PathRecorder::directLit(const Hit& hit, Color light, bool sentShadowRay,
     if (probe_.value == PathProbe::Value::DirectLight && probe_.vertex == vertex)
         return PathProbe::changed(light, probe_.scale);
     return light;
+}
+
+void PathRecorder::sampledLight(const Sampler& before, const Sampler& after) {
+    pendingDraws_ = drawsSince(before);
+    stream_ = after.rng_; // sampleLight's own draws are the framework's, not the lab's
 }
 
 void PathRecorder::ended(const Sampler& now) {

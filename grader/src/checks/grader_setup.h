@@ -61,6 +61,9 @@ struct GraderSetup {
     uint64_t seedBase = 1;
     int threads = 0;
     bool measureSpeed = true;
+    /// The build has the reference solutions (the kit, the instructor's graders); a student's
+    /// release has not: there lab 6's strategies alone are the lab's own (strategy_noise.h).
+    bool solutionsAvailable = true;
     /// A build without the solutions cannot check speed (measureSpeed false), but it still times
     /// the student's labs, for the speed ratios between them; the reference's ratios then come
     /// from the stored figures (lab_figures.json, by lab; 0 where none).

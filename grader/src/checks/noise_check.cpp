@@ -38,6 +38,11 @@ void judgeStrategyTiles(const StrategyTiles& tiles, CheckResult& check) {
     check.summary += "; on " + std::string(StrategyScene) + ", the worst tile " +
                      significant(worst.ratio, 3) + " times the better strategy's alone (at most " +
                      significant(MaxStrategyTileRatio, 2) + ")";
+    if (tiles.strategiesByLab)
+        check.details.push_back(
+            "the strategies alone were your lab's own, rendered through ctx.strategyWeight as "
+            "make strategies renders them: this build has no reference solution; your "
+            "instructor's grader renders the reference solution's");
     if (worst.ratio <= MaxStrategyTileRatio) return;
     check.passed = false;
     if (check.diagnosis.empty()) check.diagnosis = "noisier than the better strategy";

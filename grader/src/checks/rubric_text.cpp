@@ -1,7 +1,9 @@
 #include "checks/rubric_text.h"
 
+#include "checks/glossy_furnace_scene.h"
 #include "checks/run_limits.h"
 #include "checks/speed_check.h"
+#include "checks/strategy_tiles.h"
 
 #include <sstream>
 
@@ -50,6 +52,10 @@ std::string rubricText(const Rubric& r, const std::string& rubricPath, int hidde
     out << "\n  parameter check: " << r.parameterCheck.scene << " again, labs 1-3 at maxDepth "
         << r.parameterCheck.maxDepth << " and lab 4 at continueProb "
         << r.parameterCheck.continueProb << ",\n  against its exact value by the same test\n";
+    out << "  the labs that write a glossy lobe (labs 5 and 6) also: " << GlossyFurnaceScenes[0]
+        << " and " << GlossyFurnaceScenes[1]
+        << " (analytic; the tilted one a variant of\n  its own for each submission), and the lobe "
+           "check of sampleLobe and lobePdf\n";
     if (hiddenScenes > 0)
         out << "  hidden scenes: " << hiddenScenes
             << " (feedback says pass or fail; Gradescope shows that " << r.hiddenScenesVisibility
@@ -66,7 +72,12 @@ std::string rubricText(const Rubric& r, const std::string& rubricPath, int hidde
         << ", from the spread of the correctness "
            "renders' "
         << r.seeds << " seeds,\n  at most " << r.maxNoiseRatio
-        << " times the reference solution's (a correct lab only)\n";
+        << " times the reference solution's (a correct lab only)\n"
+        << "  lab 6 also: on " << StrategyScene << ", " << StrategySeeds << " seeds of "
+        << StrategySpp << " spp at " << StrategyWidth << "x" << StrategyHeight
+        << ", each plate tile's variance at most " << MaxStrategyTileRatio
+        << " times\n  the better of the reference solution's light and lobe strategies "
+           "alone\n";
 
     out << "\nspeed: at least " << r.minSpeedRatio
         << " times the reference solution's samples per CPU-second, in the correctness renders "

@@ -46,14 +46,19 @@ StrategyTiles measureStrategyTiles(const GraderSetup& setup, Lab lab) {
             "the lab's renders of " + std::string(StrategyScene) + " failed: " + failure;
         return tiles;
     }
-    tiles.light = renderTiles(setup, setup.solution, lab, StrategyChoice::LightOnly,
+    // The strategies alone are the reference solution's; a student's release has none, and
+    // takes the lab's own, which it renders through ctx.strategyWeight (as make strategies).
+    tiles.strategiesByLab = !setup.solutionsAvailable;
+    const LabRunner& strategies = tiles.strategiesByLab ? setup.student : setup.solution;
+    tiles.light = renderTiles(setup, strategies, lab, StrategyChoice::LightOnly,
                               seed + StrategySeeds, failure);
     if (failure.empty())
-        tiles.lobe = renderTiles(setup, setup.solution, lab, StrategyChoice::LobeOnly,
+        tiles.lobe = renderTiles(setup, strategies, lab, StrategyChoice::LobeOnly,
                                  seed + 2 * StrategySeeds, failure);
     if (!failure.empty())
-        tiles.failure = "the reference solution's renders of " + std::string(StrategyScene) +
-                        " failed: " + failure;
+        tiles.failure =
+            std::string(tiles.strategiesByLab ? "the lab's" : "the reference solution's") +
+            " renders of " + StrategyScene + " with one strategy alone failed: " + failure;
     return tiles;
 }
 

@@ -67,6 +67,15 @@ TileFigures readFigures(const nlohmann::json& j, size_t count) {
     return f;
 }
 
+/// The tiles of the plates' rows, which the noise check judges.
+std::vector<size_t> judgedTiles(int columns) {
+    std::vector<size_t> judged;
+    for (int row = StrategyFirstRow; row < StrategyFirstRow + StrategyJudgedRows; ++row)
+        for (int column = 0; column < columns; ++column)
+            judged.push_back(static_cast<size_t>(row * columns + column));
+    return judged;
+}
+
 /// Whether the tile figures of all three are there, one per tile.
 bool complete(const StrategyTiles& tiles) {
     const size_t count = static_cast<size_t>(tiles.columns * tiles.rows);
@@ -84,6 +93,7 @@ nlohmann::json strategyTilesJson(const StrategyTiles& tiles) {
             {"lobe", figuresJson(tiles.lobe)},
             {"columns", tiles.columns},
             {"rows", tiles.rows},
+            {"strategies_by_lab", tiles.strategiesByLab},
             {"failure", tiles.failure}};
 }
 
@@ -92,6 +102,7 @@ StrategyTiles readStrategyTiles(const nlohmann::json& j) {
     tiles.columns = j.at("columns");
     tiles.rows = j.at("rows");
     tiles.failure = j.at("failure");
+    tiles.strategiesByLab = j.value("strategies_by_lab", false);
     const size_t count = static_cast<size_t>(std::max(0, tiles.columns * tiles.rows));
     tiles.lab = readFigures(j.at("lab"), count);
     tiles.light = readFigures(j.at("light"), count);
@@ -101,14 +112,10 @@ StrategyTiles readStrategyTiles(const nlohmann::json& j) {
 
 WorstStrategyTile worstStrategyTile(const StrategyTiles& tiles) {
     if (!complete(tiles)) return {};
-    std::vector<size_t> judged;
+    const std::vector<size_t> judged = judgedTiles(tiles.columns);
     double betterSum = 0;
-    for (int row = StrategyFirstRow; row < StrategyFirstRow + StrategyJudgedRows; ++row)
-        for (int column = 0; column < tiles.columns; ++column) {
-            const size_t i = static_cast<size_t>(row * tiles.columns + column);
-            judged.push_back(i);
-            betterSum += std::min(tiles.light.variance[i], tiles.lobe.variance[i]);
-        }
+    for (const size_t i : judged)
+        betterSum += std::min(tiles.light.variance[i], tiles.lobe.variance[i]);
     const double negligible = StrategyNegligibleShare * betterSum / double(judged.size());
     WorstStrategyTile worst;
     for (const size_t i : judged) {
@@ -133,9 +140,10 @@ std::string describeStrategyTile(const StrategyTiles& tiles, const WorstStrategy
 
 std::string strategyMeanDisagreement(const StrategyTiles& tiles) {
     if (!complete(tiles)) return "";
-    const size_t count = tiles.lab.mean.size();
-    const double critical = studentCritical(1e-5 / static_cast<double>(count), StrategySeeds - 1);
-    for (size_t i = 0; i < count; ++i) {
+    const std::vector<size_t> judged = judgedTiles(tiles.columns);
+    const double critical =
+        studentCritical(1e-5 / static_cast<double>(judged.size()), StrategySeeds - 1);
+    for (const size_t i : judged) {
         // The two strategies' means pooled by their standard errors: each is unbiased, and the
         // better one for the tile has the smaller error.
         const double a = tiles.light.meanError[i], b = tiles.lobe.meanError[i];

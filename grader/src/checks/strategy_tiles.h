@@ -43,6 +43,8 @@ struct TileFigures {
 struct StrategyTiles {
     TileFigures lab, light, lobe;
     int columns = 0, rows = 0;
+    /// The strategies alone were the lab's own (a build without the reference solutions).
+    bool strategiesByLab = false;
     std::string failure; ///< why not measured ("" when measured)
 };
 
@@ -66,12 +68,12 @@ WorstStrategyTile worstStrategyTile(const StrategyTiles& tiles);
 std::string describeStrategyTile(const StrategyTiles& tiles, const WorstStrategyTile& worst);
 
 /// A tile whose mean in the lab's renders differs from what the two strategies alone render
-/// there (their means pooled by their standard errors): a two-sided test at alpha 1e-5 over all
-/// tiles (Bonferroni, Student's t with seeds - 1 degrees of freedom), and a difference of at
-/// least MinMeanDifference of the mean. The noise of an image that does not average to the
-/// scene's (a lab that tells veach_plates apart and renders something quiet there) is not
-/// compared. The means' standard errors come from 12 seeds of heavy-tailed tiles and are
-/// themselves rough: at a 5% floor, 2 of the reference solution's 200 measured gradings were
+/// there (their means pooled by their standard errors), among the judged tiles (the plates'): a
+/// two-sided test at alpha 1e-5 over them (Bonferroni, Student's t with seeds - 1 degrees of
+/// freedom), and a difference of at least MinMeanDifference of the mean. The noise of an image that
+/// does not average to the scene's (a lab that tells veach_plates apart and renders something quiet
+/// there) is not compared. The means' standard errors come from 12 seeds of heavy-tailed tiles and
+/// are themselves rough: at a 5% floor, 2 of the reference solution's 200 measured gradings were
 /// called wrong; a quiet wrong image is off by far more (a black plate: 96% in its tile).
 /// "" when every tile agrees; else its words: "tile (3, 2) of veach_plates averages 0.12 in the
 /// lab's renders, where each strategy alone renders 0.31".

@@ -136,6 +136,7 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
     setup.seedBase = a.seed;
     setup.threads = a.threads;
     setup.measureSpeed = a.speed && PATHLAB_HAS_SOLUTIONS;
+    setup.solutionsAvailable = PATHLAB_HAS_SOLUTIONS;
     GradeReport report;
     std::optional<LabFigures> stored;
     try {

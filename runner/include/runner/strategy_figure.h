@@ -17,6 +17,7 @@ struct StrategyPanel {
     const char* name;       ///< "light alone", "lobe alone", "both"
     std::vector<float> rgb; ///< the mean image, linear RGB
     double noise = 0;       ///< its imageNoise, as the viewer's line prints it
+    double mean = 0;        ///< its mean radiance over pixels and channels
 };
 
 /// The three renders of `scene` with `options`' lab, size, seed and spp, one per strategy choice.
@@ -27,7 +28,8 @@ std::vector<StrategyPanel> renderStrategyPanels(const RenderOptions& options,
 void writeStrategyFigure(const std::string& path, const std::vector<StrategyPanel>& panels,
                          int width, int height);
 
-/// One line per panel: its name and noise figure, and which is the quietest.
+/// One line per panel: its name, mean and noise figure; which is the quietest; and a warning
+/// where the means part by more than noise explains (weights that do not add up to one).
 std::string describeStrategyPanels(const std::vector<StrategyPanel>& panels);
 
 } // namespace pathlab

@@ -67,6 +67,10 @@ public:
     /// A directLight() call, whose own random numbers lie between `before` and `after`.
     Color directLit(const Hit& hit, Color light, bool sentShadowRay, const Sampler& before,
                     const Sampler& after);
+    /// A sampleLight() call (lab 6), whose own random numbers lie between `before` and
+    /// `after`: they are the framework's, and the lab's draws before it count toward its next
+    /// event. (Its light is not probed: the inspector measures weights by trace and directLight.)
+    void sampledLight(const Sampler& before, const Sampler& after);
     /// pathTrace returned.
     void ended(const Sampler& now);
 
@@ -88,6 +92,8 @@ private:
 
     PathProbe probe_;
     RandomStream stream_; ///< where the lab's random numbers stood at the last call
+    std::vector<float>
+        pendingDraws_; ///< the lab's draws before a sampleLight(), for the next event
     std::vector<PathEvent> events_;
     std::vector<Ray> rays_;
     std::vector<Hit> hits_;
