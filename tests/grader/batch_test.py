@@ -205,6 +205,10 @@ def make_class(root, outside, port):
         expected["hostile_" + case] = ({"branching": 0}, "graded", reason)
     # A lab 5 whose lobe dump is rewritten after the viewer wrote it: the grader, which reads the
     # numbers as untrusted, cannot read it as the dump it asked for.
+    # Code compiled only under ThreadSanitizer (a symbol that exists nowhere): its build of the
+    # lab does not load, which the race check holds against the lab.
+    expected["hostile_race_hidden_from_tsan"] = (
+        {"branching": 0}, "graded", "the lab compiled with ThreadSanitizer does not load")
     expected["hostile_forged_lobe_dump"] = (
         {"glossy": 0}, "graded",
         "the lobe check could not read what the lab's process wrote: it is not the lobe dump")

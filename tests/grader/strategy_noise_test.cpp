@@ -128,7 +128,7 @@ TEST_CASE("lab 6's noise check: the solution and the balance heuristic are withi
 }
 
 TEST_CASE("lab 6's noise check, measured: the solution's worst tile over 200 seeds", "[.measure]") {
-    std::vector<double> worst;
+    std::vector<double> worst, shares, times;
     int meansCalledWrong = 0;
     for (uint64_t seed = 1; seed <= 200; ++seed) {
         const StrategyTiles tiles = measureStrategyTiles(
@@ -138,14 +138,21 @@ TEST_CASE("lab 6's noise check, measured: the solution's worst tile over 200 see
         if (!wrong.empty()) std::printf("seed %d: %s\n", static_cast<int>(seed), wrong.c_str());
         meansCalledWrong += wrong.empty() ? 0 : 1;
         worst.push_back(worstStrategyTile(tiles).ratio);
+        shares.push_back(strategyVarianceShare(tiles));
+        times.push_back(tiles.lab.cpuSeconds /
+                        ((tiles.light.cpuSeconds + tiles.lobe.cpuSeconds) / 2));
     }
-    std::printf("solution's means called wrong: %d of 200\n", meansCalledWrong);
-    CHECK(meansCalledWrong == 0);
     std::sort(worst.begin(), worst.end());
+    std::sort(shares.begin(), shares.end());
+    std::sort(times.begin(), times.end());
     std::printf("solution's worst tile ratio over 200 seeds: median %.3f, 90%% %.3f, max %.3f "
-                "(bound %.2f)\n",
-                worst[100], worst[180], worst.back(), MaxStrategyTileRatio);
+                "(bound %.2f); means called wrong: %d; variance share min %.3f median %.3f "
+                "(floor %.2f); CPU time over the strategies' median %.3f max %.3f\n",
+                worst[100], worst[180], worst.back(), MaxStrategyTileRatio, meansCalledWrong,
+                shares.front(), shares[100], MinStrategyVarianceShare, times[100], times.back());
     CHECK(worst.back() <= MaxStrategyTileRatio);
+    CHECK(meansCalledWrong == 0);
+    CHECK(shares.front() >= MinStrategyVarianceShare);
 }
 
 TEST_CASE("lab 6's noise check, printed: the solution's tiles", "[.print]") {

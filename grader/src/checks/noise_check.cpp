@@ -27,6 +27,20 @@ void judgeStrategyTiles(const StrategyTiles& tiles, CheckResult& check) {
                                         "scene's is not compared with the strategies'");
         return;
     }
+    // Images that barely vary between seeds are not a sampler's, whatever their tiles' ratios.
+    if (const double share = strategyVarianceShare(tiles); share < MinStrategyVarianceShare) {
+        check.passed = false;
+        check.diagnosis = "strategies not compared";
+        check.details.push_back(
+            "your renders of " + std::string(StrategyScene) + " vary between seeds " +
+            significant(share, 2) +
+            " times as much as the better strategy's alone, over the "
+            "plates: no estimator of " +
+            std::to_string(StrategySpp) +
+            " samples per pixel is that quiet, so their noise is not compared (does the lab "
+            "keep values from one sample or seed for the next?)");
+        return;
+    }
     const WorstStrategyTile worst = worstStrategyTile(tiles);
     if (worst.index < 0) {
         check.passed = false;

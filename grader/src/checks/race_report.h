@@ -29,9 +29,13 @@ std::vector<LabRace> labRaces(const std::string& output, const std::string& file
 /// What the race check did for one lab.
 struct RaceFinding {
     enum class Status {
-        NotRun,     ///< no race check in this grading (not a submission, or no TSan here)
-        Ran,        ///< the lab ran under TSan: `races` holds what it found, maybe nothing
-        CouldNotRun ///< it was tried and failed (`problem`); the lab is not failed for that
+        NotRun,      ///< no race check in this grading (not a submission, or no TSan here)
+        Ran,         ///< the lab ran under TSan: `races` holds what it found, maybe nothing
+        CouldNotRun, ///< it was tried and failed (`problem`); the lab is not failed for that
+        /// The lab's library, compiled with ThreadSanitizer, would not load for a symbol it
+        /// lacks, where the same file compiled without loaded: code that differs under the
+        /// sanitizer (`problem`), held against the lab as a race would be.
+        LabRefused
     } status = Status::NotRun;
     std::vector<LabRace> races;
     std::string problem;

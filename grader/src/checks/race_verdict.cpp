@@ -8,6 +8,19 @@ void addRaceVerdict(const RaceFinding& finding, CheckResult& correctness) {
         details.push_back("race check not made (not held against the lab): " + finding.problem);
         return;
     }
+    if (finding.status == RaceFinding::Status::LabRefused) {
+        details.insert(details.begin(),
+                       "the lab compiled with ThreadSanitizer does not load, where the same file "
+                       "compiled without it does: " +
+                           finding.problem +
+                           ". Code that differs under the sanitizer is held against the lab, as "
+                           "a data race would be");
+        correctness.passed = false;
+        correctness.score = 0;
+        correctness.summary = "its ThreadSanitizer build does not load";
+        correctness.diagnosis = "differs under ThreadSanitizer";
+        return;
+    }
     if (finding.status != RaceFinding::Status::Ran) return;
     if (finding.races.empty()) {
         details.push_back("no data race between render threads (" + finding.how + ")");

@@ -26,7 +26,9 @@ TileFigures renderTiles(const GraderSetup& setup, const LabRunner& runner, Lab l
     }
     std::vector<std::vector<float>> images;
     for (const RenderedImage& rendered : result.images) images.push_back(rendered.rgb);
-    return tileFigures(images);
+    TileFigures figures = tileFigures(images);
+    figures.cpuSeconds = result.process.cpuSeconds;
+    return figures;
 }
 
 } // namespace

@@ -17,8 +17,10 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
     g.build = labBuildOfThisGrader();
     g.rubric = rubric;
     g.workCpus = a.workCpus;
+    // The kit holds the compiled reference solutions: in the scratch folder, which goes with
+    // this run, never in OUT, which an instructor may hand back to the student whole.
     g.kit = a.kit.empty()
-                ? buildLabKit(g.build, a.out + "/kit", {a.workCpus, sandboxUserForThisProcess()})
+                ? buildLabKit(g.build, scratch + "/kit", {a.workCpus, sandboxUserForThisProcess()})
                 : existingLabKit(a.kit);
     // References of hidden scenes come from the solutions, linked into this build's viewer.
     const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
