@@ -108,11 +108,24 @@ TEST_CASE("a lab whose tiles of veach_plates do not average to the strategies' i
     CHECK(strategyMeanDisagreement(tiles).empty());
 }
 
-TEST_CASE("lab 6's noise check: the solution and the balance heuristic are within the bound, a "
-          "light density in area measure and weights of one half are not",
-          "[grader]") {
+TEST_CASE("lab 6's noise check: the reference solution is within the bound", "[grader]") {
     const WorstStrategyTile solution = worstOf(test::builtViewer(), Implementation::Solution);
     CHECK(solution.ratio <= MaxStrategyTileRatio);
+}
+
+TEST_CASE("lab 6's noise check: the balance heuristic is within the bound, a light density in "
+          "area measure and weights of one half are not",
+          "[grader]") {
+    // The mutants' viewers are the grader tests' (tests/grader/CMakeLists.txt): every build of
+    // the kit makes them but the clang + libc++ one (platforms.clang_libcxx), which leaves them
+    // out for time and runs this file for the rest.
+    const std::vector<std::string> mutants = {"mis_balance_heuristic", "mis_area_density",
+                                              "mis_half_weights"};
+    for (const std::string& mutant : mutants)
+        if (!std::filesystem::exists(mutantViewer(mutant))) {
+            WARN("not built here: " + mutantViewer(mutant));
+            return;
+        }
     const WorstStrategyTile balance =
         worstOf(mutantViewer("mis_balance_heuristic"), Implementation::Student);
     CHECK(balance.ratio <= MaxStrategyTileRatio);
@@ -122,9 +135,9 @@ TEST_CASE("lab 6's noise check: the solution and the balance heuristic are withi
     const WorstStrategyTile half =
         worstOf(mutantViewer("mis_half_weights"), Implementation::Student);
     CHECK(half.ratio > 2 * MaxStrategyTileRatio);
-    std::printf("lab 6's worst tile over the better strategy: solution %.3f, balance heuristic "
-                "%.3f, light density in area measure %.3f, weights one half %.3f\n",
-                solution.ratio, balance.ratio, area.ratio, half.ratio);
+    std::printf("lab 6's worst tile over the better strategy: balance heuristic %.3f, light "
+                "density in area measure %.3f, weights one half %.3f\n",
+                balance.ratio, area.ratio, half.ratio);
 }
 
 TEST_CASE("lab 6's noise check, measured: the solution's worst tile over 200 seeds", "[.measure]") {

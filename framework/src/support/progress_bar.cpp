@@ -17,7 +17,10 @@ void ProgressBar::update(long long done, long long total, const std::string& not
     if (!terminal_ && done != total && !quarter) return;
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const int width = 30, filled = static_cast<int>(width * done / whole);
+    // A caller whose count of steps is off must not make the bar's fill negative.
+    const int width = 30;
+    const int filled =
+        static_cast<int>(std::clamp(width * done / whole, 0LL, static_cast<long long>(width)));
     std::fprintf(
         stderr, "%s%s [%s%s] %3lld%% %lld/%lld %s, ETA %.0f s%s%s%s", terminal_ ? "\r" : "",
         what_.c_str(), std::string(filled, '=').c_str(), std::string(width - filled, ' ').c_str(),

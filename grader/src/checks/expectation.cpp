@@ -128,7 +128,7 @@ SceneReference measureReference(const LabRunner& solution, const std::string& sc
     // The noise figure of a correct lab, as the grader measures a student's: the rubric's seeds
     // at the rubric's spp, in several independent groups whose figures are averaged.
     const int noiseGroups = 6;
-    const int total = 2 * seeds + 4 * noiseGroups;
+    const int total = 2 * seeds + static_cast<int>(LabCount) * noiseGroups;
     int done = 0;
     auto step = [&] {
         if (progress) progress(++done, total);
