@@ -44,11 +44,11 @@ Color pathTrace(const Ray& ray, int depth, PathContext& ctx) {
         const Ray glossy = glossyRay(ray, hit, Vec3{0, 0, 1});
         if (glossy.kind == RayKind::Glossy)
             radiance += phongBrdf(m, 1.0f) * pathTrace(glossy, depth + 1, ctx);
-        const LightSample light = ctx.sampleLight(hit);
-        const Vec3 local = lobeFrameDirection(ray, hit, light.direction);
-        const float weight = light.delta ? 1.0f : ctx.strategyWeight(Strategy::Light, 0.5f);
-        if (light.pdf > 0 && light.distance > 0 && light.cosAtLight > 0)
-            radiance += light.radiance * phongBrdf(m, local.z) * (weight / light.pdf);
+        const LightSample toLight = ctx.sampleLight(hit);
+        const Vec3 local = lobeFrameDirection(ray, hit, toLight.direction);
+        const float weight = toLight.delta ? 1.0f : ctx.strategyWeight(Strategy::Light, 0.5f);
+        if (toLight.pdf > 0 && toLight.distance > 0 && toLight.cosAtLight > 0)
+            radiance += toLight.radiance * phongBrdf(m, local.z) * (weight / toLight.pdf);
         const Hit next = ctx.trace(glossy);
         radiance += next.emitted * ctx.strategyWeight(Strategy::Lobe, ctx.lightPdf(hit, next));
     }
