@@ -64,11 +64,12 @@ std::string describeStrategyPanels(const std::vector<StrategyPanel>& panels) {
     if (quietest) text += std::string("  the quietest: ") + quietest->name + "\n";
     // The three estimate one image: at a few percent apart, a sum of weights other than one is
     // likelier than noise (the reference solution's three agree within 1% at 16 spp).
-    double lowest = 0, highest = 0;
-    for (const StrategyPanel& panel : panels) {
-        lowest = (&panel == &panels.front()) ? panel.mean : std::min(lowest, panel.mean);
-        highest = (&panel == &panels.front()) ? panel.mean : std::max(highest, panel.mean);
-    }
+    const auto byMean = [](const StrategyPanel& a, const StrategyPanel& b) {
+        return a.mean < b.mean;
+    };
+    const auto [darkest, brightest] = std::minmax_element(panels.begin(), panels.end(), byMean);
+    const double lowest = darkest == panels.end() ? 0 : darkest->mean;
+    const double highest = brightest == panels.end() ? 0 : brightest->mean;
     if (lowest > 0 && highest > lowest * 1.03)
         text += "  the means differ by more than 3%: with the strategies right alone, the two "
                 "weights of a direction do not add up to one (handout 06, lab6.2 to lab6.4)\n";
