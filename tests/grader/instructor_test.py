@@ -59,7 +59,7 @@ def renamed(source):
     """A lab file with its local names changed and its comments dropped: a disguised copy."""
     for old, new in (("hit", "h"), ("radiance", "L"), ("component", "which"), ("throughput", "beta"),
                      ("pickProbability", "p"), ("strength", "s"), ("m", "mat")):
-        source = re.sub(rf"\b{old}\b", new, source)
+        source = re.sub(rf"(?<![.>])\b{old}\b", new, source)  # not a member: light.radiance stays
     return re.sub(r"(?m)^\s*//.*\n", "", source)
 
 
