@@ -19,7 +19,7 @@ import sys
 import tempfile
 import time
 
-from support import LABS, arguments, check, finish, grader
+from support import LABS, arguments, busy_processes, check, finish, grader
 
 args = arguments((["--gradings"], {"type": int, "default": 40}),
                  (["--load"], {"type": int, "default": 4, "help": "busy processes to start"}))
@@ -48,7 +48,7 @@ def main():
         for k in range(args.gradings):
             shutil.copytree(os.path.join(args.source, "solutions"), os.path.join(subs, f"copy{k:03d}"))
         out = os.path.join(root, "out")
-        load = [subprocess.Popen([sys.executable, "-c", "while True: pass"]) for _ in range(args.load)]
+        load = busy_processes(args.load)
         started = time.time()
         try:
             run = subprocess.run([GRADER, "batch", subs, "--out", out, "--jobs", "2", "--rubric", rubric(root),

@@ -35,3 +35,19 @@ def write(path, text):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "w") as f:
         f.write(text)
+
+
+def busy_processes(count):
+    """`count` processes that spin on a core each, to load the machine: each dies with this test
+    (Linux's parent-death signal), even when the test itself is killed by ctest's timeout or a
+    SIGKILL, which a `finally` block never sees; left running, they would slow every later test."""
+    import ctypes
+    import signal
+    import subprocess
+
+    def die_with_parent():
+        PR_SET_PDEATHSIG = 1
+        ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL)
+
+    return [subprocess.Popen([sys.executable, "-c", "while True: pass"], preexec_fn=die_with_parent)
+            for _ in range(count)]
