@@ -236,10 +236,11 @@ TEST_CASE("a gradebook never mixes maxima, says pending, stale and late", "[grad
               {"files_hash", "f00d"}}}};
     };
     std::vector<GradebookEntry> entries = {
-        {"alice", "", result(40, 40, "rubric-now", "2026-12-01T12:00Z"), "", false},
-        {"bob", "", result(50, 60, "rubric-before", "2026-12-02T12:00Z"), "", false},
-        {"carol", "", result(30, 40, "rubric-before", "2026-12-01T12:00Z"), "", false},
-        {"dave", "", nullptr, "", true},
+        {"alice", "", result(40, 40, "rubric-now", "2026-12-01T12:00Z"), "", false, std::nullopt},
+        {"bob", "", result(50, 60, "rubric-before", "2026-12-02T12:00Z"), "", false, std::nullopt},
+        {"carol", "", result(30, 40, "rubric-before", "2026-12-01T12:00Z"), "", false,
+         std::nullopt},
+        {"dave", "", nullptr, "", true, std::nullopt},
     };
     CHECK(staleness(entries[0].result, now).empty());
     CHECK(staleness(entries[1].result, now) == "graded under another rubric");
@@ -270,6 +271,14 @@ TEST_CASE("a gradebook never mixes maxima, says pending, stale and late", "[grad
         fields.push_back(field);
         rows[fields[0]] = fields;
     }
+    // The first gradebooks' columns, where scripts outside the kit read them by position: the
+    // labs added since come after the status.
+    REQUIRE(columns.size() > 8);
+    CHECK(std::vector<std::string>(columns.begin(), columns.begin() + 8) ==
+          std::vector<std::string>{"id", "branching", "uniform", "importance", "roulette", "total",
+                                   "max_total", "status"});
+    CHECK(column("glossy") == 8);
+    CHECK(column("mis") == 9);
     REQUIRE(rows.size() == 4);
     for (const auto& [id, fields] : rows) {
         INFO(id);

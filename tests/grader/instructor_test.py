@@ -12,6 +12,10 @@ promises:
   points or thresholds re-scores everyone from their measurements, rendering nothing (the canary
   too), each grading kept as an attempt that the student's page lists; a submission changed since
   it was graded is graded again without --only, saying so;
+- a regrade says, per student, the old and new total and each changed check with its reason (the
+  terminal, regrades.csv, summary.html); a total it lowers on the same files is withheld from
+  lms.csv until the rubric's regrades.lower_scores decides, and keep_higher keeps the higher one
+  without grading anyone again;
 - no file of a student's feedback names the hidden scene or shows its images;
 - the similarity report pairs a copy of the solutions with renamed variables with the solutions.
 
@@ -76,12 +80,18 @@ def make_class(root):
     return subs
 
 
-def light_rubric(root, roulette_correctness=6, max_noise_ratio=1.5):
+def light_rubric(root, roulette_correctness=6, max_noise_ratio=1.5, moved_points=0, lower_scores=None):
+    """The kit's rubric, lighter; `moved_points` of lab 3's correctness moved to lab 2's (the
+    maximum kept); `lower_scores`, the rubric's regrades.lower_scores where given."""
     rubric = json.load(open(os.path.join(args.source, "grader", "rubric.json")))
     rubric["correctness"].update({"seeds": 6, "width": 32, "height": 32, "tiles": 2, "scenes": ["furnace"]})
     rubric["noise"].update({"scene": "furnace", "max_ratio": max_noise_ratio})
     rubric["speed"]["scene"] = "furnace"
     rubric["points"]["roulette"]["correctness"] = roulette_correctness
+    rubric["points"]["importance"]["correctness"] -= moved_points
+    rubric["points"]["uniform"]["correctness"] += moved_points
+    if lower_scores:
+        rubric["regrades"] = {"lower_scores": lower_scores}
     path = os.path.join(root, "rubric.json")
     json.dump(rubric, open(path, "w"), indent=1)
     return path
@@ -281,7 +291,42 @@ def main():
               and rows["carol"]["total"] == RAISED,
               "a changed submission is graded again on a plain batch run, and the run says so")
 
-        # 9. The Gradescope zip holds a hidden scene that git does not track, and says so.
+        # 9. Two points moved from lab 3's correctness to lab 2's, the maximum kept: bob, whose lab
+        # 2 fails, is re-scored 2 lower on the same files. The rubric has not said whether a regrade
+        # may lower a total, so lms.csv withholds his, and the terminal, the gradebook and
+        # regrades.csv say from what to what, which checks and why.
+        light_rubric(root, roulette_correctness=16, max_noise_ratio=1.2, moved_points=2)
+        run = batch("points moved")
+        rows = gradebook()
+        lowered = str(int(RAISED_LAB_LOST) - 2)
+        regrades = list(csv.DictReader(open(os.path.join(OUT, "regrades.csv"))))
+        bob = {(r["lab"], r["check"]): r for r in regrades if r["id"] == "bob"}
+        reason = "the rubric's points or thresholds changed"
+        check(run.returncode == 0 and graded_in_last_batch() == []
+              and re.search(rf"regrade bob: attempt \d+ -> \d+ \({reason}\): {RAISED_LAB_LOST} / {RAISED} -> "
+                            rf"{lowered} / {RAISED}; importance correctness 6 -> 4\n", run.stderr)
+              and "1 total(s) lowered by a regrade of the same files: withheld from lms.csv" in run.stderr,
+              "points moved: the terminal says each regrade, from what to what, which check and why, and "
+              "that bob's lowered total waits for the rubric's choice")
+        check(set(bob) == {("total", "total"), ("importance", "correctness")}
+              and (bob[("total", "total")]["before"], bob[("total", "total")]["after"]) == (RAISED_LAB_LOST, lowered)
+              and bob[("importance", "correctness")]["reason"] == reason,
+              f"regrades.csv: bob's total and lab 3's correctness, before and after, and why ({sorted(bob)})")
+        check(rows["bob"]["total"] == lowered and "withheld from lms.csv" in rows["bob"]["status"]
+              and "\nbob," not in read(os.path.join(OUT, "lms.csv")) and rows["alice"]["total"] == RAISED
+              and "Regrades" in read(os.path.join(OUT, "summary.html")),
+              "the gradebook shows bob's new total and why it is not exported; alice's, moved within, is whole")
+        # The instructor chooses: the higher total stands. Choosing re-grades and re-scores nobody.
+        light_rubric(root, roulette_correctness=16, max_noise_ratio=1.2, moved_points=2, lower_scores="keep_higher")
+        run = batch("keep_higher chosen")
+        rows = gradebook()
+        log = read(os.path.join(OUT, "batch.log")).split(" batch of ")[-1]
+        check(run.returncode == 0 and graded_in_last_batch() == [] and "re-scored from attempt" not in log
+              and rows["bob"]["total"] == RAISED_LAB_LOST and rows["bob"]["graded_total"] == lowered
+              and f"\nbob,bob,{RAISED_LAB_LOST}\n" in read(os.path.join(OUT, "lms.csv")),
+              "regrades.lower_scores keep_higher: bob's higher total counts and is exported, nothing graded again")
+
+        # 10. The Gradescope zip holds a hidden scene that git does not track, and says so.
         kit = os.path.join(root, "kit")
         subprocess.run(["git", "clone", "--quiet", "--no-hardlinks", args.source, kit], check=True)
         add_hidden_scene(os.path.join(kit, "grader", "hidden_scenes"))

@@ -110,6 +110,17 @@ void readOptionalSectionsAndLimits(const nlohmann::json& j, const std::string& p
     r.memoryBytes = static_cast<long long>(j.at("limits").at("memory_mb").get<double>()) << 20;
 }
 
+/// regrades.lower_scores, optional: a rubric without it leaves the choice to be made.
+LowerScores readLowerScores(const nlohmann::json& j, const std::string& path) {
+    if (!j.contains("regrades")) return LowerScores::Undecided;
+    const std::string choice = j.at("regrades").value("lower_scores", "");
+    if (choice == "replace") return LowerScores::Replace;
+    if (choice == "keep_higher") return LowerScores::KeepHigher;
+    throw InputError(path + ": regrades.lower_scores is '" + choice +
+                     "'; it must be replace (a regrade's lower total counts) or keep_higher "
+                     "(the higher earlier total of the same files counts)");
+}
+
 /// What no single value shows: values that must agree with each other.
 void requireConsistent(const Rubric& r, const std::string& path) {
     if (r.seeds < 2 || r.width < r.tiles || r.height < r.tiles || r.tiles < 1 ||
@@ -130,6 +141,12 @@ void requireConsistent(const Rubric& r, const std::string& path) {
 
 } // namespace
 
+const char* lowerScoresName(LowerScores choice) {
+    return choice == LowerScores::Replace      ? "replace"
+           : choice == LowerScores::KeepHigher ? "keep_higher"
+                                               : "";
+}
+
 Rubric loadRubric(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw InputError(path + ": cannot open the rubric");
@@ -137,6 +154,8 @@ Rubric loadRubric(const std::string& path) {
     try {
         nlohmann::json j = nlohmann::json::parse(in);
         j.erase("about");
+        r.lowerScores = readLowerScores(j, path);
+        j.erase("regrades"); // which total the gradebook shows: no result goes stale for it
         hashRubric(j, r);
         readCorrectnessAndNoise(j, path, r);
         readSpeed(j, path, r);

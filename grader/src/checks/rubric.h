@@ -43,6 +43,18 @@ struct LabRubric {
     SpeedMeasure speedJudgedBy = SpeedMeasure::SamplesPerSecond; ///< where the rubric is silent
 };
 
+/// Whether a regrade of the same files may lower a student's total (rubric:
+/// regrades.lower_scores). Until the instructor says, a lowered total is withheld from the LMS
+/// export, so that no student loses points that nobody decided to take.
+enum class LowerScores {
+    Undecided,  ///< not in the rubric: the gradebook says so, lms.csv keeps the LMS's grade
+    Replace,    ///< "replace": the regrade's total counts, lower or not
+    KeepHigher, ///< "keep_higher": the higher of the earlier gradings' totals counts
+};
+
+/// The rubric's spelling of a choice ("" for Undecided).
+const char* lowerScoresName(LowerScores choice);
+
 struct Rubric {
     ByLab<LabRubric> labs;
     int maxDepth = 3;
@@ -67,6 +79,9 @@ struct Rubric {
     /// How many variants of the public scenes a batch grades on as hidden scenes when the
     /// instructor keeps none (hidden_scenes.variants; scene_variants.h); 0: none.
     int sceneVariants = 1;
+    /// What a regrade that lowers a total does (regrades.lower_scores); not in `hash`: it
+    /// decides which total the gradebook shows, not how any lab is graded or scored.
+    LowerScores lowerScores = LowerScores::Undecided;
     /// A fingerprint of every setting (the file's JSON, reformatted, without "about"): each
     /// result records it, so that results graded under another rubric are never mixed.
     std::string hash;

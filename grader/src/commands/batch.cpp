@@ -69,6 +69,7 @@ GradingNow gradingNow(const Arguments& a, const Rubric& rubric, const std::strin
     now.measuresSpeed = a.speed;
     now.scenesHash = scenesHash(rubric, a.scenesDir);
     now.maxScore = maxScoreNow(rubric, a.speed);
+    now.lowerScores = rubric.lowerScores;
     if (!deadline.empty()) {
         now.deadline = parseTime(deadline);
         if (!now.deadline)
@@ -225,14 +226,16 @@ void measureHiddenReferences(const Arguments& a, const Rubric& rubric,
 /// the next batch into OUT.
 void writeBatchJson(const std::string& out, const std::string& rubricFile,
                     const GradingNow& grading, const DeadlineAndTimes& dates) {
-    writeFileAtomically(out + "/batch.json", nlohmann::json{{"rubric_file", rubricFile},
-                                                            {"rubric_hash", grading.rubricHash},
-                                                            {"scenes_hash", grading.scenesHash},
-                                                            {"max_score", grading.maxScore},
-                                                            {"deadline", dates.deadline},
-                                                            {"times", dates.times}}
-                                                     .dump(1) +
-                                                 "\n");
+    writeFileAtomically(out + "/batch.json",
+                        nlohmann::json{{"rubric_file", rubricFile},
+                                       {"rubric_hash", grading.rubricHash},
+                                       {"scenes_hash", grading.scenesHash},
+                                       {"max_score", grading.maxScore},
+                                       {"deadline", dates.deadline},
+                                       {"times", dates.times},
+                                       {"lower_scores", lowerScoresName(grading.lowerScores)}}
+                                .dump(1) +
+                            "\n");
 }
 
 /// Each graded submission's lab files as they are now, taken in as a grading takes them, so
@@ -303,6 +306,37 @@ Arguments withHiddenScenes(const Arguments& a, const Rubric& rubric, const std::
     return graded;
 }
 
+/// What this batch's gradings changed for the submissions graded before: a line each on the
+/// terminal and in batch.log (regrades.csv and summary.html have every submission's last), and
+/// what the gradebook does with the totals a regrade lowered.
+void reportRegrades(const std::string& out, const std::vector<Submission>& gradedNow,
+                    const GradingNow& grading, std::ofstream& log) {
+    int lowered = 0;
+    for (const Submission& s : gradedNow) {
+        const GradebookEntry e = readGradebookEntry(out, s.id, s.path);
+        if (e.result.is_null()) continue;
+        const std::optional<RegradeComparison> c =
+            compareWithAttemptBefore(s.id, out + "/submissions/" + s.id, e.result);
+        if (!c) continue;
+        const std::string line = "regrade " + regradeLine(*c);
+        std::fprintf(stderr, "%s\n", line.c_str());
+        log << timestamp() << " " << line << "\n";
+        lowered += e.higherEarlier.has_value();
+    }
+    if (lowered == 0) return;
+    const std::string text =
+        std::to_string(lowered) + " total(s) lowered by a regrade of the same files: " +
+        (grading.lowerScores == LowerScores::Replace
+             ? "the lower totals count (the rubric's regrades.lower_scores: replace)"
+         : grading.lowerScores == LowerScores::KeepHigher
+             ? "the higher earlier totals count (the rubric's regrades.lower_scores: keep_higher)"
+             : "withheld from lms.csv until the rubric says which counts: regrades.lower_scores "
+               "\"replace\" (the lower total) or \"keep_higher\" (the higher earlier one); "
+               "setting it re-grades nothing");
+    std::fprintf(stderr, "%s\n", text.c_str());
+    log << timestamp() << " " << text << "\n";
+}
+
 } // namespace
 
 int runBatch(const Arguments& given, const Rubric& rubric, const std::string& scratch) {
@@ -357,6 +391,12 @@ int runBatch(const Arguments& given, const Rubric& rubric, const std::string& sc
         gradeInJobs(a.jobs, childBase, selection.todo, submissions, out, grading, log);
     const std::vector<SimilarLabs> similar = similarSubmissions(out, idsOf(submissions));
     writeGradebook(out, gradebookEntries(out, submissions, {}), grading, similar);
+    std::vector<Submission> gradedNow = selection.todo;
+    for (const Submission& s : selection.rescore)
+        if (std::none_of(unmeasured.begin(), unmeasured.end(),
+                         [&](const Submission& u) { return u.id == s.id; }))
+            gradedNow.push_back(s);
+    reportRegrades(out, gradedNow, grading, log);
     const double seconds = secondsSince(start);
     log << timestamp() << " batch finished in " << seconds << " s\n";
     std::printf("graded %zu submission(s) and re-scored %zu in %.0f s (%zu kept as they were, %zu "

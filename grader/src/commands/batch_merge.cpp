@@ -29,6 +29,10 @@ GradingNow shardGrading(const std::string& shard, std::string& deadline, std::st
         now.rubricHash = j.at("rubric_hash");
         now.scenesHash = j.at("scenes_hash");
         now.maxScore = j.at("max_score");
+        const std::string lower = j.value("lower_scores", "");
+        now.lowerScores = lower == "replace"       ? LowerScores::Replace
+                          : lower == "keep_higher" ? LowerScores::KeepHigher
+                                                   : LowerScores::Undecided;
         deadline = j.value("deadline", "");
         times = j.value("times", "");
         return now;

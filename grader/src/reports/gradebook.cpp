@@ -50,16 +50,36 @@ std::string lateness(const GradebookEntry& e, const GradingNow& now) {
     return at > *now.deadline ? "yes" : "no";
 }
 
-/// The total a gradebook may show: none for a result whose maximum is not today's.
-std::optional<double> shownTotal(const GradebookEntry& e, const GradingNow& now) {
-    if (e.result.is_null() || e.result.value("max_score", 0.0) != now.maxScore) return std::nullopt;
-    return e.result.value("score", 0.0);
+/// A regrade lowered the total, and the rubric has not said whether that counts: the LMS keeps
+/// the grade it has.
+bool loweredUndecided(const GradebookEntry& e, const GradingNow& now) {
+    return e.higherEarlier && now.lowerScores == LowerScores::Undecided;
+}
+
+/// What the status adds for a total a regrade lowered.
+std::string loweredNote(const GradebookEntry& e, const GradingNow& now) {
+    if (!e.higherEarlier) return "";
+    const std::string earlier = number(e.higherEarlier->score) + " (attempt " +
+                                std::to_string(e.higherEarlier->attempt) + ")";
+    const std::string graded = number(e.result.value("score", 0.0));
+    switch (now.lowerScores) {
+    case LowerScores::Replace:
+        return "; a regrade lowered the total from " + earlier + " to " + graded +
+               " (regrades.lower_scores: replace)";
+    case LowerScores::KeepHigher:
+        return "; kept the total " + earlier + ", higher than this grading's " + graded +
+               " (regrades.lower_scores: keep_higher)";
+    case LowerScores::Undecided: break;
+    }
+    return "; a regrade lowered the total from " + earlier + " to " + graded +
+           ": withheld from lms.csv until the rubric's regrades.lower_scores says replace or "
+           "keep_higher";
 }
 
 std::string statusOf(const GradebookEntry& e, const GradingNow& now) {
     if (e.pending) return "pending";
     if (e.result.is_null()) return "not graded: " + e.problem;
-    std::string status = e.result.value("status", "");
+    std::string status = e.result.value("status", "") + loweredNote(e, now);
     if (const std::string stale = staleness(e.result, now); !stale.empty()) {
         status = "stale: " + stale +
                  "; grade it again: the batch run again without --keep-stale, or with --only " +
@@ -68,28 +88,41 @@ std::string statusOf(const GradebookEntry& e, const GradingNow& now) {
     return status;
 }
 
-/// The columns of the first gradebooks first, in their order (scripts read them by position),
-/// then a column per lab and check and what a registrar asks.
+/// Labs 1 to 4, whose scores the first gradebooks had between the id and the total.
+bool inFirstGradebooks(Lab lab) { return labNumber(lab) <= 4; }
+
+/// The columns of the first gradebooks first, in their order (scripts read them by position:
+/// id, labs 1 to 4, total, max_total, status), then the later labs' scores, a column per lab and
+/// check, and what a registrar asks.
 std::string csv(const std::vector<GradebookEntry>& entries, const GradingNow& now) {
     std::string text = "id";
-    for (Lab lab : AllLabs) text += "," + std::string(labName(lab));
+    for (Lab lab : AllLabs)
+        if (inFirstGradebooks(lab)) text += "," + std::string(labName(lab));
     text += ",total,max_total,status";
+    for (Lab lab : AllLabs)
+        if (!inFirstGradebooks(lab)) text += "," + std::string(labName(lab));
     for (Lab lab : AllLabs)
         for (CheckKind check : AllChecks)
             text += "," + std::string(labName(lab)) + "_" + std::string(checkName(check));
-    text += ",missing_labs,submitted_at,time_source,late,commit,files_hash,rubric_hash,attempt\n";
+    text += ",missing_labs,submitted_at,time_source,late,commit,files_hash,rubric_hash,attempt,"
+            "graded_total\n";
     for (const GradebookEntry& e : entries) {
-        const std::optional<double> total = shownTotal(e, now);
+        const std::optional<double> total = countedTotal(e, now);
         const nlohmann::json labs =
             total ? e.result.value("labs", nlohmann::json::object()) : nlohmann::json::object();
         auto labResult = [&](Lab lab) {
             return labs.value(std::string(labName(lab)), nlohmann::json::object());
         };
+        const auto labScore = [&](Lab lab) {
+            return "," + (total ? number(labResult(lab).value("score", 0.0)) : "");
+        };
         text += csvField(e.id);
         for (Lab lab : AllLabs)
-            text += "," + (total ? number(labResult(lab).value("score", 0.0)) : "");
+            if (inFirstGradebooks(lab)) text += labScore(lab);
         text += "," + (total ? number(*total) : "") + "," + number(now.maxScore) + "," +
                 csvField(statusOf(e, now));
+        for (Lab lab : AllLabs)
+            if (!inFirstGradebooks(lab)) text += labScore(lab);
         for (Lab lab : AllLabs)
             for (CheckKind check : AllChecks) {
                 const nlohmann::json c =
@@ -115,7 +148,8 @@ std::string csv(const std::vector<GradebookEntry>& entries, const GradingNow& no
                 "," + lateness(e, now) + "," + csvField(intake.value("commit", "")) + "," +
                 csvField(intake.value("files_hash", "")) + "," +
                 csvField(under.value("rubric_hash", "")) + "," +
-                (e.result.is_null() ? "" : number(e.result.value("attempt", 1))) + "\n";
+                (e.result.is_null() ? "" : number(e.result.value("attempt", 1))) + "," +
+                (total ? number(e.result.value("score", 0.0)) : "") + "\n";
     }
     return text;
 }
@@ -127,8 +161,8 @@ std::string lmsCsv(const std::vector<GradebookEntry>& entries, const GradingNow&
     // A total the grading now does not give (pending: being graded again; stale: graded under
     // another rubric or scenes) is withheld: the import keeps what it had for that student.
     for (const GradebookEntry& e : entries)
-        if (const std::optional<double> total = shownTotal(e, now);
-            total && !e.pending && staleness(e.result, now).empty())
+        if (const std::optional<double> total = countedTotal(e, now);
+            total && !e.pending && staleness(e.result, now).empty() && !loweredUndecided(e, now))
             text += csvField(e.id) + "," + csvField(e.id) + "," + number(*total) + "\n";
     return text;
 }
@@ -203,21 +237,23 @@ std::string timeTable(const std::vector<GradebookEntry>& entries) {
 }
 
 std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const GradingNow& now,
-                        const std::optional<std::vector<SimilarLabs>>& similar) {
-    int graded = 0, pending = 0, stale = 0, late = 0;
+                        const std::optional<std::vector<SimilarLabs>>& similar,
+                        const std::vector<RegradeComparison>& regrades) {
+    int graded = 0, pending = 0, stale = 0, late = 0, lowered = 0;
     double sum = 0;
     std::map<std::pair<std::string, std::string>, int> diagnoses; // (lab, diagnosis) -> count
     std::vector<GradebookEntry> entries; // those with a total out of today's maximum
     for (const GradebookEntry& e : allEntries) {
         pending += e.pending;
         late += lateness(e, now) == "yes";
+        lowered += loweredUndecided(e, now);
         if (e.result.is_null()) continue;
         stale += !staleness(e.result, now).empty();
-        if (!shownTotal(e, now)) continue;
+        if (!countedTotal(e, now)) continue;
         entries.push_back(e);
         ++graded;
         const double max = e.result.value("max_score", 0.0);
-        sum += max > 0 ? e.result.value("score", 0.0) / max : 0;
+        sum += max > 0 ? *countedTotal(e, now) / max : 0;
         for (const auto& d : e.result.value("diagnoses", nlohmann::json::array()))
             if (d.value("check", "") == std::string(checkName(CheckKind::Correctness)) ||
                 d.value("diagnosis", "") == "too noisy" || d.value("diagnosis", "") == "too slow")
@@ -241,19 +277,25 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
         html << "<p>" << pending << " pending, " << stale
              << " stale (graded under another rubric or other "
              << "scenes), " << late << " late.</p>\n";
+    if (lowered > 0)
+        html << "<p><b>" << lowered
+             << " total(s) lowered by a regrade of the same files</b>, withheld from lms.csv "
+                "until the rubric's <code>regrades.lower_scores</code> says <code>replace</code> "
+                "or <code>keep_higher</code> (their status says from what to what).</p>\n";
     html << "<h2>Scores</h2>\n"
          << histogram(entries) << "<h2>Most common diagnoses</h2>\n"
          << "<table><tr><th>submissions</th><th>lab</th><th>diagnosis</th></tr>\n";
     for (const auto& [count, key] : common)
         html << "<tr><td>" << count << "</td><td>" << escapeXml(key.first) << "</td><td>"
              << escapeXml(key.second) << "</td></tr>\n";
-    html << "</table>\n<h2>Similar submissions</h2>\n"
+    html << "</table>\n<h2>Regrades</h2>\n"
+         << regradesHtml(regrades) << "<h2>Similar submissions</h2>\n"
          << similarityTable(similar)
          << "<h2>Submissions</h2>\n<table><tr><th>id</th><th>score</th><th>late</th><th>status</"
             "th></tr>\n";
     for (const GradebookEntry& e : allEntries) {
         const std::string link = "submissions/" + e.id + "/index.html";
-        const std::optional<double> total = shownTotal(e, now);
+        const std::optional<double> total = countedTotal(e, now);
         html << "<tr><td>"
              << (e.result.is_null()
                      ? escapeXml(e.id)
@@ -272,7 +314,7 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
 
 GradebookEntry readGradebookEntry(const std::string& out, const std::string& id,
                                   const std::string& submission) {
-    GradebookEntry entry{id, submission, nullptr, ""};
+    GradebookEntry entry{id, submission, nullptr, "", false, std::nullopt};
     std::ifstream in(out + "/submissions/" + id + "/result.json");
     if (!in) {
         entry.problem = "no result (see submissions/" + id + "/grader.log)";
@@ -282,8 +324,17 @@ GradebookEntry readGradebookEntry(const std::string& out, const std::string& id,
         entry.result = nlohmann::json::parse(in);
     } catch (const nlohmann::json::exception& e) {
         entry.problem = std::string("its result.json is unreadable: ") + e.what();
+        return entry;
     }
+    entry.higherEarlier = higherEarlierTotal(out + "/submissions/" + id, entry.result);
     return entry;
+}
+
+std::optional<double> countedTotal(const GradebookEntry& e, const GradingNow& now) {
+    if (e.result.is_null() || e.result.value("max_score", 0.0) != now.maxScore) return std::nullopt;
+    if (e.higherEarlier && now.lowerScores == LowerScores::KeepHigher)
+        return e.higherEarlier->score;
+    return e.result.value("score", 0.0);
 }
 
 std::string staleness(const nlohmann::json& result, const GradingNow& now) {
@@ -308,9 +359,15 @@ Regrade regradeNeeded(const nlohmann::json& result, const GradingNow& now) {
 
 void writeGradebook(const std::string& out, const std::vector<GradebookEntry>& entries,
                     const GradingNow& now, const std::optional<std::vector<SimilarLabs>>& similar) {
+    std::vector<RegradeComparison> regrades;
+    for (const GradebookEntry& e : entries)
+        if (!e.result.is_null())
+            if (auto c = compareWithAttemptBefore(e.id, out + "/submissions/" + e.id, e.result))
+                regrades.push_back(*c);
     writeFileAtomically(out + "/gradebook.csv", csv(entries, now));
     writeFileAtomically(out + "/lms.csv", lmsCsv(entries, now));
-    writeFileAtomically(out + "/summary.html", summaryPage(entries, now, similar));
+    writeFileAtomically(out + "/regrades.csv", regradesCsv(regrades));
+    writeFileAtomically(out + "/summary.html", summaryPage(entries, now, similar, regrades));
 }
 
 } // namespace pathlab::grader

@@ -1,7 +1,11 @@
 #pragma once
 /// A class's results: gradebook.csv (a row per submission, a column per lab and check),
-/// lms.csv (the totals, for an LMS to import), and summary.html (the score histogram, the most
-/// common diagnoses, the similar pairs), made from the submissions' result.json files.
+/// lms.csv (the totals, for an LMS to import), regrades.csv (what each submission's last regrade
+/// changed) and summary.html (the score histogram, the most common diagnoses, the similar pairs,
+/// the regrades), made from the submissions' result.json files and their earlier attempts.
+
+#include "checks/rubric.h"
+#include "reports/regrade_report.h"
 
 #include <nlohmann/json.hpp>
 
@@ -18,6 +22,8 @@ struct GradebookEntry {
     nlohmann::json result; ///< null when not graded
     std::string problem;   ///< why not graded
     bool pending = false;  ///< waiting in a batch that is running: not graded yet
+    /// An earlier grading of the same files with a higher total: what a regrade lowered.
+    std::optional<EarlierTotal> higherEarlier;
 };
 
 /// What the gradebook is written against: the grading as it is now. A result graded under
@@ -30,6 +36,7 @@ struct GradingNow {
     double maxScore = 0;
     std::optional<long long> deadline;      ///< --deadline, seconds since 1970
     std::map<std::string, long long> times; ///< --times: id -> submitted at, over what results say
+    LowerScores lowerScores = LowerScores::Undecided; ///< the rubric's regrades.lower_scores
 };
 
 /// Two submissions' files of one lab that are alike (similarity.h), for the summary.
@@ -38,7 +45,8 @@ struct SimilarLabs {
     double similarity = 0;
 };
 
-/// Reads OUT/submissions/ID/result.json; an entry with a problem where there is none.
+/// Reads OUT/submissions/ID/result.json, and its earlier attempts for a higher total; an entry
+/// with a problem where there is none.
 GradebookEntry readGradebookEntry(const std::string& out, const std::string& id,
                                   const std::string& submission);
 
@@ -52,8 +60,13 @@ std::string staleness(const nlohmann::json& result, const GradingNow& now);
 enum class Regrade { None, Rescore, Measure };
 Regrade regradeNeeded(const nlohmann::json& result, const GradingNow& now);
 
-/// Writes OUT/gradebook.csv, OUT/lms.csv and OUT/summary.html (atomically), rows in the order of
-/// `entries`; the summary lists the `similar` pairs, or says they come once the batch is done.
+/// The total that counts for `e` under the grading now: none where its maximum is not today's;
+/// under regrades.lower_scores keep_higher, an earlier grading's higher total of the same files.
+std::optional<double> countedTotal(const GradebookEntry& e, const GradingNow& now);
+
+/// Writes OUT/gradebook.csv, OUT/lms.csv, OUT/regrades.csv and OUT/summary.html (atomically),
+/// rows in the order of `entries`; the summary lists the `similar` pairs, or says they come once
+/// the batch is done.
 void writeGradebook(const std::string& out, const std::vector<GradebookEntry>& entries,
                     const GradingNow& now, const std::optional<std::vector<SimilarLabs>>& similar);
 
