@@ -184,8 +184,12 @@ handouts: build
 # The student release, $(BUILD)/pathlab-student.tar.gz: the kit without solutions/, the tests and
 # tools built on them, the instructor's hidden scenes and documents or history, with
 # README-student.md as its README (docs/instructor-guide.md: The student release).
-student-release:
-	@python3 scripts/package_kit.py student-release $(BUILD)/pathlab-student.tar.gz
+# RUBRIC=FILE: the release carries the instructor's rubric (and references that fit it, measured
+# again by the grader where the kit's do not), and says so (docs/instructor-guide.md).
+student-release: $(if $(RUBRIC),configure)
+	$(if $(RUBRIC),@cmake --build $(BUILD) -j $(JOBS) --target grader viewer)
+	@python3 scripts/package_kit.py student-release $(BUILD)/pathlab-student.tar.gz \
+	    $(if $(RUBRIC),--rubric '$(RUBRIC)' --build '$(BUILD)')
 
 # The Gradescope autograder, $(BUILD)/autograder.zip: the whole kit, with setup.sh and
 # run_autograder from scripts/gradescope/ (docs/instructor-guide.md: Gradescope).

@@ -2,20 +2,29 @@
 """The kit's two packages, made from this folder's files as they are.
 
 Usage:
-  package_kit.py student-release OUT.tar.gz   the student release (docs/instructor-guide.md: The student release)
+  package_kit.py student-release OUT.tar.gz [--rubric FILE --build BUILD]
+                                              the student release (docs/instructor-guide.md: The student release)
   package_kit.py gradescope OUT.zip           the Gradescope autograder (docs/instructor-guide.md: Gradescope)
 
 The kit's files are those git tracks, as they are in the working tree (so a stray file of the
 instructor's never ships); in a kit without git, every file but the build folders. The student
 release is a copy of them minus STUDENT_EXCLUDED, under one top folder `pathlab/`, with no
-history, and with README-student.md as its README.md. The autograder holds every file,
+history, and with README-student.md as its README.md. With --rubric, the release carries the
+instructor's rubric as its grader/rubric.json, the stored references measured again (by BUILD's
+grader and the reference solutions) for each public scene whose stored one does not fit that
+rubric, and grader/release.json saying which rubric it is. The autograder holds every file,
 solutions included, with scripts/gradescope/setup.sh and run_autograder at the root, as
 Gradescope wants.
 """
+import json
 import os
+import re
+import shutil
 import subprocess
 import sys
 import tarfile
+import tempfile
+import time
 import zipfile
 
 KIT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -124,16 +133,67 @@ def normalised(info):
     return info
 
 
-def student_release(out, root=KIT):
-    files = student_files(root)
+RUBRIC = "grader/rubric.json"
+REFERENCES = "grader/references/"
+RELEASE_JSON = "grader/release.json"
 
-    def write(path):
-        with tarfile.open(path, "w:gz") as tar:
-            for name, f in files.items():
-                tar.add(os.path.join(root, f), arcname=f"{RELEASE_FOLDER}/{name}", recursive=False,
-                        filter=normalised)
 
-    write_atomically(out, write)
+class PackagingError(Exception):
+    """A reason the package cannot be made, in one line; nothing is written."""
+
+
+def instructor_rubric(rubric, build, scratch):
+    """{name in the release: file to pack} for the instructor's rubric: the rubric itself, the
+    references that fit it (measured again where the kit's do not) and release.json; the grader
+    of `build` checks the rubric and measures."""
+    grader = os.path.abspath(os.path.join(build, "grader"))
+    if not os.path.isfile(rubric):
+        raise PackagingError(f"RUBRIC={rubric}: no such file")
+    if not os.access(grader, os.X_OK):
+        raise PackagingError(f"{grader} is not built (make build, or the grader target)")
+    rubric = os.path.abspath(rubric)
+    described = subprocess.run([grader, "rubric", "--rubric", rubric], capture_output=True, text=True)
+    found = re.search(r"\(hash ([0-9a-f]+)\)", described.stdout)
+    if described.returncode != 0 or not found:
+        raise PackagingError(f"RUBRIC={rubric} is not a rubric the grader takes: "
+                             + (described.stderr.strip() or described.stdout.strip()))
+    references = os.path.join(scratch, "references")
+    shutil.copytree(os.path.join(KIT, REFERENCES), references)
+    print(f"checking the stored references against {rubric} (a scene whose reference does not fit "
+          "it is measured again from the reference solutions: a minute or more each)", flush=True)
+    measured = subprocess.run([grader, "make-references", "--only-stale", "--rubric", rubric,
+                               "--references", references], cwd=build)
+    if measured.returncode != 0:
+        raise PackagingError(f"measuring the references for {rubric} failed (exit {measured.returncode})")
+    release = os.path.join(scratch, "release.json")
+    with open(release, "w") as f:
+        json.dump({"rubric": os.path.basename(rubric), "rubric_hash": found.group(1),
+                   "packaged_at": time.strftime("%Y-%m-%dT%H:%MZ", time.gmtime())}, f, indent=1)
+        f.write("\n")
+    files = {RUBRIC: os.path.abspath(rubric), RELEASE_JSON: release}
+    for name in sorted(os.listdir(references)):
+        files[REFERENCES + name] = os.path.join(references, name)
+    return files, found.group(1)
+
+
+def student_release(out, root=KIT, rubric=None, build=None):
+    files = {name: os.path.join(root, f) for name, f in student_files(root).items()}
+    with tempfile.TemporaryDirectory() as scratch:
+        if rubric:
+            instructors, rubric_hash = instructor_rubric(rubric, build, scratch)
+            files = {n: f for n, f in files.items() if n != RUBRIC and not n.startswith(REFERENCES)}
+            files.update(instructors)
+            files = dict(sorted(files.items()))
+
+        def write(path):
+            with tarfile.open(path, "w:gz") as tar:
+                for name, f in files.items():
+                    tar.add(f, arcname=f"{RELEASE_FOLDER}/{name}", recursive=False, filter=normalised)
+
+        write_atomically(out, write)
+    if rubric:
+        print(f"the release carries the rubric {rubric} (hash {rubric_hash}); "
+              "its students' grader rubric and make grade say so")
     return files
 
 
@@ -162,7 +222,10 @@ def gradescope(out, root=KIT):
 
 
 def main(argv):
-    if len(argv) != 3 or argv[1] not in ("student-release", "gradescope"):
+    options = dict(zip(argv[3::2], argv[4::2]))
+    if (len(argv) < 3 or argv[1] not in ("student-release", "gradescope") or len(argv) % 2 == 0
+            or set(options) - {"--rubric", "--build"} or ("--rubric" in options) != ("--build" in options)
+            or (options and argv[1] != "student-release")):
         print(__doc__.strip().split("\n\n")[1], file=sys.stderr)
         return 2
     command, out = argv[1], argv[2]
@@ -170,7 +233,12 @@ def main(argv):
         print(f"package_kit.py: {KIT} has no solutions/: {command} is made from the instructor's "
               "kit, not from the student release", file=sys.stderr)
         return 2
-    files = student_release(out) if command == "student-release" else gradescope(out)
+    try:
+        files = (student_release(out, rubric=options.get("--rubric"), build=options.get("--build"))
+                 if command == "student-release" else gradescope(out))
+    except PackagingError as e:
+        print(f"make {command}: {e}; nothing was written", file=sys.stderr)
+        return 2
     size = os.path.getsize(out)
     print(f"{out}: {len(files)} files, {size / 1e6:.1f} MB")
     if command == "gradescope":

@@ -5,6 +5,10 @@
 #include "checks/speed_check.h"
 #include "checks/strategy_tiles.h"
 
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace pathlab::grader {
@@ -22,9 +26,26 @@ std::string perLab(const Rubric& r, int LabRubric::*count) {
 
 } // namespace
 
+std::string releasedRubricNote(const Rubric& r, const std::string& rubricPath) {
+    const std::filesystem::path release =
+        std::filesystem::path(rubricPath).parent_path() / "release.json";
+    std::ifstream in(release);
+    const nlohmann::json j = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+    if (!j.is_object() || !j.contains("rubric_hash")) return "";
+    const std::string hash = j.value("rubric_hash", "");
+    std::string note = "this release carries the instructor's rubric " + j.value("rubric", "?") +
+                       " (hash " + hash + "), packaged " + j.value("packaged_at", "?") + "\n";
+    if (hash != r.hash)
+        note += "note: " + rubricPath + " is not that rubric (hash " + r.hash +
+                "): it was edited since, or another was given, and a grade under it may differ "
+                "from your instructor's\n";
+    return note;
+}
+
 std::string rubricText(const Rubric& r, const std::string& rubricPath, int hiddenScenes) {
     std::ostringstream out;
-    out << "PathLab rubric: " << rubricPath << " (hash " << r.hash << ")\n\npoints\n";
+    out << "PathLab rubric: " << rubricPath << " (hash " << r.hash << ")\n"
+        << releasedRubricNote(r, rubricPath) << "\npoints\n";
     double total = 0;
     for (Lab lab : AllLabs) {
         const LabPoints& p = r.forLab(lab).points;

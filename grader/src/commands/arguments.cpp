@@ -62,6 +62,9 @@ make-references
                       added to it), and not lab_figures.json
   --only-hidden       measure only the hidden scenes' references, into the reference cache
                       (Gradescope's setup.sh does this once, so no submission waits for it)
+  --only-stale        measure only the public scenes whose reference in --references is
+                      missing or no longer fits the rubric, and not lab_figures.json (make
+                      student-release RUBRIC=FILE does this for the instructor's rubric)
 
 batch
   --out DIR           gradebook.csv, summary.html, batch.log and submissions/ID/ (feedback)
@@ -154,11 +157,9 @@ int readCommand(int argc, char** argv, Arguments& a) {
 /// The options that set a flag.
 const std::map<std::string, bool Arguments::*>& flagOptions() {
     static const std::map<std::string, bool Arguments::*> flags = {
-        {"--reveal-hidden", &Arguments::revealHidden},
-        {"--only-hidden", &Arguments::onlyHidden},
-        {"--keep-stale", &Arguments::keepStale},
-        {"--only-figures", &Arguments::onlyFigures},
-        {"--force", &Arguments::force},
+        {"--reveal-hidden", &Arguments::revealHidden}, {"--only-hidden", &Arguments::onlyHidden},
+        {"--keep-stale", &Arguments::keepStale},       {"--only-figures", &Arguments::onlyFigures},
+        {"--only-stale", &Arguments::onlyStale},       {"--force", &Arguments::force},
     };
     return flags;
 }

@@ -35,6 +35,7 @@ struct Arguments {
     bool onlyFigures = false; ///< make-references: only lab_figures.json
     std::string onlyScene;    ///< make-references: only this rubric scene's reference
     bool onlyHidden = false;  ///< make-references: only the hidden scenes' (into the cache)
+    bool onlyStale = false;   ///< make-references: only the missing or stale public ones
     // batch
     int jobs = 1;
     bool force = false;

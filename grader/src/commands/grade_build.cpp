@@ -3,6 +3,7 @@
 #include "checks/expectation.h"
 #include "checks/grading_scenes.h"
 #include "checks/kit_ray_cost.h"
+#include "checks/rubric_text.h"
 #include "checks/speed_check.h"
 #include "commands/commands.h"
 #include "commands/grade_lab.h"
@@ -101,6 +102,16 @@ int makeReferences(const Arguments& a, const Rubric& rubric, const std::string& 
                          "correctness.scenes");
     for (const std::string& scene : rubric.scenes) {
         if (!a.onlyScene.empty() && scene != a.onlyScene) continue;
+        if (a.onlyStale) {
+            try {
+                loadReference(a.references, publicScenePath(scene), rubric);
+                std::printf("kept %s/%s.json: it fits the rubric\n", a.references.c_str(),
+                            scene.c_str());
+                continue;
+            } catch (const InputError& why) {
+                std::printf("measuring %s again: %s\n", scene.c_str(), why.what());
+            }
+        }
         ProgressBar bar(scene, "renders");
         const SceneReference ref = measureReference(
             solution, std::string(PATHLAB_MODELS_DIR) + "/" + scene + ".ecs", rubric, 40, 8,
@@ -108,7 +119,7 @@ int makeReferences(const Arguments& a, const Rubric& rubric, const std::string& 
         saveReference(a.references, ref);
         std::printf("wrote %s/%s.json\n", a.references.c_str(), scene.c_str());
     }
-    if (a.onlyScene.empty()) makeLabFigures(a, rubric, scratch);
+    if (a.onlyScene.empty() && !a.onlyStale) makeLabFigures(a, rubric, scratch);
     return 0;
 }
 
@@ -128,6 +139,7 @@ void writeReports(const Arguments& a, const Rubric& rubric, const GradeReport& r
 
 int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
     const auto start = std::chrono::steady_clock::now();
+    std::fputs(releasedRubricNote(rubric, a.rubric).c_str(), stderr);
     GraderSetup setup;
     setup.student = {a.viewer, Implementation::Student, {}, {}, {}};
     setup.solution = {a.solutionViewer, Implementation::Solution, {}, {}, {}};

@@ -1,0 +1,102 @@
+#!/usr/bin/env python3
+"""A student release that carries the instructor's rubric (make student-release RUBRIC=FILE):
+ctest `release.rubric`.
+
+Usage: release_rubric_test.py --source KIT --build BUILD
+
+Packages the kit with an instructor's rubric (the kit's, its points changed and its correctness
+checked on the furnace alone at 32x32 pixels, so that the furnace's stored reference no longer
+fits and is measured again) by scripts/package_kit.py, as the make target does, with BUILD's grader,
+and checks, each printing PASS/FAIL:
+- the release's grader/rubric.json is the instructor's file, byte for byte, and its
+  grader/release.json names it with the hash the grader gives it;
+- the furnace's reference was measured again, at the rubric's size, and the references the
+  rubric still fits are the kit's, unchanged;
+- `grader rubric` on the release's rubric, beside its release.json, says which rubric the release
+  carries; edited afterwards, it says it is not that one;
+- a rubric the grader refuses (a lab's points missing) stops the packaging in one line naming
+  the problem, exit 2, and no package is written.
+"""
+import argparse
+import filecmp
+import json
+import os
+import subprocess
+import sys
+import tarfile
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from checks import check, exit_code  # noqa: E402
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--source", required=True)
+parser.add_argument("--build", required=True)
+args = parser.parse_args()
+KIT, BUILD = os.path.abspath(args.source), os.path.abspath(args.build)
+GRADER = os.path.join(BUILD, "grader")
+
+
+def package(out, rubric):
+    return subprocess.run([sys.executable, os.path.join(KIT, "scripts", "package_kit.py"), "student-release",
+                           out, "--rubric", rubric, "--build", BUILD], capture_output=True, text=True)
+
+
+def main():
+    with tempfile.TemporaryDirectory() as root:
+        rubric = json.load(open(os.path.join(KIT, "grader", "rubric.json")))
+        rubric["about"] = "CS 999, fall 2026"
+        rubric["points"]["uniform"]["noise"] = 4
+        rubric["correctness"].update({"width": 32, "height": 32, "tiles": 2, "seeds": 4,
+                                      "scenes": ["furnace"]})
+        rubric["noise"]["scene"] = rubric["speed"]["scene"] = "furnace"
+        course = os.path.join(root, "course-rubric.json")
+        json.dump(rubric, open(course, "w"), indent=1)
+        out = os.path.join(root, "release.tar.gz")
+        made = package(out, course)
+        print(made.stdout + made.stderr)
+        check(made.returncode == 0 and "the release carries the rubric" in made.stdout,
+              f"packaged with the instructor's rubric (exit {made.returncode})")
+        if made.returncode != 0:
+            return exit_code()
+        unpacked = os.path.join(root, "unpacked")
+        with tarfile.open(out) as tar:
+            tar.extractall(unpacked)
+        grader_folder = os.path.join(unpacked, "pathlab", "grader")
+        release = json.load(open(os.path.join(grader_folder, "release.json")))
+        described = subprocess.run([GRADER, "rubric", "--rubric", course], capture_output=True, text=True).stdout
+        check(filecmp.cmp(os.path.join(grader_folder, "rubric.json"), course, shallow=False)
+              and release["rubric"] == "course-rubric.json" and f"(hash {release['rubric_hash']})" in described,
+              f"the release's rubric is the instructor's file, and release.json names it and its hash ({release})")
+        furnace = json.load(open(os.path.join(grader_folder, "references", "furnace.json")))
+        kit_box = os.path.join(KIT, "grader", "references", "cornell_box_VI2_Specular.json")
+        check(furnace["width"] == 32 and filecmp.cmp(os.path.join(grader_folder, "references",
+                                                                    "cornell_box_VI2_Specular.json"),
+                                                       kit_box, shallow=False)
+              and "measuring furnace again" in made.stdout,
+              f"the furnace's reference measured again at 32x32 (width {furnace['width']}), the box's kept as the kit's")
+        released = os.path.join(grader_folder, "rubric.json")
+        says = subprocess.run([GRADER, "rubric", "--rubric", released], capture_output=True, text=True).stdout
+        check(f"this release carries the instructor's rubric course-rubric.json (hash {release['rubric_hash']})" in says
+              and "is not that rubric" not in says, "grader rubric in the release says which rubric it carries")
+        edited = json.load(open(released))
+        edited["points"]["uniform"]["noise"] = 40
+        json.dump(edited, open(released, "w"))
+        says = subprocess.run([GRADER, "rubric", "--rubric", released], capture_output=True, text=True).stdout
+        check("is not that rubric" in says and "may differ from your instructor's" in says,
+              "an edited rubric in the release is told apart from the instructor's")
+
+        del rubric["points"]["mis"]
+        broken = os.path.join(root, "broken.json")
+        json.dump(rubric, open(broken, "w"))
+        refused_out = os.path.join(root, "refused.tar.gz")
+        refused = package(refused_out, broken)
+        lines = refused.stderr.strip().splitlines()
+        check(refused.returncode == 2 and len(lines) == 1 and "broken.json" in lines[0] and "\"mis\"" in lines[0]
+              and "nothing was written" in lines[0] and not os.path.exists(refused_out),
+              f"a rubric without lab 6's points: one line naming it, exit 2, no package ({refused.stderr.strip()})")
+    return exit_code()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
