@@ -1,5 +1,6 @@
 // Hidden scenes in Gradescope's results: a test of their own per lab, no points of its own, with
 // the rubric's visibility; the lab's visible tests and the submission's output leave them out.
+// PrairieLearn's results, which can show a test only to all or none, leave them out altogether.
 #include "catch.h"
 
 #include "checks/correctness_check.h"
@@ -80,6 +81,34 @@ TEST_CASE(
     // The student's own feedback (terminal, JSON) says pass or fail per hidden scene, by number.
     CHECK(terminalReport(reportWithHiddenScene(), false).find("hidden scene 1: differs") !=
           std::string::npos);
+}
+
+TEST_CASE("PrairieLearn: a test per lab and check, the score a fraction, no hidden scene named",
+          "[grader]") {
+    GradeReport report = reportWithHiddenScene();
+    CheckResult noise;
+    noise.kind = CheckKind::Noise;
+    noise.maxScore = 2;
+    noise.score = 2;
+    noise.passed = true;
+    noise.summary = "noise 1.02 times the reference's";
+    report.labs[0].checks.push_back(noise);
+    const nlohmann::json results = nlohmann::json::parse(prairieLearnReport(report));
+    CHECK(results.at("gradable") == true);
+    CHECK(results.at("score").get<double>() == Approx(0.25)); // 2 of 8 points
+    const auto& tests = results.at("tests");
+    REQUIRE(tests.size() == 2);
+    CHECK(tests[0].at("name") == "uniform: correctness");
+    CHECK(tests[0].at("points") == 0);
+    CHECK(tests[0].at("max_points") == 6);
+    CHECK(tests[0].at("message") == "failed");
+    CHECK(tests[1].at("name") == "uniform: noise");
+    CHECK(tests[1].at("points") == 2);
+    CHECK(tests[1].at("message") == "passed");
+    CHECK(std::string(tests[0].at("output")).find("furnace: observed/expected") !=
+          std::string::npos);
+    INFO(results.dump(1));
+    CHECK(results.dump().find("hidden scene") == std::string::npos);
 }
 
 TEST_CASE("the rubric's visibility of hidden scenes: one of Gradescope's four", "[grader]") {

@@ -12,6 +12,8 @@ promises:
   points or thresholds re-scores everyone from their measurements, rendering nothing (the canary
   too), each grading kept as an attempt that the student's page lists; a submission changed since
   it was graded is graded again without --only, saying so;
+- a batch prints its time estimate before its gradings (per submission, the class, a Slurm
+  array) and the measured figure at the end;
 - a regrade says, per student, the old and new total and each changed check with its reason (the
   terminal, regrades.csv, summary.html); a total it lowers on the same files is withheld from
   lms.csv until the rubric's regrades.lower_scores decides, and keep_higher keeps the higher one
@@ -205,6 +207,13 @@ def main():
         run = batch("after the scene's light changed")
         check(run.returncode == 0 and canaries()[-1] == (FULL, FULL) and graded_in_last_batch() == ["alice", "bob", "carol"],
               "an edited hidden scene: its reference measured again, the canary passes, everyone regraded")
+        estimate = re.search(r"estimate: about (\d+) s per submission here \(the median of 3 earlier grading\(s\)", run.stderr)
+        check(estimate and "estimate: 3 submission(s) here, 2 at a time: about " in run.stderr
+              and "estimate: on a Slurm array of 10 node(s)" in run.stderr
+              and re.search(r"measured: 3 submission\(s\) graded in .*, about .* per submission 2 at a time "
+                            r"\(estimated \d+ s\)", run.stderr),
+              "before its gradings, a batch prints its time estimate from the earlier gradings (here, the "
+              "class, a Slurm array), and at the end the measured figure beside it")
         rows = gradebook()
         check(rows["alice"]["total"] == FULL, "alice still gets full marks on the edited scene")
         check(all(r["late"] == "no" for r in rows.values()), "a batch run again keeps its deadline")

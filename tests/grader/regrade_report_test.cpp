@@ -45,6 +45,7 @@ nlohmann::json result(int attempt, double correctness, double noise, const std::
             {"labs",
              {{"uniform",
                {{"score", correctness + noise},
+                {"max_score", 10},
                 {"checks",
                  {{"correctness", {{"score", correctness}, {"passed", correctness > 0}}},
                   {"noise", {{"score", noise}, {"passed", noise > 0}}}}}}}}},
@@ -194,8 +195,11 @@ TEST_CASE("a lowered total waits for the rubric's choice; replace and keep_highe
         CHECK(lms.find("alice") == std::string::npos);
         CHECK(lms.find("bob,bob,10\n") != std::string::npos);
         CHECK(lms.find("carol,carol,6\n") != std::string::npos);
-        CHECK(readText(scratch.path / "summary.html").find("1 total(s) lowered by a regrade") !=
-              std::string::npos);
+        const std::string summary = readText(scratch.path / "summary.html");
+        CHECK(summary.find("1 total(s) lowered by a regrade") != std::string::npos);
+        // The class page's labs: uniform's mean over the four (6, 10, 6, 10) and its pass rates.
+        CHECK(summary.find("<tr><td>uniform</td><td>8 / 10</td><td>100% (4 of 4)</td><td>50% (2 "
+                           "of 4)</td><td>not checked</td></tr>") != std::string::npos);
     }
     SECTION("replace: the lower total counts") {
         writeGradebook(out, all, gradingNow(LowerScores::Replace), std::nullopt);

@@ -48,7 +48,7 @@ options
   --seed N            seed base (default 1); a fail is re-checked on fresh seeds anyway
   --threads N         threads per render (default: all cores)
   --no-speed          skip the speed check (its points are left out of the total)
-  --json FILE --junit FILE --gradescope FILE --html DIR
+  --json FILE --junit FILE --gradescope FILE --prairielearn FILE --html DIR
                       reports (the terminal table is always printed)
   --report FILE.md    a lab report: your notebook's figures (frame rate, noise, efficiency) and
                       the ratios between labs, beside the reference solutions'
@@ -69,6 +69,8 @@ make-references
 batch
   --out DIR           gradebook.csv, summary.html, batch.log and submissions/ID/ (feedback)
   --jobs N            submissions graded at once (default 1)
+  --estimate-nodes N  the Slurm array the time estimate printed before the gradings is also
+                      given for: N nodes of PATHLAB_CPUS cores (default 10 nodes of 4)
   --force             grade again what is already graded (default: a restart skips it)
   --only ID[,ID...]   grade only these submissions (again); the gradebook keeps the others
   --keep-stale        keep results graded under another rubric or other scenes (default: grade
@@ -177,6 +179,7 @@ const std::map<std::string, std::string Arguments::*>& textOptions() {
         {"--json", &Arguments::json},
         {"--junit", &Arguments::junit},
         {"--gradescope", &Arguments::gradescope},
+        {"--prairielearn", &Arguments::prairielearn},
         {"--html", &Arguments::html},
         {"--report", &Arguments::report},
         {"--sweeps", &Arguments::sweeps},
@@ -224,6 +227,10 @@ std::map<std::string, Checked> checkedOptions(Arguments& a, bool& scenesGiven) {
                           const std::string& v) { a.threads = static_cast<int>(number(o, v, 0)); }},
         {"--jobs", [&](const std::string& o,
                        const std::string& v) { a.jobs = static_cast<int>(number(o, v, 1)); }},
+        {"--estimate-nodes",
+         [&](const std::string& o, const std::string& v) {
+             a.estimateNodes = static_cast<int>(number(o, v, 1));
+         }},
         {"--shard",
          [&](const std::string& o, const std::string& text) {
              const size_t slash = text.find('/');

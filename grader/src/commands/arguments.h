@@ -24,7 +24,7 @@ struct Arguments {
     bool revealHidden = false; ///< feedback may name hidden scenes and show their images
     std::string rubric, references;
     bool rubricGiven = false; ///< --rubric on the command line (else the kit's)
-    std::string json, junit, gradescope, html, report;
+    std::string json, junit, gradescope, prairielearn, html, report;
     /// --report: where `make sweep` wrote its plots (default: sweep/ beside the grader).
     std::string sweeps;
     std::string out; ///< submission, batch, merge: the output folder
@@ -38,6 +38,7 @@ struct Arguments {
     bool onlyStale = false;   ///< make-references: only the missing or stale public ones
     // batch
     int jobs = 1;
+    int estimateNodes = 10; ///< batch: the Slurm array its time estimate is also given for
     bool force = false;
     std::vector<std::string> only; ///< grade only these submission ids (again)
     bool keepStale = false;        ///< keep results graded under another rubric or scenes

@@ -15,6 +15,7 @@
 #include "checks/speed_check.h"
 #include "commands/batch_canary.h"
 #include "commands/batch_cores.h"
+#include "commands/batch_estimate.h"
 #include "commands/batch_jobs.h"
 #include "commands/batch_selection.h"
 #include "commands/commands.h"
@@ -36,6 +37,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -306,6 +308,30 @@ Arguments withHiddenScenes(const Arguments& a, const Rubric& rubric, const std::
     return graded;
 }
 
+/// The Slurm array the estimate is given for: --estimate-nodes, PATHLAB_CPUS cores each (what
+/// grade-class.sh asks for).
+SlurmArray slurmArray(const Arguments& a) {
+    SlurmArray array;
+    array.nodes = a.estimateNodes;
+    if (const char* cpus = std::getenv("PATHLAB_CPUS"); cpus && std::atoi(cpus) > 0)
+        array.cpusPerNode = std::atoi(cpus);
+    return array;
+}
+
+/// Before the first grading: how long the gradings will take, on the terminal and in batch.log;
+/// the figure it rests on, for the measured one at the end. None before anything was measured
+/// here (a first batch whose canary was skipped cannot be: its canary always runs).
+std::optional<GradingTime> sayEstimate(const Arguments& a, const std::string& out, size_t count,
+                                       std::ofstream& log) {
+    if (count == 0) return std::nullopt;
+    const std::optional<GradingTime> time = measuredGradingTime(out, a.speed);
+    if (!time) return std::nullopt;
+    const std::string text = batchEstimate(*time, count, a.jobs, slurmArray(a));
+    std::fputs(text.c_str(), stderr);
+    log << timestamp() << " " << text;
+    return time;
+}
+
 /// What this batch's gradings changed for the submissions graded before: a line each on the
 /// terminal and in batch.log (regrades.csv and summary.html have every submission's last), and
 /// what the gradebook does with the totals a regrade lowered.
@@ -387,6 +413,8 @@ int runBatch(const Arguments& given, const Rubric& rubric, const std::string& sc
     // What this batch's gradebook is written against, for `grader merge`: only once the canary
     // passed, so that a batch it stopped changes nothing.
     writeBatchJson(out, fs::absolute(a.rubric).string(), grading, dates);
+    const std::optional<GradingTime> estimated = sayEstimate(a, out, selection.todo.size(), log);
+    const auto gradingsStart = std::chrono::steady_clock::now();
     const JobCounts counts =
         gradeInJobs(a.jobs, childBase, selection.todo, submissions, out, grading, log);
     const std::vector<SimilarLabs> similar = similarSubmissions(out, idsOf(submissions));
@@ -399,6 +427,16 @@ int runBatch(const Arguments& given, const Rubric& rubric, const std::string& sc
     reportRegrades(out, gradedNow, grading, log);
     const double seconds = secondsSince(start);
     log << timestamp() << " batch finished in " << seconds << " s\n";
+    if (estimated && counts.done > 0) {
+        const double gradings = secondsSince(gradingsStart);
+        const std::string text = "measured: " + std::to_string(counts.done) +
+                                 " submission(s) graded in " + roughDuration(gradings) +
+                                 ", about " + roughDuration(gradings * a.jobs / counts.done) +
+                                 " per submission " + std::to_string(a.jobs) +
+                                 " at a time (estimated " + roughDuration(estimated->seconds) + ")";
+        std::fprintf(stderr, "%s\n", text.c_str());
+        log << timestamp() << " " << text << "\n";
+    }
     std::printf("graded %zu submission(s) and re-scored %zu in %.0f s (%zu kept as they were, %zu "
                 "not graded, %zu similar pair(s)): %s/gradebook.csv, %s/lms.csv, %s/summary.html\n",
                 counts.done - counts.failed, rescored, seconds,

@@ -134,6 +134,7 @@ void writeReports(const Arguments& a, const Rubric& rubric, const GradeReport& r
     if (!a.junit.empty()) writeFileAtomically(a.junit, junitReport(report));
     if (!a.gradescope.empty())
         writeFileAtomically(a.gradescope, gradescopeReport(report, rubric.hiddenScenesVisibility));
+    if (!a.prairielearn.empty()) writeFileAtomically(a.prairielearn, prairieLearnReport(report));
     if (!a.html.empty()) writeHtmlReport(report, a.html);
 }
 

@@ -179,6 +179,7 @@ void writeGrading(const SubmissionOutcome& outcome, const std::string& submissio
                                 .dump(1) +
                             "\n");
     writeFileAtomically(folder + "/feedback.json", jsonReport(report));
+    writeFileAtomically(folder + "/prairielearn.json", prairieLearnReport(report));
     writeHtmlReport(report, folder);
     writeFileAtomically(folder + "/result.json", resultJson(outcome, submission));
 }

@@ -199,6 +199,48 @@ std::string similarityTable(const std::optional<std::vector<SimilarLabs>>& pairs
     return html.str();
 }
 
+/// Per lab, over the submissions graded under the grading now: the mean score, and each check's
+/// pass rate among the submissions that made it (speed under --no-speed is made by none).
+std::string labTable(const std::vector<GradebookEntry>& entries) {
+    if (entries.empty()) return "<p>No submission graded under this rubric yet.</p>\n";
+    std::ostringstream html;
+    html << "<table><tr><th>lab</th><th>mean score</th>";
+    for (CheckKind check : AllChecks) html << "<th>" << checkName(check) << " passed</th>";
+    html << "</tr>\n";
+    for (Lab lab : AllLabs) {
+        double sum = 0, max = 0;
+        std::map<CheckKind, std::pair<int, int>> passedOfMade;
+        for (const GradebookEntry& e : entries) {
+            const nlohmann::json labResult =
+                e.result.value("labs", nlohmann::json::object())
+                    .value(std::string(labName(lab)), nlohmann::json::object());
+            sum += labResult.value("score", 0.0);
+            max = std::max(max, labResult.value("max_score", 0.0));
+            const nlohmann::json checks = labResult.value("checks", nlohmann::json::object());
+            for (CheckKind check : AllChecks) {
+                const nlohmann::json c =
+                    checks.value(std::string(checkName(check)), nlohmann::json());
+                if (!c.is_object() || !c.value("graded_here", true)) continue;
+                ++passedOfMade[check].second;
+                passedOfMade[check].first += c.value("passed", false);
+            }
+        }
+        html << "<tr><td>" << labName(lab) << "</td><td>"
+             << number(std::round(100 * sum / entries.size()) / 100) << " / " << number(max)
+             << "</td>";
+        for (CheckKind check : AllChecks) {
+            const auto [passed, made] = passedOfMade[check];
+            html << "<td>"
+                 << (made == 0 ? std::string("not checked")
+                               : number(std::round(100.0 * passed / made)) + "% (" +
+                                     std::to_string(passed) + " of " + std::to_string(made) + ")")
+                 << "</td>";
+        }
+        html << "</tr>\n";
+    }
+    return html.str() + "</table>\n";
+}
+
 /// Where each graded submission's time went (result.json's seconds_by_phase), a row each, and
 /// the median: what tells an instructor how long a class takes, and why.
 std::string timeTable(const std::vector<GradebookEntry>& entries) {
@@ -283,7 +325,8 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
                 "until the rubric's <code>regrades.lower_scores</code> says <code>replace</code> "
                 "or <code>keep_higher</code> (their status says from what to what).</p>\n";
     html << "<h2>Scores</h2>\n"
-         << histogram(entries) << "<h2>Most common diagnoses</h2>\n"
+         << histogram(entries) << "<h2>Labs</h2>\n"
+         << labTable(entries) << "<h2>Most common diagnoses</h2>\n"
          << "<table><tr><th>submissions</th><th>lab</th><th>diagnosis</th></tr>\n";
     for (const auto& [count, key] : common)
         html << "<tr><td>" << count << "</td><td>" << escapeXml(key.first) << "</td><td>"

@@ -68,15 +68,14 @@ std::string scoreText(double score, double maxScore, double notGradedHere, doubl
     return text;
 }
 
-/// A check's summary and details; with the hidden scenes' pass or fail unless `withHidden` is
-/// false (Gradescope shows those in a test of their own).
-std::string checkText(const CheckResult& c, bool withHidden = true) {
+/// A check's summary and details, and the hidden scenes' pass or fail as `hidden` says.
+std::string checkText(const CheckResult& c, HiddenVerdicts hidden = HiddenVerdicts::Shown) {
     std::string text = c.summary;
     for (const std::string& d : c.details) text += "\n  " + d;
-    if (!c.hiddenSceneDetails.empty())
-        text += withHidden ? "" : "\n  hidden scenes: in the test \"hidden scenes\" of this lab";
+    if (!c.hiddenSceneDetails.empty() && hidden == HiddenVerdicts::InTheirOwnTest)
+        text += "\n  hidden scenes: in the test \"hidden scenes\" of this lab";
     for (const std::string& d : c.hiddenSceneDetails)
-        if (withHidden) text += "\n  " + d;
+        if (hidden == HiddenVerdicts::Shown) text += "\n  " + d;
     return text;
 }
 
@@ -122,7 +121,7 @@ std::vector<LabRatio> labRatios(const GradeReport& report) {
     return ratios;
 }
 
-std::string terminalReport(const GradeReport& report, bool colour, bool withHidden) {
+std::string terminalReport(const GradeReport& report, bool colour, HiddenVerdicts hidden) {
     const char* green = colour ? "\033[32m" : "";
     const char* red = colour ? "\033[31m" : "";
     const char* reset = colour ? "\033[0m" : "";
@@ -164,7 +163,7 @@ std::string terminalReport(const GradeReport& report, bool colour, bool withHidd
         for (const CheckResult& c : lab.checks)
             out << "\n"
                 << labName(lab.lab) << " " << c.name() << ": "
-                << (c.atRisk || (!c.passed && c.gradedHere) ? red : "") << checkText(c, withHidden)
+                << (c.atRisk || (!c.passed && c.gradedHere) ? red : "") << checkText(c, hidden)
                 << reset;
     out << "\n";
     const auto ratios = labRatios(report);
@@ -292,7 +291,7 @@ std::string gradescopeReport(const GradeReport& report, const std::string& hidde
                                  {"score", c.score},
                                  {"max_score", c.maxScore},
                                  {"status", c.passed ? "passed" : "failed"},
-                                 {"output", checkText(c, false)},
+                                 {"output", checkText(c, HiddenVerdicts::InTheirOwnTest)},
                                  {"visibility", "visible"}});
         // The hidden scenes' verdicts, without points of their own (they are in correctness's),
         // shown when the instructor's rubric says.
@@ -312,10 +311,35 @@ std::string gradescopeReport(const GradeReport& report, const std::string& hidde
                              {"visibility", hiddenVisibility}});
         }
     }
-    const nlohmann::json j = {{"score", report.score()},
-                              {"execution_time", static_cast<int>(report.seconds + 0.5)},
-                              {"output", terminalReport(report, false, false)},
-                              {"tests", tests}};
+    const nlohmann::json j = {
+        {"score", report.score()},
+        {"execution_time", static_cast<int>(report.seconds + 0.5)},
+        {"output", terminalReport(report, false, HiddenVerdicts::InTheirOwnTest)},
+        {"tests", tests}};
+    return j.dump(2) + "\n";
+}
+
+std::string prairieLearnReport(const GradeReport& report) {
+    nlohmann::json tests = nlohmann::json::array();
+    for (const LabGrade& lab : report.labs)
+        for (const CheckResult& c : lab.checks)
+            if (c.gradedHere)
+                tests.push_back({{"name", std::string(labName(lab.lab)) + ": " + c.name()},
+                                 {"description", "lab " + std::to_string(labNumber(lab.lab)) +
+                                                     ", " + std::string(labName(lab.lab)) +
+                                                     ": the " + c.name() + " check"},
+                                 {"points", c.score},
+                                 {"max_points", c.maxScore},
+                                 {"message", c.passed ? "passed" : "failed"},
+                                 {"output", checkText(c, HiddenVerdicts::LeftOut)}});
+    const double max = report.maxScore();
+    const nlohmann::json j = {
+        {"gradable", true},
+        {"score", max > 0 ? report.score() / max : 0.0},
+        {"message",
+         scoreText(report.score(), max, report.pointsNotGradedHere(), report.pointsAtRisk())},
+        {"output", terminalReport(report, false, HiddenVerdicts::LeftOut)},
+        {"tests", tests}};
     return j.dump(2) + "\n";
 }
 

@@ -39,15 +39,27 @@ struct GradeReport {
 /// `text` with & < > " escaped, for XML and HTML.
 std::string escapeXml(const std::string& text);
 
-/// A table for the terminal, coloured when `colour`; the hidden scenes' verdicts unless
-/// `withHidden` is false.
-std::string terminalReport(const GradeReport& report, bool colour, bool withHidden = true);
+/// Where a report puts the hidden scenes' verdicts.
+enum class HiddenVerdicts {
+    Shown,          ///< under their check (the terminal, the student's feedback)
+    InTheirOwnTest, ///< a pointer to the test "LAB: hidden scenes" (Gradescope)
+    LeftOut,        ///< nowhere (PrairieLearn, which cannot show a test only after the due date)
+};
+
+/// A table for the terminal, coloured when `colour`, the hidden scenes' verdicts as `hidden` says.
+std::string terminalReport(const GradeReport& report, bool colour,
+                           HiddenVerdicts hidden = HiddenVerdicts::Shown);
 std::string jsonReport(const GradeReport& report);
 std::string junitReport(const GradeReport& report);
 /// Gradescope's results.json: score, execution_time, output, tests[] (name, score, max_score,
 /// status, output, visibility). Each lab graded on hidden scenes has a test "LAB: hidden scenes"
 /// (no points of its own) with `hiddenVisibility` (rubric: hidden_scenes.gradescope_visibility).
 std::string gradescopeReport(const GradeReport& report, const std::string& hiddenVisibility);
+/// PrairieLearn's external-grader results.json: gradable, score (a fraction of the maximum),
+/// message, output, tests[] (name, description, points, max_points, message, output), a test per
+/// lab and check graded here. The hidden scenes' verdicts are left out: PrairieLearn has no
+/// setting that shows a test only after the due date.
+std::string prairieLearnReport(const GradeReport& report);
 /// A Markdown lab report for a student to hand in: the notebook's figures (frame rate, noise,
 /// efficiency) of each lab beside the reference solutions' stored ones, the ratios between labs,
 /// lab 4's noise at 64 and 256 spp, the student's `make sweep` plots (`sweeps`, or how to make
