@@ -305,8 +305,10 @@ TEST_CASE("a gradebook never mixes maxima, says pending, stale and late", "[grad
 
     const std::string summary = readText(scratch.path / "summary.html");
     CHECK(summary.find("1 pending, 2 stale") != std::string::npos);
-    CHECK(summary.find("97%</td><td>uniform</td><td>alice</td><td>reference solutions") !=
+    CHECK(summary.find("<tr><td>uniform</td><td>2</td><td>1</td><td>97%</td>") !=
           std::string::npos);
+    CHECK(readText(scratch.path / "similarity.csv") ==
+          "lab,first,second,similarity\nuniform,alice,reference solutions,0.97\n");
 }
 
 TEST_CASE("a result whose rubric changed only in points or thresholds is re-scored; one whose "

@@ -19,7 +19,8 @@ promises:
   lms.csv until the rubric's regrades.lower_scores decides, and keep_higher keeps the higher one
   without grading anyone again;
 - no file of a student's feedback names the hidden scene or shows its images;
-- the similarity report pairs a copy of the solutions with renamed variables with the solutions.
+- the similarity report puts a copy of the solutions with renamed variables in one cluster with
+  the solutions, with side-by-side pages.
 
 The rubric is the kit's, lighter (32x32 pixels, 6 seeds (with 4, a t-test of 3 degrees of
 freedom can miss even a reference wrong by half after the Holm correction), the furnace as the only public scene,
@@ -182,9 +183,13 @@ def main():
         check(lms[0] == f"Student,SIS Login ID,PathLab ({FULL} points)" and f"alice,alice,{FULL}" in lms,
               "lms.csv")
         summary = read(os.path.join(OUT, "summary.html"))
-        pairs = re.findall(r"<tr><td>(\d+)%</td><td>(\w+)</td><td>([\w ]+)</td><td>([\w ]+)</td></tr>", summary)
-        disguised = {lab for pct, lab, a, b in pairs if {a, b} == {"alice", "reference solutions"} and int(pct) >= 95}
-        check(disguised == set(LABS), "the similarity report pairs alice's renamed copy with the solutions, every lab")
+        clusters = re.findall(r"<tr><td>(\w+)</td><td>\d+</td><td>\d+</td><td>(\d+)%</td><td>(.*?)</td></tr>", summary)
+        disguised = {lab for lab, pct, members in clusters
+                     if "alice &harr;" in members and "reference solutions &harr;" in members and int(pct) >= 95}
+        pages = [os.path.join(OUT, link) for link in re.findall(r'href="(similarity/[^"]+)"', summary)]
+        check(disguised == set(LABS) and pages and all(os.path.exists(p) for p in pages),
+              "the similarity report puts alice's renamed copy in one cluster with the solutions, every lab, "
+              "each member linked to a side-by-side page")
 
         # No feedback names the hidden scene or shows its images.
         leaks = [path for path in feedback_files() if SECRET in read(path) or "lantern" in read(path)]

@@ -27,6 +27,7 @@
 #include "reports/lab_figures.h"
 #include "reports/submission_time.h"
 #include "similarity/class_similarity.h"
+#include "similarity/side_by_side.h"
 
 #include "pathlab/support/input_error.h"
 #include "pathlab/render/render_stats.h"
@@ -419,6 +420,7 @@ int runBatch(const Arguments& given, const Rubric& rubric, const std::string& sc
         gradeInJobs(a.jobs, childBase, selection.todo, submissions, out, grading, log);
     const std::vector<SimilarLabs> similar = similarSubmissions(out, idsOf(submissions));
     writeGradebook(out, gradebookEntries(out, submissions, {}), grading, similar);
+    writeSideBySidePages(out, similarClusters(similar));
     std::vector<Submission> gradedNow = selection.todo;
     for (const Submission& s : selection.rescore)
         if (std::none_of(unmeasured.begin(), unmeasured.end(),

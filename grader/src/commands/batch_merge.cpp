@@ -5,6 +5,7 @@
 #include "reports/gradebook.h"
 #include "reports/submission_time.h"
 #include "similarity/class_similarity.h"
+#include "similarity/side_by_side.h"
 
 #include "pathlab/support/input_error.h"
 
@@ -87,7 +88,9 @@ int mergeBatches(const Arguments& a) {
               [](const GradebookEntry& x, const GradebookEntry& y) { return x.id < y.id; });
     std::vector<std::string> ids;
     for (const GradebookEntry& e : all) ids.push_back(e.id);
-    writeGradebook(a.out, all, now, similarSubmissions(a.out, ids));
+    const std::vector<SimilarLabs> similar = similarSubmissions(a.out, ids);
+    writeGradebook(a.out, all, now, similar);
+    writeSideBySidePages(a.out, similarClusters(similar));
     std::printf("merged %zu submission(s) from %zu shard(s): %s/gradebook.csv\n", all.size(),
                 a.inputs.size(), a.out.c_str());
     return 0;

@@ -2,6 +2,7 @@
 
 #include "checks/check_kind.h"
 #include "reports/histogram_svg.h"
+#include "reports/similarity_clusters.h"
 #include "reports/page_style.h"
 #include "reports/reports.h"
 #include "reports/submission_time.h"
@@ -179,24 +180,26 @@ std::string histogram(const std::vector<GradebookEntry>& entries) {
     return histogramSvg(bins, "total score, % of the maximum");
 }
 
-/// The pairs of submissions whose files of a lab are alike: a hint to look, never a verdict.
+/// The pairs of submissions whose files of a lab are alike, grouped into clusters: a hint to
+/// look, never a verdict.
 std::string similarityTable(const std::optional<std::vector<SimilarLabs>>& pairs) {
     if (!pairs) return "<p>Compared once every submission is graded.</p>\n";
-    const std::vector<SimilarLabs>& similar = *pairs;
-    if (similar.empty())
+    if (pairs->empty())
         return "<p>No two submissions' files of a lab are alike beyond the threshold.</p>\n";
-    std::ostringstream html;
-    html << "<p>Files of the same lab whose normalised token streams (names, numbers and layout "
-            "ignored, the stub's code left out) are alike: a hint to read them side by side, never "
-            "a "
-            "grade. \"reference solutions\" is the kit's own.</p>\n<table><tr><th>similarity</th>"
-            "<th>lab</th><th>submission</th><th>submission</th></tr>\n";
-    for (const SimilarLabs& pair : similar)
-        html << "<tr><td>" << number(std::round(100 * pair.similarity)) << "%</td><td>"
-             << escapeXml(pair.lab) << "</td><td>" << escapeXml(pair.first) << "</td><td>"
-             << escapeXml(pair.second) << "</td></tr>\n";
-    html << "</table>\n";
-    return html.str();
+    return "<p>Files of the same lab whose normalised token streams (names, numbers and layout "
+           "ignored, the stub's code left out) are alike, grouped: a cluster is the submissions "
+           "joined by a chain of alike files. A hint to read them side by side, never a grade. "
+           "\"reference solutions\" is the kit's own; similarity.csv has every pair.</p>\n" +
+           clustersHtml(similarClusters(*pairs));
+}
+
+/// similarity.csv: every pair, most alike first.
+std::string similarityCsv(const std::vector<SimilarLabs>& pairs) {
+    std::string text = "lab,first,second,similarity\n";
+    for (const SimilarLabs& p : pairs)
+        text += csvField(p.lab) + "," + csvField(p.first) + "," + csvField(p.second) + "," +
+                number(std::round(1000 * p.similarity) / 1000) + "\n";
+    return text;
 }
 
 /// Per lab, over the submissions graded under the grading now: the mean score, and each check's
@@ -283,7 +286,8 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
                         const std::vector<RegradeComparison>& regrades) {
     int graded = 0, pending = 0, stale = 0, late = 0, lowered = 0;
     double sum = 0;
-    std::map<std::pair<std::string, std::string>, int> diagnoses; // (lab, diagnosis) -> count
+    // (lab, diagnosis) -> the submissions it was made of
+    std::map<std::pair<std::string, std::string>, std::vector<std::string>> diagnoses;
     std::vector<GradebookEntry> entries; // those with a total out of today's maximum
     for (const GradebookEntry& e : allEntries) {
         pending += e.pending;
@@ -299,10 +303,10 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
         for (const auto& d : e.result.value("diagnoses", nlohmann::json::array()))
             if (d.value("check", "") == std::string(checkName(CheckKind::Correctness)) ||
                 d.value("diagnosis", "") == "too noisy" || d.value("diagnosis", "") == "too slow")
-                ++diagnoses[{d.value("lab", ""), d.value("diagnosis", "")}];
+                diagnoses[{d.value("lab", ""), d.value("diagnosis", "")}].push_back(e.id);
     }
     std::vector<std::pair<int, std::pair<std::string, std::string>>> common;
-    for (const auto& [key, count] : diagnoses) common.push_back({count, key});
+    for (const auto& [key, ids] : diagnoses) common.push_back({static_cast<int>(ids.size()), key});
     std::sort(common.begin(), common.end(), [](const auto& a, const auto& b) {
         return a.first != b.first ? a.first > b.first : a.second < b.second;
     });
@@ -327,10 +331,15 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
     html << "<h2>Scores</h2>\n"
          << histogram(entries) << "<h2>Labs</h2>\n"
          << labTable(entries) << "<h2>Most common diagnoses</h2>\n"
-         << "<table><tr><th>submissions</th><th>lab</th><th>diagnosis</th></tr>\n";
-    for (const auto& [count, key] : common)
+         << "<table><tr><th>submissions</th><th>lab</th><th>diagnosis</th><th>whose</th></tr>\n";
+    for (const auto& [count, key] : common) {
+        std::string whose;
+        for (const std::string& id : diagnoses[key])
+            whose += (whose.empty() ? "" : ", ") + ("<a href=\"submissions/" + escapeXml(id) +
+                                                    "/index.html\">" + escapeXml(id) + "</a>");
         html << "<tr><td>" << count << "</td><td>" << escapeXml(key.first) << "</td><td>"
-             << escapeXml(key.second) << "</td></tr>\n";
+             << escapeXml(key.second) << "</td><td>" << whose << "</td></tr>\n";
+    }
     html << "</table>\n<h2>Regrades</h2>\n"
          << regradesHtml(regrades) << "<h2>Similar submissions</h2>\n"
          << similarityTable(similar)
@@ -410,6 +419,7 @@ void writeGradebook(const std::string& out, const std::vector<GradebookEntry>& e
     writeFileAtomically(out + "/gradebook.csv", csv(entries, now));
     writeFileAtomically(out + "/lms.csv", lmsCsv(entries, now));
     writeFileAtomically(out + "/regrades.csv", regradesCsv(regrades));
+    if (similar) writeFileAtomically(out + "/similarity.csv", similarityCsv(*similar));
     writeFileAtomically(out + "/summary.html", summaryPage(entries, now, similar, regrades));
 }
 
