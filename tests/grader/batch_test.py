@@ -448,10 +448,12 @@ def main():
         check(any("not a regular file" in p for p in intake["problems"]) and "roulette.cpp" not in intake["taken"],
               "a symbolic link in a submission is not followed")
         summary = open(os.path.join(out, "summary.html")).read()
-        check("<svg" in summary and "forgot to divide by the pick probability 1/3</td><td>"
-              '<a href="submissions/forgot_the_third/index.html">forgot_the_third</a>' in summary
+        row = re.search(r"<tr>(?:(?!</tr>).)*forgot to divide by the pick probability 1/3(?:(?!</tr>).)*</tr>",
+                        summary)
+        check("<svg" in summary and row and 'href="submissions/forgot_the_third/index.html"' in row.group(0)
               and "<h2>Labs</h2>" in summary and "correctness passed" in summary,
-              "the summary page has the histogram, the labs' pass rates and the diagnoses with whom they apply to")
+              "the summary page has the histogram, the labs' pass rates and the diagnoses with whom they apply to"
+              + (f" (the diagnosis's row: {row.group(0)})" if row else " (no row with the diagnosis)"))
         if not args.class_only:
             bookkeeping(root, subs, out, rubric, expected, rows)
         listener.running = False

@@ -6,10 +6,15 @@
 #include "pathlab/render/lab_registry.h"
 #include "pathlab/support/whole_file.h"
 
+#include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace pathlab::grader {
 
