@@ -418,6 +418,7 @@ int runBatch(const Arguments& given, const Rubric& rubric, const std::string& sc
     const auto gradingsStart = std::chrono::steady_clock::now();
     const JobCounts counts =
         gradeInJobs(a.jobs, childBase, selection.todo, submissions, out, grading, log);
+    const double gradingSeconds = secondsSince(gradingsStart); // the similarity report apart
     const std::vector<SimilarLabs> similar = similarSubmissions(out, idsOf(submissions));
     writeGradebook(out, gradebookEntries(out, submissions, {}), grading, similar);
     writeSideBySidePages(out, similarClusters(similar));
@@ -430,10 +431,9 @@ int runBatch(const Arguments& given, const Rubric& rubric, const std::string& sc
     const double seconds = secondsSince(start);
     log << timestamp() << " batch finished in " << seconds << " s\n";
     if (estimated && counts.done > 0) {
-        const double gradings = secondsSince(gradingsStart);
         const std::string text = "measured: " + std::to_string(counts.done) +
-                                 " submission(s) graded in " + roughDuration(gradings) +
-                                 ", about " + roughDuration(gradings * a.jobs / counts.done) +
+                                 " submission(s) graded in " + roughDuration(gradingSeconds) +
+                                 ", about " + roughDuration(gradingSeconds * a.jobs / counts.done) +
                                  " per submission " + std::to_string(a.jobs) +
                                  " at a time (estimated " + roughDuration(estimated->seconds) + ")";
         std::fprintf(stderr, "%s\n", text.c_str());
