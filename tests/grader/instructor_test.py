@@ -14,6 +14,8 @@ promises:
   it was graded is graded again without --only, saying so;
 - a batch prints its time estimate before its gradings (per submission, the class, a Slurm
   array) and the measured figure at the end;
+- a late policy in the rubric (slip days, a penalty per day, a cap, an extension) gives each
+  student's late days, slip days used, penalty and final total, which lms.csv exports;
 - a regrade says, per student, the old and new total and each changed check with its reason (the
   terminal, regrades.csv, summary.html); a total it lowers on the same files is withheld from
   lms.csv until the rubric's regrades.lower_scores decides, and keep_higher keeps the higher one
@@ -83,9 +85,10 @@ def make_class(root):
     return subs
 
 
-def light_rubric(root, roulette_correctness=6, max_noise_ratio=1.5, moved_points=0, lower_scores=None):
+def light_rubric(root, roulette_correctness=6, max_noise_ratio=1.5, moved_points=0, lower_scores=None, late=None):
     """The kit's rubric, lighter; `moved_points` of lab 3's correctness moved to lab 2's (the
-    maximum kept); `lower_scores`, the rubric's regrades.lower_scores where given."""
+    maximum kept); `lower_scores`, the rubric's regrades.lower_scores, and `late`, its late
+    policy, where given."""
     rubric = json.load(open(os.path.join(args.source, "grader", "rubric.json")))
     rubric["correctness"].update({"seeds": 6, "width": 32, "height": 32, "tiles": 2, "scenes": ["furnace"]})
     rubric["noise"].update({"scene": "furnace", "max_ratio": max_noise_ratio})
@@ -95,6 +98,8 @@ def light_rubric(root, roulette_correctness=6, max_noise_ratio=1.5, moved_points
     rubric["points"]["uniform"]["correctness"] += moved_points
     if lower_scores:
         rubric["regrades"] = {"lower_scores": lower_scores}
+    if late:
+        rubric["late"] = late
     path = os.path.join(root, "rubric.json")
     json.dump(rubric, open(path, "w"), indent=1)
     return path
@@ -340,7 +345,29 @@ def main():
               and f"\nbob,bob,{RAISED_LAB_LOST}\n" in read(os.path.join(OUT, "lms.csv")),
               "regrades.lower_scores keep_higher: bob's higher total counts and is exported, nothing graded again")
 
-        # 10. The Gradescope zip holds a hidden scene that git does not track, and says so.
+        # 10. Late work: the rubric's late policy (10% a day after one slip day, at most 30%), the
+        # times the LMS recorded, and carol's 3-day extension. Nothing is graded again; the
+        # gradebook shows each student's late days, slip days, penalty and final total, which
+        # the LMS gets.
+        times = os.path.join(root, "times.csv")
+        write(times, "id,submitted_at\nalice,2026-12-01T12:00Z\nbob,2026-12-04T12:00Z\ncarol,2026-12-04T12:00Z\n")
+        write(os.path.join(root, "extensions.csv"), "id,days\ncarol,3\n")
+        light_rubric(root, roulette_correctness=16, max_noise_ratio=1.2, moved_points=2, lower_scores="keep_higher",
+                     late={"penalty_per_day": 0.1, "slip_days": 1, "max_penalty": 0.3, "extensions": "extensions.csv"})
+        run = batch("late policy", "--deadline", "2026-12-01T23:59Z", "--times", times)
+        rows = gradebook()
+        bob_final = f"{int(RAISED_LAB_LOST) * 0.8:g}"
+        lms = read(os.path.join(OUT, "lms.csv"))
+        check(run.returncode == 0 and graded_in_last_batch() == []
+              and [rows["bob"][c] for c in ("late", "late_days", "slip_days_used", "late_penalty", "final_total")]
+              == ["yes", "3", "1", "0.2", bob_final]
+              and rows["carol"]["late"] == "no" and rows["carol"]["final_total"] == RAISED
+              and rows["alice"]["late_days"] == "0" and f"\nbob,bob,{bob_final}\n" in lms
+              and f"\ncarol,carol,{RAISED}\n" in lms,
+              f"late policy: bob 3 days late, 1 slip day, 20% off ({RAISED_LAB_LOST} -> {bob_final}, as the LMS "
+              "gets it); carol on time by her extension; nothing graded again")
+
+        # 11. The Gradescope zip holds a hidden scene that git does not track, and says so.
         kit = os.path.join(root, "kit")
         subprocess.run(["git", "clone", "--quiet", "--no-hardlinks", args.source, kit], check=True)
         add_hidden_scene(os.path.join(kit, "grader", "hidden_scenes"))

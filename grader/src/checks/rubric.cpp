@@ -155,7 +155,9 @@ Rubric loadRubric(const std::string& path) {
         nlohmann::json j = nlohmann::json::parse(in);
         j.erase("about");
         r.lowerScores = readLowerScores(j, path);
+        r.late = readLatePolicy(j.contains("late") ? j.at("late") : nlohmann::json(), path);
         j.erase("regrades"); // which total the gradebook shows: no result goes stale for it
+        j.erase("late");
         hashRubric(j, r);
         readCorrectnessAndNoise(j, path, r);
         readSpeed(j, path, r);

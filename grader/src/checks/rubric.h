@@ -2,6 +2,7 @@
 /// The instructor-editable rubric (grader/rubric.json): points, thresholds, render sizes.
 
 #include "checks/check_kind.h"
+#include "checks/late_policy.h"
 #include "common/by_lab.h"
 
 #include "pathlab/render/lab_registry.h"
@@ -82,6 +83,8 @@ struct Rubric {
     /// What a regrade that lowers a total does (regrades.lower_scores); not in `hash`: it
     /// decides which total the gradebook shows, not how any lab is graded or scored.
     LowerScores lowerScores = LowerScores::Undecided;
+    /// What a late submission loses (the section "late"); not in `hash`, for the same reason.
+    LatePolicy late;
     /// A fingerprint of every setting (the file's JSON, reformatted, without "about"): each
     /// result records it, so that results graded under another rubric are never mixed.
     std::string hash;

@@ -73,6 +73,7 @@ GradingNow gradingNow(const Arguments& a, const Rubric& rubric, const std::strin
     now.scenesHash = scenesHash(rubric, a.scenesDir);
     now.maxScore = maxScoreNow(rubric, a.speed);
     now.lowerScores = rubric.lowerScores;
+    now.late = rubric.late;
     if (!deadline.empty()) {
         now.deadline = parseTime(deadline);
         if (!now.deadline)
@@ -236,7 +237,8 @@ void writeBatchJson(const std::string& out, const std::string& rubricFile,
                                        {"max_score", grading.maxScore},
                                        {"deadline", dates.deadline},
                                        {"times", dates.times},
-                                       {"lower_scores", lowerScoresName(grading.lowerScores)}}
+                                       {"lower_scores", lowerScoresName(grading.lowerScores)},
+                                       {"late", latePolicyJson(grading.late)}}
                                 .dump(1) +
                             "\n");
 }

@@ -30,6 +30,7 @@ GradingNow shardGrading(const std::string& shard, std::string& deadline, std::st
         now.rubricHash = j.at("rubric_hash");
         now.scenesHash = j.at("scenes_hash");
         now.maxScore = j.at("max_score");
+        now.late = latePolicyFromJson(j.value("late", nlohmann::json()));
         const std::string lower = j.value("lower_scores", "");
         now.lowerScores = lower == "replace"       ? LowerScores::Replace
                           : lower == "keep_higher" ? LowerScores::KeepHigher

@@ -44,11 +44,26 @@ std::pair<long long, std::string> submittedAt(const GradebookEntry& e, const Gra
     return {intake.value("submitted_at", 0LL), intake.value("time_source", "")};
 }
 
-/// "yes", "no", or "" where there is no deadline or no time.
-std::string lateness(const GradebookEntry& e, const GradingNow& now) {
+/// What the entry's time costs it under the late policy; none without a deadline or a time.
+std::optional<Lateness> latenessNow(const GradebookEntry& e, const GradingNow& now) {
     const long long at = submittedAt(e, now).first;
-    if (!now.deadline || at == 0) return "";
-    return at > *now.deadline ? "yes" : "no";
+    if (!now.deadline || at == 0) return std::nullopt;
+    return latenessOf(now.late, e.id, at, *now.deadline);
+}
+
+/// "yes", "no", or "" where there is no deadline or no time; an extension moves the deadline.
+std::string lateness(const GradebookEntry& e, const GradingNow& now) {
+    const std::optional<Lateness> late = latenessNow(e, now);
+    if (!late) return "";
+    return late->daysLate > 0 ? "yes" : "no";
+}
+
+/// The total after the late policy's penalty: what the LMS gets.
+std::optional<double> finalTotal(const GradebookEntry& e, const GradingNow& now) {
+    const std::optional<double> total = countedTotal(e, now);
+    const std::optional<Lateness> late = latenessNow(e, now);
+    if (!total || !late || !now.late.given) return total;
+    return std::round(100 * *total * (1 - late->penalty)) / 100;
 }
 
 /// A regrade lowered the total, and the rubric has not said whether that counts: the LMS keeps
@@ -106,7 +121,7 @@ std::string csv(const std::vector<GradebookEntry>& entries, const GradingNow& no
         for (CheckKind check : AllChecks)
             text += "," + std::string(labName(lab)) + "_" + std::string(checkName(check));
     text += ",missing_labs,submitted_at,time_source,late,commit,files_hash,rubric_hash,attempt,"
-            "graded_total\n";
+            "graded_total,late_days,slip_days_used,late_penalty,final_total\n";
     for (const GradebookEntry& e : entries) {
         const std::optional<double> total = countedTotal(e, now);
         const nlohmann::json labs =
@@ -150,7 +165,13 @@ std::string csv(const std::vector<GradebookEntry>& entries, const GradingNow& no
                 csvField(intake.value("files_hash", "")) + "," +
                 csvField(under.value("rubric_hash", "")) + "," +
                 (e.result.is_null() ? "" : number(e.result.value("attempt", 1))) + "," +
-                (total ? number(e.result.value("score", 0.0)) : "") + "\n";
+                (total ? number(e.result.value("score", 0.0)) : "");
+        const std::optional<Lateness> late = latenessNow(e, now);
+        const std::optional<double> finalScore = finalTotal(e, now);
+        text += "," + (late ? number(late->daysLate) : "") + "," +
+                (late && now.late.given ? number(late->slipDaysUsed) : "") + "," +
+                (late && now.late.given ? number(late->penalty) : "") + "," +
+                (finalScore ? number(*finalScore) : "") + "\n";
     }
     return text;
 }
@@ -162,7 +183,7 @@ std::string lmsCsv(const std::vector<GradebookEntry>& entries, const GradingNow&
     // A total the grading now does not give (pending: being graded again; stale: graded under
     // another rubric or scenes) is withheld: the import keeps what it had for that student.
     for (const GradebookEntry& e : entries)
-        if (const std::optional<double> total = countedTotal(e, now);
+        if (const std::optional<double> total = finalTotal(e, now);
             total && !e.pending && staleness(e.result, now).empty() && !loweredUndecided(e, now))
             text += csvField(e.id) + "," + csvField(e.id) + "," + number(*total) + "\n";
     return text;

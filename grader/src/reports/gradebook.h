@@ -37,6 +37,7 @@ struct GradingNow {
     std::optional<long long> deadline;      ///< --deadline, seconds since 1970
     std::map<std::string, long long> times; ///< --times: id -> submitted at, over what results say
     LowerScores lowerScores = LowerScores::Undecided; ///< the rubric's regrades.lower_scores
+    LatePolicy late;                                  ///< the rubric's late policy
 };
 
 /// Two submissions' files of one lab that are alike (similarity.h), for the summary.
