@@ -10,7 +10,8 @@ The kit's files are those git tracks, as they are in the working tree (so a stra
 instructor's never ships); in a kit without git, every file but the build folders. The student
 release is a copy of them minus STUDENT_EXCLUDED, under one top folder `pathlab/`, with no
 history, and with README-student.md as its README.md. With --rubric, the release carries the
-instructor's rubric as its grader/rubric.json, the stored references measured again (by BUILD's
+instructor's rubric as its grader/rubric.json (without its late policy and regrade setting,
+which only a batch's gradebook uses), the stored references measured again (by BUILD's
 grader and the reference solutions) for each public scene whose stored one does not fit that
 rubric, and grader/release.json saying which rubric it is. The autograder holds every file,
 solutions included, with scripts/gradescope/setup.sh and run_autograder at the root, as
@@ -136,6 +137,7 @@ def normalised(info):
 RUBRIC = "grader/rubric.json"
 REFERENCES = "grader/references/"
 RELEASE_JSON = "grader/release.json"
+GRADEBOOK_ONLY = ("late", "regrades")
 
 
 class PackagingError(Exception):
@@ -165,12 +167,22 @@ def instructor_rubric(rubric, build, scratch):
                                "--references", references], cwd=build)
     if measured.returncode != 0:
         raise PackagingError(f"measuring the references for {rubric} failed (exit {measured.returncode})")
+    # The sections that only decide a batch's gradebook (a late policy, whose extensions file
+    # names students; what a regrade may lower) stay with the instructor: both are outside the
+    # rubric's hash, so the release's rubric keeps the hash the grader gave the instructor's.
+    packed = json.load(open(rubric))
+    for section in GRADEBOOK_ONLY:
+        packed.pop(section, None)
+    packed_rubric = os.path.join(scratch, "rubric.json")
+    with open(packed_rubric, "w") as f:
+        json.dump(packed, f, indent=1)
+        f.write("\n")
     release = os.path.join(scratch, "release.json")
     with open(release, "w") as f:
         json.dump({"rubric": os.path.basename(rubric), "rubric_hash": found.group(1),
                    "packaged_at": time.strftime("%Y-%m-%dT%H:%MZ", time.gmtime())}, f, indent=1)
         f.write("\n")
-    files = {RUBRIC: os.path.abspath(rubric), RELEASE_JSON: release}
+    files = {RUBRIC: packed_rubric, RELEASE_JSON: release}
     for name in sorted(os.listdir(references)):
         files[REFERENCES + name] = os.path.join(references, name)
     return files, found.group(1)

@@ -48,12 +48,14 @@ TEST_CASE("a batch's estimate rests on the median of the folder's gradings, else
     writeResult(out / "submissions" / "alice", 30, "graded", true);
     writeResult(out / "submissions" / "bob", 50, "graded", true);
     writeResult(out / "submissions" / "carol", 40, "graded", true);
-    writeResult(out / "submissions" / "dave", 0, "re-scored from attempt 1", true); // took none
+    writeResult(out / "submissions" / "dave", 0, "re-scored from attempt 1", true);   // took none
+    writeResult(out / "submissions" / "dave" / "attempts" / "1", 60, "graded", true); // judged
     writeResult(out / "submissions" / "erin", 500, "graded", false); // not timed: not alike
     const auto earlier = measuredGradingTime(out.string(), true);
     REQUIRE(earlier);
-    CHECK(earlier->seconds == 40);
-    CHECK(earlier->from == "the median of 3 earlier grading(s) in this folder");
+    CHECK(earlier->seconds == 50); // of 30, 40, 50 and dave's attempt, 60
+    CHECK(earlier->from ==
+          "the median of 4 earlier grading(s) in this folder, earlier attempts included");
     CHECK(earlier->lowerBoundBecause.empty());
 }
 
@@ -73,6 +75,7 @@ TEST_CASE("a batch's estimate: per submission, the class here, and a Slurm array
     CHECK(batchEstimate({20, "the canary's grading of the solutions", "the canary grades alone"}, 4,
                         1, {})
               .find("the canary grades alone, so read these as lower bounds") != std::string::npos);
+    CHECK(batchSeconds(time, 200, 2) == 3000);
     CHECK(roughDuration(45) == "45 s");
     CHECK(roughDuration(3000) == "50 min");
     CHECK(roughDuration(2 * 3600 + 20 * 60) == "2 h 20 min");

@@ -220,8 +220,8 @@ def main():
         estimate = re.search(r"estimate: about (\d+) s per submission here \(the median of 3 earlier grading\(s\)", run.stderr)
         check(estimate and "estimate: 3 submission(s) here, 2 at a time: about " in run.stderr
               and "estimate: on a Slurm array of 10 node(s)" in run.stderr
-              and re.search(r"measured: 3 submission\(s\) graded in .*, about .* per submission 2 at a time "
-                            r"\(estimated \d+ s\)", run.stderr),
+              and re.search(r"measured: 3 submission\(s\) graded in [^,]+, 2 at a time \(estimated [^)]+\)",
+                            run.stderr),
               "before its gradings, a batch prints its time estimate from the earlier gradings (here, the "
               "class, a Slurm array), and at the end the measured figure beside it")
         rows = gradebook()

@@ -8,8 +8,10 @@ Packages the kit with an instructor's rubric (the kit's, its points changed and 
 checked on the furnace alone at 32x32 pixels, so that the furnace's stored reference no longer
 fits and is measured again) by scripts/package_kit.py, as the make target does, with BUILD's grader,
 and checks, each printing PASS/FAIL:
-- the release's grader/rubric.json is the instructor's file, byte for byte, and its
-  grader/release.json names it with the hash the grader gives it;
+- the release's grader/rubric.json is the instructor's, but the sections only a batch's
+  gradebook uses (its late policy, whose extensions file names students, and its regrade
+  setting; both outside the rubric's hash), and its grader/release.json names it with the hash
+  the grader gives the instructor's file;
 - the furnace's reference was measured again, at the rubric's size, and the references the
   rubric still fits are the kit's, unchanged;
 - `grader rubric` on the release's rubric, beside its release.json, says which rubric the release
@@ -50,6 +52,11 @@ def main():
         rubric["correctness"].update({"width": 32, "height": 32, "tiles": 2, "seeds": 4,
                                       "scenes": ["furnace"]})
         rubric["noise"]["scene"] = rubric["speed"]["scene"] = "furnace"
+        # The gradebook's own sections, the extensions file naming students: not for the release.
+        rubric["late"] = {"penalty_per_day": 0.1, "extensions": "extensions.csv"}
+        rubric["regrades"] = {"lower_scores": "keep_higher"}
+        with open(os.path.join(root, "extensions.csv"), "w") as f:
+            f.write("id,days\nerin,2\n")
         course = os.path.join(root, "course-rubric.json")
         json.dump(rubric, open(course, "w"), indent=1)
         out = os.path.join(root, "release.tar.gz")
@@ -65,9 +72,13 @@ def main():
         grader_folder = os.path.join(unpacked, "pathlab", "grader")
         release = json.load(open(os.path.join(grader_folder, "release.json")))
         described = subprocess.run([GRADER, "rubric", "--rubric", course], capture_output=True, text=True).stdout
-        check(filecmp.cmp(os.path.join(grader_folder, "rubric.json"), course, shallow=False)
-              and release["rubric"] == "course-rubric.json" and f"(hash {release['rubric_hash']})" in described,
-              f"the release's rubric is the instructor's file, and release.json names it and its hash ({release})")
+        packed = json.load(open(os.path.join(grader_folder, "rubric.json")))
+        expected = {k: v for k, v in rubric.items() if k not in ("late", "regrades")}
+        check(packed == expected and release["rubric"] == "course-rubric.json"
+              and f"(hash {release['rubric_hash']})" in described
+              and not os.path.exists(os.path.join(grader_folder, "extensions.csv")),
+              "the release's rubric is the instructor's, but its late policy and regrade setting (the gradebook's, "
+              f"naming students), and release.json names it and its hash ({release})")
         furnace = json.load(open(os.path.join(grader_folder, "references", "furnace.json")))
         kit_box = os.path.join(KIT, "grader", "references", "cornell_box_VI2_Specular.json")
         check(furnace["width"] == 32 and filecmp.cmp(os.path.join(grader_folder, "references",

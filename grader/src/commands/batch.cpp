@@ -433,11 +433,11 @@ int runBatch(const Arguments& given, const Rubric& rubric, const std::string& sc
     const double seconds = secondsSince(start);
     log << timestamp() << " batch finished in " << seconds << " s\n";
     if (estimated && counts.done > 0) {
-        const std::string text = "measured: " + std::to_string(counts.done) +
-                                 " submission(s) graded in " + roughDuration(gradingSeconds) +
-                                 ", about " + roughDuration(gradingSeconds * a.jobs / counts.done) +
-                                 " per submission " + std::to_string(a.jobs) +
-                                 " at a time (estimated " + roughDuration(estimated->seconds) + ")";
+        const std::string text =
+            "measured: " + std::to_string(counts.done) + " submission(s) graded in " +
+            roughDuration(gradingSeconds) + ", " + std::to_string(a.jobs) +
+            " at a time (estimated " +
+            roughDuration(batchSeconds(*estimated, selection.todo.size(), a.jobs)) + ")";
         std::fprintf(stderr, "%s\n", text.c_str());
         log << timestamp() << " " << text << "\n";
     }

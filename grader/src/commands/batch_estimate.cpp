@@ -38,16 +38,23 @@ bool renderedAlike(const nlohmann::json& result, bool speed) {
 std::optional<GradingTime> measuredGradingTime(const std::string& out, bool speed) {
     std::vector<double> seconds;
     std::error_code none;
+    // Each submission's gradings that rendered, its earlier attempts' included: after a
+    // re-score, the grading now took no time, and the one it judged again is an attempt.
     for (const auto& entry : fs::directory_iterator(fs::path(out) / "submissions", none)) {
-        const nlohmann::json result = readJson(entry.path() / "result.json");
-        if (!result.is_null() && renderedAlike(result, speed))
-            seconds.push_back(result.value("seconds", 0.0));
+        std::vector<fs::path> gradings = {entry.path() / "result.json"};
+        for (const auto& attempt : fs::directory_iterator(entry.path() / "attempts", none))
+            gradings.push_back(attempt.path() / "result.json");
+        for (const fs::path& path : gradings) {
+            const nlohmann::json result = readJson(path);
+            if (!result.is_null() && renderedAlike(result, speed))
+                seconds.push_back(result.value("seconds", 0.0));
+        }
     }
     if (!seconds.empty()) {
         std::sort(seconds.begin(), seconds.end());
         return GradingTime{seconds[seconds.size() / 2],
                            "the median of " + std::to_string(seconds.size()) +
-                               " earlier grading(s) in this folder",
+                               " earlier grading(s) in this folder, earlier attempts included",
                            ""};
     }
     const nlohmann::json canary = readJson(fs::path(out) / ".canary" / "result.json");
@@ -62,6 +69,10 @@ std::string roughDuration(double seconds) {
     if (seconds < 90) return std::to_string(std::lround(seconds)) + " s";
     if (minutes < 90) return std::to_string(minutes) + " min";
     return std::to_string(minutes / 60) + " h " + std::to_string(minutes % 60) + " min";
+}
+
+double batchSeconds(const GradingTime& time, size_t count, int jobs) {
+    return std::ceil(static_cast<double>(count) / std::max(1, jobs)) * time.seconds;
 }
 
 std::string batchEstimate(const GradingTime& time, size_t count, int jobs,

@@ -17,8 +17,9 @@ struct GradingTime {
     std::string lowerBoundBecause;
 };
 
-/// From OUT's gradings (graded, not re-scored; timed or not as this batch times, `speed`), the
-/// median; where there is none, the canary's grading (OUT/.canary); none before either exists.
+/// From OUT's gradings and their earlier attempts (those that rendered, not re-scores; timed or
+/// not as this batch times, `speed`), the median; where there is none, the canary's grading
+/// (OUT/.canary); none before either exists.
 std::optional<GradingTime> measuredGradingTime(const std::string& out, bool speed);
 
 /// What a Slurm array would be given: nodes, and the cores each task asks for (PATHLAB_CPUS).
@@ -31,6 +32,9 @@ struct SlurmArray {
 /// (each task grading cpus - 1 at a time, as grade-shard.sbatch does, and measuring its own
 /// references and canary first), on nodes taken to be as fast as this machine.
 std::string batchEstimate(const GradingTime& time, size_t count, int jobs, const SlurmArray& array);
+
+/// The wall-clock seconds `count` gradings of `time` take `jobs` at a time: the class estimate.
+double batchSeconds(const GradingTime& time, size_t count, int jobs);
 
 /// "3 min", "1 h 20 min": a duration as an instructor plans with it.
 std::string roughDuration(double seconds);
