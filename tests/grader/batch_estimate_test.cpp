@@ -1,6 +1,7 @@
 // A batch's time estimate (commands/batch_estimate.h): the figure it rests on, read from the
 // gradings a batch folder holds, and the arithmetic of the lines it prints.
 #include "catch.h"
+#include "test_support.h"
 
 #include "commands/batch_estimate.h"
 
@@ -8,18 +9,11 @@
 
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 using namespace pathlab::grader;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Scratch {
-    fs::path path = fs::temp_directory_path() / ("pathlab-estimate-" + std::to_string(::getpid()));
-    Scratch() { fs::create_directories(path); }
-    ~Scratch() { fs::remove_all(path); }
-};
 
 void writeResult(const fs::path& folder, double seconds, const std::string& how, bool speed) {
     fs::create_directories(folder);
@@ -34,7 +28,7 @@ void writeResult(const fs::path& folder, double seconds, const std::string& how,
 
 TEST_CASE("a batch's estimate rests on the median of the folder's gradings, else the canary's",
           "[grader]") {
-    Scratch scratch;
+    const pathlab::test::ScratchFolder scratch("estimate");
     const fs::path out = scratch.path;
     CHECK_FALSE(measuredGradingTime(out.string(), true)); // nothing measured yet
 

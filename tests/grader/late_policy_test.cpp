@@ -1,6 +1,7 @@
 // The rubric's late policy (checks/late_policy.h): days late rounded up, slip days, the penalty and
 // its cap, extensions; its words for a wrong setting; and the gradebook's and the LMS's totals.
 #include "catch.h"
+#include "test_support.h"
 
 #include "checks/late_policy.h"
 #include "checks/rubric.h"
@@ -8,30 +9,17 @@
 #include "reports/submission_time.h"
 
 #include "pathlab/support/input_error.h"
+#include "pathlab/support/whole_file.h"
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 using namespace pathlab;
 using namespace pathlab::grader;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Scratch {
-    fs::path path = fs::temp_directory_path() / ("pathlab-late-" + std::to_string(::getpid()));
-    Scratch() { fs::create_directories(path); }
-    ~Scratch() { fs::remove_all(path); }
-};
-
-std::string readText(const fs::path& path) {
-    std::ifstream in(path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 constexpr long long kHour = 3600, kDay = 24 * kHour;
 
@@ -70,7 +58,7 @@ TEST_CASE("late days round up; slip days go first; the penalty per day stops at 
 
 TEST_CASE("the late policy's settings and its extensions file are checked, named when wrong",
           "[grader]") {
-    Scratch scratch;
+    const test::ScratchFolder scratch("late");
     const std::string rubric = (scratch.path / "rubric.json").string();
     std::ofstream(scratch.path / "extensions.csv") << "id,days\nerin,3\nfrank,2\n";
     const LatePolicy policy =
@@ -87,7 +75,7 @@ TEST_CASE("the late policy's settings and its extensions file are checked, named
     CHECK(errorOf({{"penalty_per_day", 10}}, rubric).find("between 0 and 1") != std::string::npos);
 
     // In the rubric, outside its hash: a policy changed grades and re-scores nobody.
-    nlohmann::json kit = nlohmann::json::parse(readText(PATHLAB_GRADER_DIR "/rubric.json"));
+    nlohmann::json kit = nlohmann::json::parse(readFile(PATHLAB_GRADER_DIR "/rubric.json"));
     std::ofstream(rubric) << kit.dump();
     const std::string plain = loadRubric(rubric).hash;
     kit["late"] = {{"penalty_per_day", 0.1}, {"slip_days", 2}};
@@ -100,7 +88,7 @@ TEST_CASE("the late policy's settings and its extensions file are checked, named
 TEST_CASE("the gradebook shows the raw total, the late days and slip days used, the penalty and "
           "the final total, which the LMS gets",
           "[grader]") {
-    Scratch scratch;
+    const test::ScratchFolder scratch("late");
     GradingNow now;
     now.rubricHash = "rubric";
     now.scenesHash = "scenes";
@@ -122,14 +110,14 @@ TEST_CASE("the gradebook shows the raw total, the late days and slip days used, 
         {"bo", "", result("2026-12-02T20:00Z"), "", false, std::nullopt},  // 1 day: a slip day
         {"cy", "", result("2026-12-04T20:00Z"), "", false, std::nullopt}}; // 3 days: 2 penalised
     writeGradebook(scratch.path.string(), entries, now, std::nullopt);
-    const std::string csv = readText(scratch.path / "gradebook.csv");
+    const std::string csv = readFile((scratch.path / "gradebook.csv").string());
     INFO(csv);
     CHECK(csv.find(",graded_total,late_days,slip_days_used,late_penalty,final_total\n") !=
           std::string::npos);
     CHECK(csv.find(",40,0,0,0,40\n") != std::string::npos);
     CHECK(csv.find(",40,1,1,0,40\n") != std::string::npos);
     CHECK(csv.find(",40,3,1,0.2,32\n") != std::string::npos);
-    const std::string lms = readText(scratch.path / "lms.csv");
+    const std::string lms = readFile((scratch.path / "lms.csv").string());
     CHECK(lms.find("cy,cy,32\n") != std::string::npos);
     CHECK(lms.find("bo,bo,40\n") != std::string::npos);
 }

@@ -2,6 +2,7 @@
 // regrade lowered (the rubric's regrades.lower_scores), on result.json files written here as a
 // batch writes them: the grading now in submissions/ID/, the ones before in attempts/N/.
 #include "catch.h"
+#include "test_support.h"
 
 #include "checks/rubric.h"
 #include "reports/gradebook.h"
@@ -9,31 +10,19 @@
 
 #include "pathlab/support/input_error.h"
 
+#include "pathlab/support/whole_file.h"
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 using namespace pathlab;
 using namespace pathlab::grader;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Scratch {
-    fs::path path = fs::temp_directory_path() / ("pathlab-regrades-" + std::to_string(::getpid()));
-    Scratch() { fs::create_directories(path); }
-    ~Scratch() { fs::remove_all(path); }
-};
-
-std::string readText(const fs::path& path) {
-    std::ifstream in(path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 /// A result.json of one lab, uniform, with its correctness and noise points.
 nlohmann::json result(int attempt, double correctness, double noise, const std::string& rubric,
@@ -100,7 +89,7 @@ std::vector<GradebookEntry> entries(const fs::path& out) {
 
 /// gradebook.csv's rows by id, each a map from column to field (no field here is quoted).
 std::map<std::string, std::map<std::string, std::string>> gradebookRows(const fs::path& out) {
-    std::istringstream csv(readText(out / "gradebook.csv"));
+    std::istringstream csv(readFile((out / "gradebook.csv").string()));
     std::string line, field;
     std::getline(csv, line);
     std::vector<std::string> columns;
@@ -129,12 +118,12 @@ std::map<std::string, std::map<std::string, std::string>> gradebookRows(const fs
 
 TEST_CASE("a regrade is compared with the attempt before it, check by check, with its reason",
           "[grader]") {
-    Scratch scratch;
+    const test::ScratchFolder scratch("regrades");
     gradeClass(scratch.path);
     const fs::path submissions = scratch.path / "submissions";
     const auto alice = compareWithAttemptBefore(
         "alice", (submissions / "alice").string(),
-        nlohmann::json::parse(readText(submissions / "alice" / "result.json")));
+        nlohmann::json::parse(readFile((submissions / "alice" / "result.json").string())));
     REQUIRE(alice);
     CHECK(alice->fromAttempt == 1);
     CHECK(alice->toAttempt == 2);
@@ -153,19 +142,19 @@ TEST_CASE("a regrade is compared with the attempt before it, check by check, wit
 
     const auto carol = compareWithAttemptBefore(
         "carol", (submissions / "carol").string(),
-        nlohmann::json::parse(readText(submissions / "carol" / "result.json")));
+        nlohmann::json::parse(readFile((submissions / "carol" / "result.json").string())));
     REQUIRE(carol);
     CHECK(carol->resubmitted);
     CHECK(carol->reasons == std::vector<std::string>{"the submission's files changed"});
     CHECK_FALSE(compareWithAttemptBefore(
         "dave", (submissions / "dave").string(),
-        nlohmann::json::parse(readText(submissions / "dave" / "result.json"))));
+        nlohmann::json::parse(readFile((submissions / "dave" / "result.json").string()))));
 
     // The same files graded again with nothing changed: said as asked for, not as a cause.
     gradings(scratch.path, "erin", {result(1, 6, 4, "rubric-now"), result(2, 6, 4, "rubric-now")});
     const auto erin = compareWithAttemptBefore(
         "erin", (submissions / "erin").string(),
-        nlohmann::json::parse(readText(submissions / "erin" / "result.json")));
+        nlohmann::json::parse(readFile((submissions / "erin" / "result.json").string())));
     REQUIRE(erin);
     CHECK(erin->changes.empty());
     CHECK(erin->reasons[0].find("graded again as asked") == 0);
@@ -173,7 +162,7 @@ TEST_CASE("a regrade is compared with the attempt before it, check by check, wit
 
 TEST_CASE("a lowered total waits for the rubric's choice; replace and keep_higher decide it",
           "[grader]") {
-    Scratch scratch;
+    const test::ScratchFolder scratch("regrades");
     gradeClass(scratch.path);
     const std::string out = scratch.path.string();
     const std::vector<GradebookEntry> all = entries(scratch.path);
@@ -191,11 +180,11 @@ TEST_CASE("a lowered total waits for the rubric's choice; replace and keep_highe
         CHECK(rows["alice"]["graded_total"] == "6");
         CHECK(rows["alice"]["status"].find("a regrade lowered the total from 10 (attempt 1) to 6: "
                                            "withheld from lms.csv") != std::string::npos);
-        const std::string lms = readText(scratch.path / "lms.csv");
+        const std::string lms = readFile((scratch.path / "lms.csv").string());
         CHECK(lms.find("alice") == std::string::npos);
         CHECK(lms.find("bob,bob,10\n") != std::string::npos);
         CHECK(lms.find("carol,carol,6\n") != std::string::npos);
-        const std::string summary = readText(scratch.path / "summary.html");
+        const std::string summary = readFile((scratch.path / "summary.html").string());
         CHECK(summary.find("1 total(s) lowered by a regrade") != std::string::npos);
         // The class page's labs: uniform's mean over the four (6, 10, 6, 10) and its pass rates.
         CHECK(summary.find("<tr><td>uniform</td><td>8 / 10</td><td>100% (4 of 4)</td><td>50% (2 "
@@ -204,7 +193,8 @@ TEST_CASE("a lowered total waits for the rubric's choice; replace and keep_highe
     SECTION("replace: the lower total counts") {
         writeGradebook(out, all, gradingNow(LowerScores::Replace), std::nullopt);
         CHECK(gradebookRows(scratch.path)["alice"]["total"] == "6");
-        CHECK(readText(scratch.path / "lms.csv").find("alice,alice,6\n") != std::string::npos);
+        CHECK(readFile((scratch.path / "lms.csv").string()).find("alice,alice,6\n") !=
+              std::string::npos);
     }
     SECTION("keep_higher: the higher earlier total of the same files counts") {
         writeGradebook(out, all, gradingNow(LowerScores::KeepHigher), std::nullopt);
@@ -213,10 +203,11 @@ TEST_CASE("a lowered total waits for the rubric's choice; replace and keep_highe
         CHECK(rows["alice"]["graded_total"] == "6");
         CHECK(rows["alice"]["status"].find("kept the total 10 (attempt 1)") != std::string::npos);
         CHECK(rows["carol"]["total"] == "6"); // a resubmission's own total, lower or not
-        CHECK(readText(scratch.path / "lms.csv").find("alice,alice,10\n") != std::string::npos);
+        CHECK(readFile((scratch.path / "lms.csv").string()).find("alice,alice,10\n") !=
+              std::string::npos);
     }
     // regrades.csv: a total row and a row per changed check, for every regraded submission.
-    const std::string regrades = readText(scratch.path / "regrades.csv");
+    const std::string regrades = readFile((scratch.path / "regrades.csv").string());
     CHECK(regrades.find("id,from_attempt,to_attempt,lab,check,before,after,max_before,max_after,"
                         "reason\n") == 0);
     CHECK(regrades.find("alice,1,2,total,total,10,6,10,10,the rubric's points or thresholds "
@@ -231,8 +222,8 @@ TEST_CASE("a lowered total waits for the rubric's choice; replace and keep_highe
 
 TEST_CASE("the rubric's regrades.lower_scores is read, named when wrong, and stales nothing",
           "[grader]") {
-    Scratch scratch;
-    nlohmann::json kit = nlohmann::json::parse(readText(PATHLAB_GRADER_DIR "/rubric.json"));
+    const test::ScratchFolder scratch("regrades");
+    nlohmann::json kit = nlohmann::json::parse(readFile(PATHLAB_GRADER_DIR "/rubric.json"));
     const std::string path = (scratch.path / "rubric.json").string();
     std::ofstream(path) << kit.dump();
     const Rubric plain = loadRubric(path);

@@ -5,6 +5,7 @@
 
 #include "process/shell_command.h"
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,15 @@ std::string modelPath(const std::string& name);
 
 /// A fresh empty folder under the system's temporary folder, for files a test writes.
 std::string temporaryFolder(const std::string& name);
+
+/// A temporaryFolder removed, with what the test wrote into it, when the test ends.
+struct ScratchFolder {
+    std::filesystem::path path;
+    explicit ScratchFolder(const std::string& name) : path(temporaryFolder(name)) {}
+    ~ScratchFolder() { std::filesystem::remove_all(path); }
+    ScratchFolder(const ScratchFolder&) = delete;
+    ScratchFolder& operator=(const ScratchFolder&) = delete;
+};
 
 /// Renders in-process with viewer-style arguments, e.g. {"-c", modelPath(...), "--spp", "4"}.
 /// The render's watchdog (pathlab/render/render_watchdog.h) waits its default, or the seconds that

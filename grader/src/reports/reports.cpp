@@ -18,6 +18,13 @@
 
 namespace pathlab::grader {
 
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+}
+
 std::string escapeXml(const std::string& text) {
     std::string out;
     for (char c : text) {

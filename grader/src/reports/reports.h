@@ -39,6 +39,9 @@ struct GradeReport {
 /// `text` with & < > " escaped, for XML and HTML.
 std::string escapeXml(const std::string& text);
 
+/// `text` as a CSV field: quoted, its quotes doubled, where it holds a comma, quote or newline.
+std::string csvField(const std::string& text);
+
 /// Where a report puts the hidden scenes' verdicts.
 enum class HiddenVerdicts {
     Shown,          ///< under their check (the terminal, the student's feedback)
