@@ -58,10 +58,11 @@ test-labs: configure
 # What `make grade` runs: the grader and the viewer around labs/, which renders for it.
 GRADER_TARGETS = grader viewer
 
-# Grade the labs in labs/ (all four; LAB=uniform for one).
+# Grade the labs in labs/ (all of them; LAB=uniform for one). VARIANT=DIR grades on your own
+# variant's scenes too, from the folder your instructor sent you (grader --variant).
 grade: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target $(GRADER_TARGETS)
-	cd $(BUILD) && ./grader $(if $(LAB),--lab $(LAB))
+	cd $(BUILD) && ./grader $(if $(LAB),--lab $(LAB)) $(if $(VARIANT),--variant $(abspath $(VARIANT)))
 
 # Grade them and write lab-report.md: your notebook's figures (frame rate, noise, efficiency) and
 # the ratios between labs, beside the reference solutions', and the plots of make sweep (below).

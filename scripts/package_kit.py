@@ -11,7 +11,8 @@ instructor's never ships); in a kit without git, every file but the build folder
 release is a copy of them minus STUDENT_EXCLUDED, under one top folder `pathlab/`, with no
 history, and with README-student.md as its README.md. With --rubric, the release carries the
 instructor's rubric as its grader/rubric.json (without its late policy and regrade setting,
-which only a batch's gradebook uses), the stored references measured again (by BUILD's
+which only a batch's gradebook uses, and without the name of its per-student variants' class
+secret, which must not be a file the release would carry), the stored references measured again (by BUILD's
 grader and the reference solutions) for each public scene whose stored one does not fit that
 rubric, and grader/release.json saying which rubric it is. The autograder holds every file,
 solutions included, with scripts/gradescope/setup.sh and run_autograder at the root, as
@@ -173,6 +174,12 @@ def instructor_rubric(rubric, build, scratch):
     packed = json.load(open(rubric))
     for section in GRADEBOOK_ONLY:
         packed.pop(section, None)
+    # Per-student variants: the class secret's file stays with the instructor, and so does its
+    # name (outside the hash too); a student grades on their own variant folder instead.
+    secret = None
+    if isinstance(packed.get("variants"), dict) and "secret_file" in packed["variants"]:
+        secret = os.path.realpath(os.path.join(os.path.dirname(rubric),
+                                               packed["variants"].pop("secret_file")))
     packed_rubric = os.path.join(scratch, "rubric.json")
     with open(packed_rubric, "w") as f:
         json.dump(packed, f, indent=1)
@@ -185,15 +192,20 @@ def instructor_rubric(rubric, build, scratch):
     files = {RUBRIC: packed_rubric, RELEASE_JSON: release}
     for name in sorted(os.listdir(references)):
         files[REFERENCES + name] = os.path.join(references, name)
-    return files, found.group(1)
+    return files, found.group(1), secret
 
 
 def student_release(out, root=KIT, rubric=None, build=None):
     files = {name: os.path.join(root, f) for name, f in student_files(root).items()}
     with tempfile.TemporaryDirectory() as scratch:
         if rubric:
-            instructors, rubric_hash = instructor_rubric(rubric, build, scratch)
+            instructors, rubric_hash, secret = instructor_rubric(rubric, build, scratch)
             files = {n: f for n, f in files.items() if n != RUBRIC and not n.startswith(REFERENCES)}
+            shipped = [n for n, f in files.items() if secret and os.path.realpath(f) == secret]
+            if shipped:
+                raise PackagingError(f"the class secret {secret} is a file of the kit ({shipped[0]}) "
+                                     "and would ship in the release: keep it outside the kit, or "
+                                     "out of git")
             files.update(instructors)
             files = dict(sorted(files.items()))
 

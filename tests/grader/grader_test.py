@@ -18,6 +18,7 @@ import json
 import os
 import subprocess
 import tempfile
+import time
 import xml.etree.ElementTree as ET
 
 from support import LABS, UNBIASED, arguments, check, finish, grader
@@ -165,7 +166,9 @@ def mutants(tmp, slow, timed=(True, False)):
         if target_name != "speed":
             extra.append("--no-speed")
         viewer = os.path.join(args.build, "mutants", m.get("mutant", name))
+        started = time.monotonic()
         run, report = grade(viewer, extra, tmp, name)
+        seconds = time.monotonic() - started
         checks = {c["name"]: c for c in report["labs"][0]["checks"]} if report else {}
         target = checks.get(target_name)
         text = json.dumps(target, ensure_ascii=False) if target else ""
@@ -173,7 +176,7 @@ def mutants(tmp, slow, timed=(True, False)):
         verdict = ("passed" if passed else "failed") if target else "NOT GRADED"
         diagnosis = next((d for d in (target or {}).get("details", []) if d.startswith("likely cause")),
                          (target or {}).get("summary", ""))
-        rows.append(f"| {name} | {m['lab']} | {target_name}: {verdict} | {diagnosis[:110]} |")
+        rows.append(f"| {name} | {m['lab']} | {target_name}: {verdict} | {diagnosis[:110]} | {seconds:.0f} s |")
         says = m["says"] if isinstance(m["says"], list) else [m["says"]]
         missing = [words for words in says if words not in text]
         # Words of another cause that must not be told (a linear lab is not called non-linear).
@@ -192,7 +195,7 @@ def mutants(tmp, slow, timed=(True, False)):
             check(replay is not None and m["replay"] in replay,
                   f"mutant {name}: the replay beside the reference says '{m['replay']}'"
                   + ("" if replay and m["replay"] in replay else f" (it said: {replay})"))
-    print("\n| mutant | lab | verdict | diagnosis |\n|---|---|---|---|\n" + "\n".join(rows) + "\n")
+    print("\n| mutant | lab | verdict | diagnosis | grading |\n|---|---|---|---|---|\n" + "\n".join(rows) + "\n")
     print(f"the replay ran for {replays['ran']} mutants and said what mutants.json expects for "
           f"{replays['named']} of them")
 

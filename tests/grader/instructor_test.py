@@ -21,6 +21,9 @@ promises:
   lms.csv until the rubric's regrades.lower_scores decides, and keep_higher keeps the higher one
   without grading anyone again;
 - no file of a student's feedback names the hidden scene or shows its images;
+- per-student variants: each student's feedback names their own furnace and no other's; a
+  student's variant folder is the variant the batch graded, and a local grade on it passes the
+  solutions and fails an edited one;
 - the similarity report puts a copy of the solutions with renamed variables in one cluster with
   the solutions, with side-by-side pages.
 
@@ -85,10 +88,11 @@ def make_class(root):
     return subs
 
 
-def light_rubric(root, roulette_correctness=6, max_noise_ratio=1.5, moved_points=0, lower_scores=None, late=None):
+def light_rubric(root, roulette_correctness=6, max_noise_ratio=1.5, moved_points=0, lower_scores=None, late=None,
+                 variants=None):
     """The kit's rubric, lighter; `moved_points` of lab 3's correctness moved to lab 2's (the
-    maximum kept); `lower_scores`, the rubric's regrades.lower_scores, and `late`, its late
-    policy, where given."""
+    maximum kept); `lower_scores`, the rubric's regrades.lower_scores, `late`, its late policy, and
+    `variants`, its per-student variants, where given."""
     rubric = json.load(open(os.path.join(args.source, "grader", "rubric.json")))
     rubric["correctness"].update({"seeds": 6, "width": 32, "height": 32, "tiles": 2, "scenes": ["furnace"]})
     rubric["noise"].update({"scene": "furnace", "max_ratio": max_noise_ratio})
@@ -100,6 +104,8 @@ def light_rubric(root, roulette_correctness=6, max_noise_ratio=1.5, moved_points
         rubric["regrades"] = {"lower_scores": lower_scores}
     if late:
         rubric["late"] = late
+    if variants:
+        rubric["variants"] = variants
     path = os.path.join(root, "rubric.json")
     json.dump(rubric, open(path, "w"), indent=1)
     return path
@@ -367,7 +373,58 @@ def main():
               f"late policy: bob 3 days late, 1 slip day, 20% off ({RAISED_LAB_LOST} -> {bob_final}, as the LMS "
               "gets it); carol on time by her extension; nothing graded again")
 
-        # 11. The Gradescope zip holds a hidden scene that git does not track, and says so.
+        # 11. Per-student variants: each student also grades on a furnace and a Cornell box of
+        # their own, drawn from the class secret and their id. New scenes for everyone: the class
+        # is graded again; the solutions pass every variant; each student's feedback names their
+        # own furnace's numbers and no other student's; the folder `grader student-variants`
+        # writes for a student holds the very variant the batch graded them on, and a local grade
+        # on it passes the solutions and fails a variant whose numbers were edited.
+        write(os.path.join(root, "class-secret.txt"), "a secret of this course's, 2026\n")
+        variants = {"per_student": True, "secret_file": "class-secret.txt",
+                    "furnace": {"albedo": [0.3, 0.7], "emission": [0.5, 2], "max_depth": [2, 6]},
+                    "box": {"scene": "cornell_box_diffuse", "reflectance": [0.6, 1], "light": [0.7, 1.3]}}
+        light_rubric(root, roulette_correctness=16, max_noise_ratio=1.2, moved_points=2, lower_scores="keep_higher",
+                     late={"penalty_per_day": 0.1, "slip_days": 1, "max_penalty": 0.3, "extensions": "extensions.csv"},
+                     variants=variants)
+        run = batch("per-student variants", "--deadline", "2026-12-01T23:59Z", "--times", times)
+        rows = gradebook()
+        furnaces = {}
+        for id_ in ("alice", "bob", "carol"):
+            found = re.findall(r"your furnace \(albedo [\d.]+, Le [\d.]+, maxDepth \d\)",
+                               read(os.path.join(OUT, "submissions", id_, "index.html")))
+            furnaces[id_] = found[0] if found else None
+        others = [(id_, path) for id_ in furnaces for path in feedback_files()
+                  if f"/submissions/{id_}/" not in path and furnaces[id_] and furnaces[id_] in read(path)]
+        check(run.returncode == 0 and graded_in_last_batch() == ["alice", "bob", "carol"]
+              and rows["alice"]["total"] == RAISED and rows["bob"]["graded_total"] == str(int(RAISED_LAB_LOST) - 2),
+              "per-student variants: new scenes, the class graded again; alice (the solutions) passes hers, "
+              "bob loses no more than lab 2")
+        check(all(furnaces.values()) and len(set(furnaces.values())) == 3 and others == []
+              and all(os.path.exists(os.path.join(OUT, "submissions", i, "variant", "furnace.ecs")) for i in furnaces),
+              f"each student's feedback names their own furnace, no other's, and holds its scene: {furnaces}"
+              + (f" (another's in {others})" if others else ""))
+        folders = os.path.join(root, "variants")
+        made = subprocess.run([GRADER, "student-variants", "alice", "--rubric", RUBRIC, "--out", folders],
+                              capture_output=True, text=True)
+        alice_variant = os.path.join(folders, "alice")
+        kept = json.load(open(os.path.join(alice_variant, "variant.json"))) if made.returncode == 0 else {}
+        check(made.returncode == 0 and furnaces["alice"] in made.stdout and "box" in kept
+              and os.path.exists(os.path.join(alice_variant, "references", kept["box"]["file"][:-4] + ".json")),
+              "grader student-variants writes alice's folder: the furnace the batch graded her on, her box and "
+              "its reference" + ("" if made.returncode == 0 else f": {made.stderr}"))
+        local = [os.path.join(args.build, "grader"), "--viewer", os.path.join(args.build, "viewer_solutions_as_student"),
+                 "--rubric", RUBRIC, "--references", NO_REFERENCES, "--scenes", "none", "--lab", "roulette",
+                 "--no-speed", "--variant", alice_variant]
+        graded = subprocess.run(local, capture_output=True, text=True)
+        kept["furnace"]["albedo"] = round(kept["furnace"]["albedo"] + 0.1, 3)
+        json.dump(kept, open(os.path.join(alice_variant, "variant.json"), "w"))
+        edited = subprocess.run(local, capture_output=True, text=True)
+        check(graded.returncode == 0 and edited.returncode == 1
+              and f"your furnace (albedo {kept['furnace']['albedo']:g}," in edited.stdout,
+              "the student's local grade on their folder passes the solutions; a folder whose albedo was edited "
+              "fails on that furnace" + ("" if graded.returncode == 0 else f": {graded.stdout[-800:]}{graded.stderr[-400:]}"))
+
+        # 12. The Gradescope zip holds a hidden scene that git does not track, and says so.
         kit = os.path.join(root, "kit")
         subprocess.run(["git", "clone", "--quiet", "--no-hardlinks", args.source, kit], check=True)
         add_hidden_scene(os.path.join(kit, "grader", "hidden_scenes"))

@@ -29,6 +29,8 @@ seeds, 2 timed runs and a lenient speed threshold, written over grader/rubric.js
 unpacked autograder as an instructor would edit it: this test checks how the autograder is put
 together, not the grader's statistics or this machine's timings.
 """
+import importlib.machinery
+import importlib.util
 import json
 import math
 import os
@@ -278,9 +280,28 @@ def grade_without_sandbox(scratch, logs):
     return results
 
 
+def check_student_id(scratch):
+    """run_autograder names the submission by the submitter's id from submission_metadata.json
+    (the per-student variants' seed), as a plain folder name, and "submission" without one."""
+    loader = importlib.machinery.SourceFileLoader(
+        "run_autograder", os.path.join(KIT, "scripts", "gradescope", "run_autograder"))
+    module = importlib.util.module_from_spec(importlib.util.spec_from_loader(loader.name, loader))
+    loader.exec_module(module)
+    metadata = os.path.join(scratch, "submission_metadata.json")
+    found = []
+    for users in ([{"sid": "s123", "email": "a@uni.edu"}], [{"email": "../a b@uni.edu"}], []):
+        with open(metadata, "w") as f:
+            json.dump({"users": users}, f)
+        found.append(module.student_id(metadata))
+    found.append(module.student_id(os.path.join(scratch, "none.json")))
+    check(found == ["s123", "_a_b@uni.edu", "submission", "submission"],
+          f"run_autograder names a submission by its sid, else its email, as a plain name: {found}")
+
+
 def main():
     start = time.monotonic()
     scratch = tempfile.mkdtemp(prefix="pathlab-gradescope-test-")
+    check_student_id(scratch)
     logs = os.path.join(scratch, "logs")
     os.makedirs(logs)
     # Gradescope's /autograder belongs to root and is open to all; mkdtemp's folder is not.

@@ -289,18 +289,26 @@ CorrectnessOutcome checkCorrectness(const GraderSetup& setup, Lab lab) {
 
 GradingScene parameterCheckScene(const Rubric& rubric) {
     const ParameterCheck& check = rubric.parameterCheck;
-    GradingScene scene;
-    scene.path = std::string(PATHLAB_MODELS_DIR) + "/" + check.scene + ".ecs";
-    scene.parameters = LabParameters{check.maxDepth, check.continueProb};
-    scene.furnace = furnaceModel(check.scene, check.maxDepth, check.continueProb);
-    if (!scene.furnace)
+    const auto model = furnaceModel(check.scene, check.maxDepth, check.continueProb);
+    if (!model)
         throw InputError("rubric: parameter_check.scene '" + check.scene +
                          "' is not a furnace "
                          "of models/ (furnace, furnace_a08, mirror_furnace)");
+    return analyticFurnaceScene(
+        rubric, std::string(PATHLAB_MODELS_DIR) + "/" + check.scene + ".ecs", *model,
+        check.scene + " at maxDepth " + std::to_string(check.maxDepth) + ", continueProb " +
+            significant(check.continueProb, 2));
+}
+
+GradingScene analyticFurnaceScene(const Rubric& rubric, const std::string& path,
+                                  const FurnaceModel& model, const std::string& name) {
+    GradingScene scene;
+    scene.path = path;
+    const float continueProb = static_cast<float>(model.continueProb);
+    scene.parameters = LabParameters{model.maxDepth, continueProb};
+    scene.furnace = model;
     SceneReference& ref = scene.reference;
-    ref = referenceHeader(check.scene + " at maxDepth " + std::to_string(check.maxDepth) +
-                              ", continueProb " + significant(check.continueProb, 2),
-                          rubric, check.maxDepth, check.continueProb);
+    ref = referenceHeader(name, rubric, model.maxDepth, continueProb);
     scene.name = ref.scene;
     // Every region of a furnace averages to its analytic value, known exactly: no standard error.
     auto analytic = [&](Lab lab) {

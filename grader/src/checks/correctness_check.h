@@ -29,6 +29,11 @@ CorrectnessOutcome checkCorrectness(const GraderSetup& setup, Lab lab);
 /// is not a furnace.
 GradingScene parameterCheckScene(const Rubric& rubric);
 
+/// A furnace of `model` at `path` rendered at the model's maxDepth and continueProb, its
+/// reference the analytic values (no standard error), called `name` in feedback.
+GradingScene analyticFurnaceScene(const Rubric& rubric, const std::string& path,
+                                  const FurnaceModel& model, const std::string& name);
+
 /// A render's failure on `scene` as feedback may show it: on a public scene (or one the instructor
 /// reveals) the whole text, with what the lab printed; on a hidden one only what kind of failure
 /// it was, in the grader's own words: nothing the lab printed, wrote or counted there, which it

@@ -1,6 +1,7 @@
 #include "checks/grading_scenes.h"
 
 #include "checks/glossy_furnace_scene.h"
+#include "checks/student_variant.h"
 
 #include "checks/correctness_check.h"
 #include "common/content_hash.h"
@@ -31,11 +32,12 @@ bool noiseMeasuredAsGraded(const SceneReference& reference, const Rubric& rubric
     return true;
 }
 
-/// The scene's reference from the cache while it fits the scene and rubric, else measured now
-/// (and cached).
-SceneReference measured(const LabRunner& solution, const std::string& path, const Rubric& rubric,
-                        const std::string& scratch, const std::string& cacheFolder,
-                        const std::string& shownName) {
+} // namespace
+
+SceneReference cachedOrMeasuredReference(const LabRunner& solution, const std::string& path,
+                                         const Rubric& rubric, const std::string& scratch,
+                                         const std::string& cacheFolder,
+                                         const std::string& shownName) {
     if (!cacheFolder.empty()) {
         try {
             const SceneReference cached = loadReference(cacheFolder, path, rubric);
@@ -54,8 +56,6 @@ SceneReference measured(const LabRunner& solution, const std::string& path, cons
     }
     return reference;
 }
-
-} // namespace
 
 std::string defaultHiddenScenesFolder() {
     const std::string folder = std::string(PATHLAB_GRADER_DIR) + "/hidden_scenes";
@@ -102,7 +102,8 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const SceneSources
                              " (or restore models/ and the rubric as they were)");
         } catch (const InputError& e) {
             notes.push_back(std::string(e.what()) + "; measured on the fly instead");
-            s.reference = measured(solution, s.path, rubric, scratch, sources.cache, name);
+            s.reference =
+                cachedOrMeasuredReference(solution, s.path, rubric, scratch, sources.cache, name);
         }
         scenes.push_back(std::move(s));
     }
@@ -116,7 +117,8 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const SceneSources
         s.hidden = !sources.revealHidden;
         s.name =
             s.hidden ? "hidden scene " + std::to_string(i + 1) : fs::path(s.path).stem().string();
-        s.reference = measured(solution, s.path, rubric, scratch, sources.cache, s.name);
+        s.reference =
+            cachedOrMeasuredReference(solution, s.path, rubric, scratch, sources.cache, s.name);
         scenes.push_back(std::move(s));
     }
     return scenes;
@@ -130,6 +132,10 @@ std::string scenesHash(const Rubric& rubric, const std::string& hiddenFolder) {
     if (!hiddenFolder.empty())
         for (const std::string& path : hiddenScenePaths(hiddenFolder))
             hash.add(fs::path(path).filename().string()).add(sceneFilesHash(path));
+    if (rubric.variants.perStudent) hash.add(classSecret(rubric.variants));
+    if (!rubric.variants.boxScene.empty())
+        hash.add(rubric.variants.boxScene)
+            .add(sceneFilesHash(publicScenePath(rubric.variants.boxScene)));
     return hash.hex();
 }
 

@@ -37,9 +37,18 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const SceneSources
                                         const LabRunner& solution, const std::string& scratch,
                                         std::vector<std::string>& notes);
 
+/// The reference of the scene at `path` from `cacheFolder` while it fits the scene's files, the
+/// rubric and the kit, else measured now from the solutions `solution` runs (and kept there;
+/// "" keeps it nowhere). `shownName` names it on the progress bar.
+SceneReference cachedOrMeasuredReference(const LabRunner& solution, const std::string& path,
+                                         const Rubric& rubric, const std::string& scratch,
+                                         const std::string& cacheFolder,
+                                         const std::string& shownName);
+
 /// One fingerprint of every scene a grading uses (the files of the public and hidden scenes, the
 /// rubric's settings a reference depends on, the kit's version), without measuring anything:
-/// each result records it beside the rubric's hash.
+/// each result records it beside the rubric's hash. With per-student variants, the class secret's
+/// text too: a new secret draws every student's scenes anew.
 std::string scenesHash(const Rubric& rubric, const std::string& hiddenFolder);
 
 } // namespace pathlab::grader

@@ -3,6 +3,7 @@
 
 #include "checks/check_kind.h"
 #include "checks/late_policy.h"
+#include "checks/variant_settings.h"
 #include "common/by_lab.h"
 
 #include "pathlab/render/lab_registry.h"
@@ -80,6 +81,8 @@ struct Rubric {
     /// How many variants of the public scenes a batch grades on as hidden scenes when the
     /// instructor keeps none (hidden_scenes.variants; scene_variants.h); 0: none.
     int sceneVariants = 1;
+    /// Per-student variants (the section "variants"; student_variant.h).
+    VariantSettings variants;
     /// What a regrade that lowers a total does (regrades.lower_scores); not in `hash`: it
     /// decides which total the gradebook shows, not how any lab is graded or scored.
     LowerScores lowerScores = LowerScores::Undecided;

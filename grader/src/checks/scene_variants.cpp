@@ -95,15 +95,43 @@ std::string scaledLightOptions(const std::string& ecs, double factor) {
 
 } // namespace
 
-std::string variedMaterials(const std::string& mtl, const std::function<double()>& random) {
+std::string variedMaterials(const std::string& mtl, const std::function<double()>& random,
+                            DrawRange reflectance, DrawRange light) {
     // Each value times a factor drawn within [low, high], one draw per value in order.
-    return withScaledNumbers(mtl, 4, [&random](const std::string& keyword, size_t count) {
+    return withScaledNumbers(mtl, 4, [&](const std::string& keyword, size_t count) {
         const bool diffuse = keyword == "Kd", emission = keyword == "Ke";
-        const double low = diffuse ? 0.5 : 0.6, high = diffuse ? 1.0 : 1.3;
+        const DrawRange range = diffuse ? reflectance : light;
         std::vector<double> factors;
         if (diffuse || emission)
-            for (size_t k = 0; k < count; ++k) factors.push_back(low + (high - low) * random());
+            for (size_t k = 0; k < count; ++k)
+                factors.push_back(range.low + (range.high - range.low) * random());
         return factors;
+    });
+}
+
+std::string writeVariedScene(const std::string& ecsPath, const std::string& folder,
+                             const std::string& stem, const std::function<double()>& random,
+                             DrawRange reflectance, DrawRange light) {
+    return copyScene(ecsPath, folder, stem, [&](const std::string& extension, std::string text) {
+        return extension == ".mtl" ? variedMaterials(text, random, reflectance, light) : text;
+    });
+}
+
+std::string writeGreyMaterialScene(const std::string& ecsPath, const std::string& folder,
+                                   const std::string& stem, double albedo, double emission) {
+    return copyScene(ecsPath, folder, stem, [&](const std::string& extension, std::string text) {
+        if (extension != ".mtl") return text;
+        // Every digit kept: the analytic value is computed from these very numbers.
+        char kd[80], ke[80];
+        std::snprintf(kd, sizeof kd, "Kd %.17g %.17g %.17g", albedo, albedo, albedo);
+        std::snprintf(ke, sizeof ke, "Ke %.17g %.17g %.17g", emission, emission, emission);
+        std::istringstream in(text);
+        std::string out;
+        for (std::string line; std::getline(in, line);) {
+            const std::string keyword = line.substr(0, line.find_first_of(" \t"));
+            out += (keyword == "Kd" ? kd : keyword == "Ke" ? ke : line) + std::string("\n");
+        }
+        return out;
     });
 }
 

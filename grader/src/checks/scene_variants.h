@@ -21,10 +21,23 @@ namespace pathlab::grader {
 std::vector<std::string> writeSceneVariants(const Rubric& rubric, const std::string& folder,
                                             uint64_t seed);
 
-/// The text of one .mtl with each material's Kd scaled per channel within [0.5, 1] (so that no
-/// material reflects more than it did) and each emission Ke within [0.6, 1.3], by `random`
-/// (one number in [0, 1) per call). Other lines are kept as they are.
-std::string variedMaterials(const std::string& mtl, const std::function<double()>& random);
+/// The text of one .mtl with each material's Kd scaled per channel within `reflectance`
+/// (by default [0.5, 1], so that no material reflects more than it did) and each emission Ke
+/// within `light` (by default [0.6, 1.3]), by `random` (one number in [0, 1) per call). Other
+/// lines are kept as they are.
+std::string variedMaterials(const std::string& mtl, const std::function<double()>& random,
+                            DrawRange reflectance = {0.5, 1.0}, DrawRange light = {0.6, 1.3});
+
+/// A copy of the scene at `ecsPath` in `folder` as `stem`.ecs (its files as stem_NAME), its
+/// materials varied as variedMaterials does. Returns the copy's .ecs path.
+std::string writeVariedScene(const std::string& ecsPath, const std::string& folder,
+                             const std::string& stem, const std::function<double()>& random,
+                             DrawRange reflectance, DrawRange light);
+
+/// A copy of the scene at `ecsPath` in `folder` as `stem`.ecs (its files as stem_NAME), each
+/// material's Kd and Ke set to the grey `albedo` and `emission`. Returns the copy's .ecs path.
+std::string writeGreyMaterialScene(const std::string& ecsPath, const std::string& folder,
+                                   const std::string& stem, double albedo, double emission);
 
 /// `mtl` with every emission Ke times `factor`.
 std::string scaledEmission(const std::string& mtl, double factor);

@@ -25,6 +25,9 @@ the instructor's (they need the reference solutions, or a batch's output):
        grader merge DIR... --out DIR          merge the gradebooks of batch shards
        grader make-variants DIR               write the rubric's variants of the public scenes
                                               into DIR, as hidden scenes (--variant-seed N)
+       grader student-variants ID... --out DIR
+                                              write each student's own variant folder, DIR/ID/
+                                              (the rubric's variants.per_student), to send them
 
 A submission is a folder, a .zip, a .tar.gz or a git repository holding the lab files
 (@LAB_FILES@); only those are taken.
@@ -43,6 +46,8 @@ options
                       in OUT/.references)
   --reveal-hidden     feedback names the hidden scenes and shows their images and tiles
                       (by default it says only pass or fail and a likely cause)
+  --variant DIR       also grade on your own variant's scenes, from the folder your instructor
+                      sent you (when their rubric grades each student on a variant)
   --rubric FILE       points and thresholds (default: grader/rubric.json)
   --references DIR    stored references (default: grader/references)
   --seed N            seed base (default 1); a fail is re-checked on fresh seeds anyway
@@ -143,8 +148,8 @@ int readCommand(int argc, char** argv, Arguments& a) {
     if (argc <= 1) return 1;
     int first = 1;
     const std::string command = argv[1];
-    for (const char* known :
-         {"make-references", "submission", "batch", "merge", "rubric", "make-variants"})
+    for (const char* known : {"make-references", "submission", "batch", "merge", "rubric",
+                              "make-variants", "student-variants"})
         if (command == known) a.command = command, first = 2;
     // The instructor's commands compile or run the reference solutions.
     if (!PATHLAB_HAS_SOLUTIONS && first == 2 && a.command != "merge" && a.command != "rubric" &&
@@ -187,6 +192,7 @@ const std::map<std::string, std::string Arguments::*>& textOptions() {
         {"--kit", &Arguments::kit},
         {"--reference-cache", &Arguments::referenceCache},
         {"--timing-lock", &Arguments::timingLock},
+        {"--variant", &Arguments::variant},
     };
     return texts;
 }
@@ -273,7 +279,7 @@ void readOptions(int argc, char** argv, int first, Arguments& a, bool& scenesGiv
         else if (!arg.empty() && arg[0] == '-')
             throw InputError("unknown option '" + arg + "' (grader --help lists the options)");
         else if (a.command == "submission" || a.command == "batch" || a.command == "merge" ||
-                 a.command == "make-variants")
+                 a.command == "make-variants" || a.command == "student-variants")
             a.inputs.push_back(arg);
         else
             throw InputError("unexpected argument '" + arg +
@@ -310,6 +316,10 @@ void requireWhatTheCommandNeeds(const Arguments& a) {
     if ((a.command == "submission" || a.command == "batch" || a.command == "merge") &&
         a.out.empty())
         throw InputError("grader " + a.command + " needs --out DIR");
+    if (a.command == "student-variants" && (a.inputs.empty() || a.out.empty()))
+        throw InputError("grader student-variants expects the students' ids and --out DIR");
+    if (!a.variant.empty() && a.command != "grade")
+        throw InputError("option --variant is for grading your labs (grader, make grade)");
     if (a.command == "make-variants" && a.inputs.size() != 1)
         throw InputError("grader make-variants expects one folder to write the variants into");
     if (a.variantSeed != 0 && a.command != "batch" && a.command != "make-variants")

@@ -22,6 +22,8 @@ struct Arguments {
     /// earlier batch into --out kept, else a new one.
     uint64_t variantSeed = 0;
     bool revealHidden = false; ///< feedback may name hidden scenes and show their images
+    /// grade: a student's variant folder (student_variant.h) to grade on as well.
+    std::string variant;
     std::string rubric, references;
     bool rubricGiven = false; ///< --rubric on the command line (else the kit's)
     std::string json, junit, gradescope, prairielearn, html, report;

@@ -10,6 +10,7 @@
 // a lab's whole interleaved series, one thread per timed render, shared by every batch on the
 // machine); compiling and the correctness renders of every job share the other cores
 // (batch_cores.h). The jobs are batch_jobs.h's, the canary that goes first batch_canary.h's.
+#include "checks/student_variant.h"
 #include "checks/grading_scenes.h"
 #include "checks/scene_variants.h"
 #include "checks/speed_check.h"
@@ -226,6 +227,23 @@ void measureHiddenReferences(const Arguments& a, const Rubric& rubric,
                   scratch, notes);
 }
 
+/// Each student's own box (the rubric's per-student variants with a box scene), its reference
+/// measured into the batch's cache before the first job, as the hidden scenes' are: the job
+/// finds it there by its files, which are the same, written beside the student's feedback.
+void measureStudentVariants(const Arguments& a, const Rubric& rubric,
+                            const std::vector<Submission>& todo, const std::string& referenceCache,
+                            const std::string& scratch) {
+    if (!rubric.variants.perStudent || rubric.variants.boxScene.empty()) return;
+    const std::string secret = classSecret(rubric.variants);
+    const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
+    for (const Submission& s : todo) {
+        const std::string folder = scratch + "/variants/" + s.id;
+        studentVariantScenes(rubric, drawStudentVariant(rubric.variants, secret, s.id), folder,
+                             solution, scratch, referenceCache);
+        fs::remove_all(folder);
+    }
+}
+
 /// OUT/batch.json: what the batch's gradebook is written against, for `grader merge` and for
 /// the next batch into OUT.
 void writeBatchJson(const std::string& out, const std::string& rubricFile,
@@ -405,6 +423,7 @@ int runBatch(const Arguments& given, const Rubric& rubric, const std::string& sc
         std::fprintf(stderr, "compiling the lab kit (stubs, table, reference solutions) ...\n");
         buildLabKit(build, shared.kit, {cores.work, sandboxUserForThisProcess()});
         measureHiddenReferences(a, rubric, shared.referenceCache, scratch);
+        measureStudentVariants(a, rubric, selection.todo, shared.referenceCache, scratch);
     };
     if (!selection.todo.empty() || !selection.rescore.empty())
         runCanary(childBase, build.solutions, out, grading, rubric, a.references, prepare, log);

@@ -24,6 +24,8 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
 int mergeBatches(const Arguments& a);
 /// Writes the rubric's scene variants into the folder named (grader make-variants).
 int makeVariants(const Arguments& a, const Rubric& rubric);
+/// Writes each student's variant folder, --out/ID/ (student_variant.h).
+int makeStudentVariants(const Arguments& a, const Rubric& rubric, const std::string& scratch);
 /// The seed of scene variants: --variant-seed, else the one kept in the file `keptIn`, else a
 /// new random one.
 uint64_t variantSeed(const Arguments& a, const std::string& keptIn);

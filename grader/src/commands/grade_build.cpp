@@ -1,5 +1,6 @@
 // grader (no command): the labs of this build, run directly, as a student runs it before
 // submitting; and make-references, which measures what they are compared with.
+#include "checks/student_variant.h"
 #include "checks/expectation.h"
 #include "checks/grading_scenes.h"
 #include "checks/kit_ray_cost.h"
@@ -172,6 +173,15 @@ int gradeBuild(const Arguments& a, const Rubric& rubric, const std::string& scra
     setup.scenes =
         gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden},
                       setup.solution, scratch, report.notes);
+    if (!a.variant.empty()) {
+        for (GradingScene& s : loadStudentVariantFolder(rubric, a.variant))
+            setup.scenes.push_back(std::move(s));
+    } else if (rubric.variants.perStudent) {
+        report.notes.push_back(
+            "your instructor grades each student on scenes of their own as well (the rubric's "
+            "variants): `make grade VARIANT=DIR` grades you on yours, from the folder they send "
+            "you");
+    }
     report.ratiosMeasuredOn = "the correctness renders of " + rubric.speedScene + ", " +
                               std::to_string(rubric.width) + "×" + std::to_string(rubric.height) +
                               ", " + std::to_string(rubric.seeds) +

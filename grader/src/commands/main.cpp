@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
             if (a.command == "make-references") return makeReferences(a, rubric, scratch);
             if (a.command == "submission") return gradeOneSubmission(a, rubric, scratch);
             if (a.command == "batch") return runBatch(a, rubric, scratch);
+            if (a.command == "student-variants") return makeStudentVariants(a, rubric, scratch);
             return gradeBuild(a, rubric, scratch);
         },
         3);

@@ -1,6 +1,7 @@
 // grader submission: one submitted set of labs graded in the sandbox, its feedback written; the
 // command each job of `grader batch` runs (batch.cpp), and an instructor may run by hand.
 #include "checks/grading_scenes.h"
+#include "checks/student_variant.h"
 #include "commands/commands.h"
 #include "commands/grading_host.h"
 #include "commands/output_lock.h"
@@ -27,6 +28,14 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
     std::vector<std::string> notes;
     g.scenes = gradingScenes(rubric, {a.references, a.scenesDir, a.referenceCache, a.revealHidden},
                              solution, scratch, notes);
+    if (rubric.variants.perStudent) {
+        // The student's own scenes, written beside their feedback: theirs to look at.
+        const StudentVariant variant = drawStudentVariant(
+            rubric.variants, classSecret(rubric.variants), submissionId(a.inputs[0]));
+        for (GradingScene& s : studentVariantScenes(rubric, variant, a.out + "/variant", solution,
+                                                    scratch, a.referenceCache))
+            g.scenes.push_back(std::move(s));
+    }
     g.scenesHash = scenesHash(rubric, a.scenesDir);
     g.timing = {a.timingCpus, a.timingLock, a.timingCpus.empty() ? 0 : 1};
     g.threads = a.workCpus.empty() ? a.threads : static_cast<int>(a.workCpus.size());

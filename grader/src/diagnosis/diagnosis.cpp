@@ -34,7 +34,7 @@ double furnaceValue(Lab lab, const FurnaceModel& m, const FurnaceBehaviour& b) {
         diffuse = reaching * diffuseRoulette * b.diffuseWeight * a;
         specular = reaching * specularRoulette * b.mirrorWeight * s;
     }
-    return value;
+    return value * m.emission;
 }
 
 struct Candidate {
@@ -93,10 +93,12 @@ std::string furnaceFormula(Lab lab, const FurnaceModel& m) {
     const char* k = diffuse ? "a" : "s";
     char text[160];
     if (isDepthLimited(lab))
-        std::snprintf(text, sizeof text, "Le*(1 - %s^(D+%d))/(1 - %s) with Le = 1, %s = %g, D = %d",
-                      k, diffuse ? 2 : 1, k, k, m.reflectance, m.maxDepth);
+        std::snprintf(text, sizeof text,
+                      "Le*(1 - %s^(D+%d))/(1 - %s) with Le = %g, %s = %g, D = %d", k,
+                      diffuse ? 2 : 1, k, m.emission, k, m.reflectance, m.maxDepth);
     else
-        std::snprintf(text, sizeof text, "Le/(1 - %s) with Le = 1, %s = %g", k, k, m.reflectance);
+        std::snprintf(text, sizeof text, "Le/(1 - %s) with Le = %g, %s = %g", k, m.emission, k,
+                      m.reflectance);
     return text;
 }
 

@@ -22,6 +22,8 @@ struct FurnaceModel {
     double reflectance = 0.5;  ///< the walls' Kd or Ks, grey
     int maxDepth = 3;          ///< labs 1-3
     double continueProb = 0.8; ///< lab 4
+    /// The walls' Le: every term of a lab's radiance, a bug's included, is linear in it.
+    double emission = 1;
 };
 
 /// The model of a furnace of models/ by scene name ("furnace", "furnace_a08", "mirror_furnace"),
