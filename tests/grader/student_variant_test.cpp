@@ -7,6 +7,7 @@
 
 #include "checks/grading_scenes.h"
 #include "checks/rubric.h"
+#include "checks/rubric_text.h"
 #include "checks/student_variant.h"
 
 #include "pathlab/support/input_error.h"
@@ -112,8 +113,19 @@ TEST_CASE("a student's furnace is written with its numbers and graded at its ana
 }
 
 TEST_CASE("the rubric's variants section: its words for a wrong setting", "[grader]") {
-    CHECK(errorOf({{"per_student", true}}).find("variants.secret_file must name the file") !=
-          std::string::npos);
+    CHECK(errorOf({{"per_student", true}, {"secret_file", 7}})
+              .find("variants.secret_file must name the file") != std::string::npos);
+    // A release's rubric, its secret's name left out, is read; the secret is asked for where used.
+    const VariantSettings released =
+        readVariantSettings({{"per_student", true}}, "/course/rubric.json");
+    CHECK(released.perStudent);
+    CHECK(released.secretFile.empty());
+    try {
+        classSecret(released);
+        FAIL("a secret was found without its file's name");
+    } catch (const InputError& e) {
+        CHECK(std::string(e.what()).find("needs variants.secret_file") != std::string::npos);
+    }
     CHECK(errorOf({{"per_student", true},
                    {"secret_file", "s.txt"},
                    {"furnace", {{"albedo", {0.5, 0.95}}}}})
@@ -166,4 +178,28 @@ TEST_CASE("the class secret: missing or short, the words say how to make one; th
                                              {"secret_file", "secret.txt"},
                                              {"furnace", {{"albedo", {0.2, 0.6}}}}}));
     CHECK(ranges.hash != first.hash); // the ranges are graded
+}
+
+TEST_CASE("grader rubric describes the variants, the late policy and the regrade setting",
+          "[grader]") {
+    Rubric rubric = loadRubric(std::string(PATHLAB_GRADER_DIR) + "/rubric.json");
+    const std::string plain = rubricText(rubric, "rubric.json", 0);
+    CHECK(plain.find("own scenes") == std::string::npos);
+    CHECK(plain.find("late:") == std::string::npos);
+    rubric.variants = settings("unused");
+    rubric.variants.boxScene = "cornell_box_diffuse";
+    rubric.late.given = true;
+    rubric.late.slipDays = 2;
+    rubric.late.penaltyPerDay = 0.1;
+    rubric.late.maxPenalty = 0.3;
+    rubric.lowerScores = LowerScores::KeepHigher;
+    const std::string text = rubricText(rubric, "rubric.json", 0);
+    CHECK(text.find("each student's own scenes too (variants): a furnace of albedo in [0.3, 0.8], "
+                    "Le in [0.5, 2], maxDepth in [2, 6]") != std::string::npos);
+    CHECK(
+        text.find("cornell_box_diffuse with each Kd times [0.5, 1] and each Ke times [0.6, 1.3]") !=
+        std::string::npos);
+    CHECK(text.find("late: 2 slip day(s) per student, then 10% of the total per late day, at most "
+                    "30%") != std::string::npos);
+    CHECK(text.find("regrades: keep_higher") != std::string::npos);
 }

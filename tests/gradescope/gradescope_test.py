@@ -135,6 +135,10 @@ def lenient_rubric(source):
         rubric = json.load(f)
     rubric["correctness"]["seeds"] = 4
     rubric["speed"].update({"runs": 2, "min_ratio": 0.25})
+    # The instructor's late policy and leaderboard: run_autograder applies the one to the times
+    # in submission_metadata.json, results.json carries the other.
+    rubric["late"] = {"penalty_per_day": 0.1, "slip_days": 1, "max_penalty": 0.5}
+    rubric["gradescope"] = {"leaderboard": True}
     with open(path, "w") as f:
         json.dump(rubric, f, indent=2)
     return rubric
@@ -213,6 +217,12 @@ def read(path):
 def grade_correct(scratch, logs):
     submit(scratch, {f"{lab}.cpp": read(os.path.join(KIT, "solutions", f"{lab}.cpp"))
                      for lab in LABS})
+    # Handed in 3 days late (Gradescope's times, in its format): one slip day, then 10% a day.
+    metadata = os.path.join(scratch, "autograder", "submission_metadata.json")
+    with open(metadata, "w") as f:
+        json.dump({"created_at": "2026-12-04T21:00:00.000000-08:00",
+                   "assignment": {"due_date": "2026-12-01T23:59:00.000000-08:00"},
+                   "users": [{"email": "ada@example.edu", "sid": "s42", "name": "Ada"}]}, f)
     status, output = in_gradescope(scratch, ["/autograder/run_autograder"],
                                    os.path.join(logs, "run_autograder-correct.log"))
     check(status == 0, "correct submission: run_autograder exits 0" +
@@ -230,8 +240,15 @@ def grade_correct(scratch, logs):
     failed = [f"{t.get('name')}: {t.get('output')}" for t in tests if t.get("status") != "passed"]
     check(not failed, f"correct submission: every test passed {failed}")
     full = sum(t.get("max_score", 0) for t in tests)
-    check(results.get("score") == full and full > 0,
-          f"correct submission: full marks, {results.get('score')} of {full}")
+    check(full > 0 and math.isclose(results.get("score", -1), 0.8 * full)
+          and "late: 3 day(s) after the deadline, 1 slip day(s) forgiven: the score loses 20%"
+          in results.get("output", ""),
+          f"correct submission, 3 days late: full marks less the late policy's 20%, "
+          f"{results.get('score')} of {full}, and the output says why")
+    board = {entry.get("name"): entry.get("value") for entry in results.get("leaderboard", [])}
+    check(board.get("total") == full and all(board.get(f"{lab}: efficiency / reference", 0) > 0 for lab in LABS),
+          f"the leaderboard: the total and each lab's efficiency over the reference's ({board})")
+    os.remove(metadata)
     return results
 
 

@@ -16,6 +16,9 @@ and checks, each printing PASS/FAIL:
   rubric still fits are the kit's, unchanged;
 - `grader rubric` on the release's rubric, beside its release.json, says which rubric the release
   carries; edited afterwards, it says it is not that one;
+- a rubric with per-student variants is packed without the name of its class secret's file
+  (outside the hash, which stays the instructor's), and a secret that is a file of the kit stops
+  the packaging, naming it;
 - a rubric the grader refuses (a lab's points missing) stops the packaging in one line naming
   the problem, exit 2, and no package is written.
 """
@@ -57,6 +60,11 @@ def main():
         rubric["regrades"] = {"lower_scores": "keep_higher"}
         with open(os.path.join(root, "extensions.csv"), "w") as f:
             f.write("id,days\nerin,2\n")
+        # Per-student variants: the secret's file, outside the kit, is the instructor's alone.
+        rubric["variants"] = {"per_student": True, "secret_file": "class-secret.txt",
+                              "furnace": {"albedo": [0.3, 0.7]}}
+        with open(os.path.join(root, "class-secret.txt"), "w") as f:
+            f.write("the course's own secret, 2026\n")
         course = os.path.join(root, "course-rubric.json")
         json.dump(rubric, open(course, "w"), indent=1)
         out = os.path.join(root, "release.tar.gz")
@@ -74,11 +82,13 @@ def main():
         described = subprocess.run([GRADER, "rubric", "--rubric", course], capture_output=True, text=True).stdout
         packed = json.load(open(os.path.join(grader_folder, "rubric.json")))
         expected = {k: v for k, v in rubric.items() if k not in ("late", "regrades")}
+        expected["variants"] = {k: v for k, v in rubric["variants"].items() if k != "secret_file"}
         check(packed == expected and release["rubric"] == "course-rubric.json"
               and f"(hash {release['rubric_hash']})" in described
-              and not os.path.exists(os.path.join(grader_folder, "extensions.csv")),
+              and not os.path.exists(os.path.join(grader_folder, "extensions.csv"))
+              and not os.path.exists(os.path.join(grader_folder, "class-secret.txt")),
               "the release's rubric is the instructor's, but its late policy and regrade setting (the gradebook's, "
-              f"naming students), and release.json names it and its hash ({release})")
+              f"naming students) and its class secret's name, and release.json names it and its hash ({release})")
         furnace = json.load(open(os.path.join(grader_folder, "references", "furnace.json")))
         kit_box = os.path.join(KIT, "grader", "references", "cornell_box_VI2_Specular.json")
         check(furnace["width"] == 32 and filecmp.cmp(os.path.join(grader_folder, "references",
@@ -96,6 +106,16 @@ def main():
         says = subprocess.run([GRADER, "rubric", "--rubric", released], capture_output=True, text=True).stdout
         check("is not that rubric" in says and "may differ from your instructor's" in says,
               "an edited rubric in the release is told apart from the instructor's")
+
+        # A class secret that git tracks in the kit would ship in the release: refused.
+        tracked = dict(rubric, variants=dict(rubric["variants"], secret_file=os.path.join(KIT, "models", "furnace.mtl")))
+        tracked_rubric = os.path.join(root, "tracked-secret.json")
+        json.dump(tracked, open(tracked_rubric, "w"))
+        tracked_out = os.path.join(root, "tracked.tar.gz")
+        refused = package(tracked_out, tracked_rubric)
+        check(refused.returncode == 2 and "would ship in the release" in refused.stderr
+              and "models/furnace.mtl" in refused.stderr and not os.path.exists(tracked_out),
+              f"a class secret that is a file of the kit stops the packaging ({refused.stderr.strip()[-200:]})")
 
         del rubric["points"]["mis"]
         broken = os.path.join(root, "broken.json")

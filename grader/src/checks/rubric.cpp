@@ -158,8 +158,15 @@ Rubric loadRubric(const std::string& path) {
         r.late = readLatePolicy(j.contains("late") ? j.at("late") : nlohmann::json(), path);
         r.variants =
             readVariantSettings(j.contains("variants") ? j.at("variants") : nlohmann::json(), path);
+        if (j.contains("gradescope")) {
+            const auto& g = j.at("gradescope");
+            if (!g.is_object() || !g.contains("leaderboard") || !g.at("leaderboard").is_boolean())
+                throw InputError(path + ": gradescope.leaderboard must be true or false");
+            r.gradescopeLeaderboard = g.at("leaderboard").get<bool>();
+        }
         j.erase("regrades"); // which total the gradebook shows: no result goes stale for it
         j.erase("late");
+        j.erase("gradescope");
         // The secret's file may move, and a release's rubric leaves it out: its text is in the
         // scenes' hash instead (grading_scenes.h).
         if (j.contains("variants") && j["variants"].is_object()) j["variants"].erase("secret_file");

@@ -88,6 +88,9 @@ struct Rubric {
     LowerScores lowerScores = LowerScores::Undecided;
     /// What a late submission loses (the section "late"); not in `hash`, for the same reason.
     LatePolicy late;
+    /// Gradescope's results.json carries a leaderboard (gradescope.leaderboard); not in `hash`:
+    /// it shows figures, it grades nothing.
+    bool gradescopeLeaderboard = false;
     /// A fingerprint of every setting (the file's JSON, reformatted, without "about"): each
     /// result records it, so that results graded under another rubric are never mixed.
     std::string hash;

@@ -88,6 +88,18 @@ std::string rubricText(const Rubric& r, const std::string& rubricPath, int hidde
                "other colours and light)\n";
     else
         out << "  hidden scenes: none here (your instructor's grader may add some)\n";
+    if (r.variants.perStudent) {
+        const VariantSettings& v = r.variants;
+        out << "  each student's own scenes too (variants): a furnace of albedo in ["
+            << v.albedo.low << ", " << v.albedo.high << "], Le in [" << v.emission.low << ", "
+            << v.emission.high << "], maxDepth in [" << v.maxDepth.low << ", " << v.maxDepth.high
+            << "] (analytic)";
+        if (!v.boxScene.empty())
+            out << ",\n  and " << v.boxScene << " with each Kd times [" << v.reflectance.low << ", "
+                << v.reflectance.high << "] and each Ke times [" << v.light.low << ", "
+                << v.light.high << "]";
+        out << "; make grade VARIANT=DIR grades on yours\n";
+    }
 
     out << "\nnoise: the per-sample variance on " << r.noiseScene
         << ", from the spread of the correctness "
@@ -118,6 +130,20 @@ std::string rubricText(const Rubric& r, const std::string& rubricPath, int hidde
         << r.secondsPerRun * WallLimitFactor
         << " s of wall-clock time at most\n  (none depends on how busy the machine is), "
         << (r.memoryBytes >> 20) << " MB of memory\n";
+    if (r.late.given)
+        out << "\nlate: " << r.late.slipDays << " slip day(s) per student, then "
+            << r.late.penaltyPerDay * 100 << "% of the total per late day, at most "
+            << r.late.maxPenalty * 100 << "%"
+            << (r.late.extensionDays.empty()
+                    ? std::string()
+                    : "; " + std::to_string(r.late.extensionDays.size()) + " extension(s)")
+            << "\n";
+    if (r.lowerScores != LowerScores::Undecided)
+        out << "regrades: " << lowerScoresName(r.lowerScores)
+            << (r.lowerScores == LowerScores::Replace ? " (a regrade's lower total counts)"
+                                                      : " (the higher total of the same files "
+                                                        "counts)")
+            << "\n";
     return out.str();
 }
 

@@ -62,6 +62,10 @@ std::string classSecret(const VariantSettings& settings) {
                             std::to_string(ShortestSecret) +
                             " characters: head -c 24 /dev/urandom | base64 > FILE) and keep it "
                             "from the students, as the hidden scenes";
+    if (settings.secretFile.empty())
+        throw InputError("the rubric's variants.per_student needs variants.secret_file, the file "
+                         "of the class secret (a path relative to the rubric): " +
+                         how);
     if (!fs::is_regular_file(settings.secretFile))
         throw InputError("variants.secret_file '" + settings.secretFile +
                          "' does not exist: " + how);

@@ -35,14 +35,18 @@ VariantSettings readVariantSettings(const nlohmann::json& section, const std::st
     if (!section.is_object()) throw InputError(where + " must be an object");
     s.perStudent = section.value("per_student", false);
     if (!s.perStudent) return s;
-    if (!section.contains("secret_file") || !section.at("secret_file").is_string())
-        throw InputError(where + ".secret_file must name the file of the class secret (a path "
-                                 "relative to the rubric), kept from the students");
-    const std::filesystem::path file = section.at("secret_file").get<std::string>();
-    s.secretFile =
-        (file.is_absolute() ? file : std::filesystem::path(rubricPath).parent_path() / file)
-            .lexically_normal()
-            .string();
+    // A student release's rubric has no secret_file (its packaging leaves it out): it grades on
+    // the student's variant folder, and only the instructor's commands ask for the secret.
+    if (section.contains("secret_file")) {
+        if (!section.at("secret_file").is_string())
+            throw InputError(where + ".secret_file must name the file of the class secret (a "
+                                     "path relative to the rubric), kept from the students");
+        const std::filesystem::path file = section.at("secret_file").get<std::string>();
+        s.secretFile =
+            (file.is_absolute() ? file : std::filesystem::path(rubricPath).parent_path() / file)
+                .lexically_normal()
+                .string();
+    }
     const nlohmann::json none = nlohmann::json::object();
     const nlohmann::json& furnace = section.contains("furnace") ? section.at("furnace") : none;
     // An albedo below 0.9 keeps lab 4's roulette of finite variance at the rubric's continueProb

@@ -17,7 +17,9 @@ struct DrawRange {
 
 struct VariantSettings {
     bool perStudent = false;
-    std::string secretFile; ///< absolute; its text and a student's id seed the student's variant
+    /// Absolute; its text and a student's id seed the student's variant. "" in a student
+    /// release's rubric, which grades on the student's variant folder instead.
+    std::string secretFile;
     // The analytic furnace each student grades on: diffuse walls of albedo a emitting Le,
     // rendered at maxDepth D (a whole number, both ends included).
     DrawRange albedo{0.3, 0.8};

@@ -82,6 +82,9 @@ batch
                       them again); the gradebook marks them stale
   --deadline TIME     flag submissions made after TIME (2026-12-01T23:59, local time, or with
                       Z or +01:00) as late in the gradebook
+  --submitted-at TIME submission: when it was handed in; with --deadline, the rubric's late
+                      policy lowers its Gradescope and PrairieLearn scores (run_autograder
+                      passes Gradescope's created_at and due date)
   --times FILE.csv    submission times (id,submitted_at) from your LMS, in place of those found
                       (a git repository's last commit, else the submission's file time)
   --shard K/N         grade only every N-th submission, starting at the K-th (0-based)
@@ -177,6 +180,7 @@ const std::map<std::string, std::string Arguments::*>& textOptions() {
         {"--viewer", &Arguments::viewer},
         {"--solution-viewer", &Arguments::solutionViewer},
         {"--deadline", &Arguments::deadline},
+        {"--submitted-at", &Arguments::submittedAt},
         {"--times", &Arguments::times},
         {"--rubric", &Arguments::rubric},
         {"--references", &Arguments::references},
@@ -316,6 +320,8 @@ void requireWhatTheCommandNeeds(const Arguments& a) {
     if ((a.command == "submission" || a.command == "batch" || a.command == "merge") &&
         a.out.empty())
         throw InputError("grader " + a.command + " needs --out DIR");
+    if (!a.submittedAt.empty() && (a.command != "submission" || a.deadline.empty()))
+        throw InputError("option --submitted-at is for grader submission, with --deadline");
     if (a.command == "student-variants" && (a.inputs.empty() || a.out.empty()))
         throw InputError("grader student-variants expects the students' ids and --out DIR");
     if (!a.variant.empty() && a.command != "grade")

@@ -46,6 +46,9 @@ struct Arguments {
     bool keepStale = false;        ///< keep results graded under another rubric or scenes
     std::string deadline;          ///< ISO 8601; a submission after it is flagged late
     std::string times;             ///< a CSV of id,submitted_at that overrides the times found
+    /// submission: when it was handed in (Gradescope's created_at), for the rubric's late policy
+    /// against --deadline.
+    std::string submittedAt;
     int shard = 0, shards = 1;
     // submission, as batch starts it (and run_autograder)
     std::string kit; ///< compiled lab kit (default: built in the output folder)

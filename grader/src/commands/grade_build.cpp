@@ -134,7 +134,8 @@ void writeReports(const Arguments& a, const Rubric& rubric, const GradeReport& r
     if (!a.json.empty()) writeFileAtomically(a.json, jsonReport(report));
     if (!a.junit.empty()) writeFileAtomically(a.junit, junitReport(report));
     if (!a.gradescope.empty())
-        writeFileAtomically(a.gradescope, gradescopeReport(report, rubric.hiddenScenesVisibility));
+        writeFileAtomically(a.gradescope, gradescopeReport(report, rubric.hiddenScenesVisibility,
+                                                           rubric.gradescopeLeaderboard));
     if (!a.prairielearn.empty()) writeFileAtomically(a.prairielearn, prairieLearnReport(report));
     if (!a.html.empty()) writeHtmlReport(report, a.html);
 }

@@ -6,10 +6,43 @@
 #include "commands/grading_host.h"
 #include "commands/output_lock.h"
 #include "commands/submission_grading.h"
+#include "reports/submission_time.h"
+
+#include "pathlab/support/input_error.h"
 
 #include <cstdio>
 
 namespace pathlab::grader {
+
+namespace {
+
+/// The rubric's late policy on a submission handed in at --submitted-at against --deadline (as
+/// Gradescope's submission_metadata.json gives them): the fraction it loses goes into the
+/// report, which Gradescope's and PrairieLearn's scores are after, and a note says why.
+void applyLatePolicy(const Arguments& a, const Rubric& rubric, SubmissionOutcome& outcome) {
+    const auto submitted = parseTime(a.submittedAt), deadline = parseTime(a.deadline);
+    if (!submitted)
+        throw InputError("option --submitted-at: '" + a.submittedAt + "' is not a time");
+    if (!deadline) throw InputError("option --deadline: '" + a.deadline + "' is not a time");
+    if (!rubric.late.given) {
+        if (*submitted > *deadline)
+            outcome.report.notes.push_back("handed in after the deadline; the rubric has no late "
+                                           "policy, so the score is not lowered");
+        return;
+    }
+    const Lateness late = latenessOf(rubric.late, outcome.id, *submitted, *deadline);
+    if (late.daysLate == 0) return;
+    outcome.report.latePenalty = late.penalty;
+    char note[240];
+    std::snprintf(note, sizeof note,
+                  "late: %d day(s) after the deadline, %d slip day(s) forgiven: the score loses "
+                  "%g%% (the rubric's late policy), %g of %g",
+                  late.daysLate, late.slipDaysUsed, late.penalty * 100,
+                  outcome.report.score() * (1 - late.penalty), outcome.report.maxScore());
+    outcome.report.notes.push_back(note);
+}
+
+} // namespace
 
 int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
     requireSandbox();
@@ -48,6 +81,7 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
     }
     SubmissionOutcome outcome = gradeSubmission(g, a.inputs[0], a.out, scratch);
     outcome.report.notes.insert(outcome.report.notes.begin(), notes.begin(), notes.end());
+    if (!a.submittedAt.empty()) applyLatePolicy(a, rubric, outcome);
     std::printf("%s: %s\n", outcome.id.c_str(), outcome.status.c_str());
     std::fputs(terminalReport(outcome.report, false).c_str(), stdout);
     writeReports(a, rubric, outcome.report);

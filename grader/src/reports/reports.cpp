@@ -289,7 +289,27 @@ std::string junitReport(const GradeReport& report) {
     return out.str();
 }
 
-std::string gradescopeReport(const GradeReport& report, const std::string& hiddenVisibility) {
+namespace {
+
+/// Gradescope's leaderboard (its "leaderboard" array; Gradescope shows it under the pseudonyms the
+/// students choose): the total, then per lab its efficiency over the reference solution's, the
+/// time to equal noise, which only a correct lab has (0 otherwise, ranked last), higher first.
+nlohmann::json gradescopeLeaderboard(const GradeReport& report) {
+    nlohmann::json board = nlohmann::json::array();
+    board.push_back({{"name", "total"}, {"value", report.score()}});
+    for (const LabGrade& lab : report.labs) {
+        const bool correct = !lab.checks.empty() && lab.checks.front().passed;
+        const double ratio = correct ? lab.efficiencyRatio : 0;
+        board.push_back({{"name", std::string(labName(lab.lab)) + ": efficiency / reference"},
+                         {"value", std::round(ratio * 1000) / 1000}});
+    }
+    return board;
+}
+
+} // namespace
+
+std::string gradescopeReport(const GradeReport& report, const std::string& hiddenVisibility,
+                             bool leaderboard) {
     nlohmann::json tests = nlohmann::json::array();
     for (const LabGrade& lab : report.labs) {
         for (const CheckResult& c : lab.checks)
@@ -318,11 +338,11 @@ std::string gradescopeReport(const GradeReport& report, const std::string& hidde
                              {"visibility", hiddenVisibility}});
         }
     }
-    const nlohmann::json j = {
-        {"score", report.score()},
-        {"execution_time", static_cast<int>(report.seconds + 0.5)},
-        {"output", terminalReport(report, false, HiddenVerdicts::InTheirOwnTest)},
-        {"tests", tests}};
+    nlohmann::json j = {{"score", report.score() * (1 - report.latePenalty)},
+                        {"execution_time", static_cast<int>(report.seconds + 0.5)},
+                        {"output", terminalReport(report, false, HiddenVerdicts::InTheirOwnTest)},
+                        {"tests", tests}};
+    if (leaderboard) j["leaderboard"] = gradescopeLeaderboard(report);
     return j.dump(2) + "\n";
 }
 
@@ -342,7 +362,7 @@ std::string prairieLearnReport(const GradeReport& report) {
     const double max = report.maxScore();
     const nlohmann::json j = {
         {"gradable", true},
-        {"score", max > 0 ? report.score() / max : 0.0},
+        {"score", max > 0 ? report.score() * (1 - report.latePenalty) / max : 0.0},
         {"message",
          scoreText(report.score(), max, report.pointsNotGradedHere(), report.pointsAtRisk())},
         {"output", terminalReport(report, false, HiddenVerdicts::LeftOut)},

@@ -29,6 +29,9 @@ struct GradeReport {
         std::string how;      ///< "graded", or "re-scored" from an earlier attempt's measurements
     };
     std::vector<Attempt> earlierAttempts;
+    /// The fraction of the score a late submission loses (the rubric's late policy, applied by
+    /// `grader submission --submitted-at`): Gradescope's and PrairieLearn's scores are after it.
+    double latePenalty = 0;
 
     double score() const;
     double maxScore() const; ///< of the checks graded here
@@ -57,7 +60,8 @@ std::string junitReport(const GradeReport& report);
 /// Gradescope's results.json: score, execution_time, output, tests[] (name, score, max_score,
 /// status, output, visibility). Each lab graded on hidden scenes has a test "LAB: hidden scenes"
 /// (no points of its own) with `hiddenVisibility` (rubric: hidden_scenes.gradescope_visibility).
-std::string gradescopeReport(const GradeReport& report, const std::string& hiddenVisibility);
+std::string gradescopeReport(const GradeReport& report, const std::string& hiddenVisibility,
+                             bool leaderboard = false);
 /// PrairieLearn's external-grader results.json: gradable, score (a fraction of the maximum),
 /// message, output, tests[] (name, description, points, max_points, message, output), a test per
 /// lab and check graded here. The hidden scenes' verdicts are left out: PrairieLearn has no
