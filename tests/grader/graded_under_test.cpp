@@ -307,6 +307,13 @@ TEST_CASE("a gradebook never mixes maxima, says pending, stale and late", "[grad
     CHECK(summary.find("1 pending, 2 stale") != std::string::npos);
     CHECK(summary.find("<tr><td>uniform</td><td>2</td><td>1</td><td>97%</td>") !=
           std::string::npos);
+    // A histogram per lab, beside the totals'.
+    size_t charts = 0;
+    for (size_t at = summary.find(" score, % of its maximum"); at != std::string::npos;
+         at = summary.find(" score, % of its maximum", at + 1))
+        ++charts;
+    CHECK(charts == LabCount);
+    CHECK(summary.find("mis score, % of its maximum") != std::string::npos);
     CHECK(readText(scratch.path / "similarity.csv") ==
           "lab,first,second,similarity\nuniform,alice,reference solutions,0.97\n");
 }

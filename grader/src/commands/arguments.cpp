@@ -25,6 +25,9 @@ the instructor's (they need the reference solutions, or a batch's output):
        grader merge DIR... --out DIR          merge the gradebooks of batch shards
        grader make-variants DIR               write the rubric's variants of the public scenes
                                               into DIR, as hidden scenes (--variant-seed N)
+       grader keep-term OUT --term NAME --prior DIR
+                                              keep a graded class's lab files as tokens (no
+                                              code) in DIR/NAME.json, for later terms' --prior
        grader student-variants ID... --out DIR
                                               write each student's own variant folder, DIR/ID/
                                               (the rubric's variants.per_student), to send them
@@ -87,6 +90,8 @@ batch
                       passes Gradescope's created_at and due date)
   --times FILE.csv    submission times (id,submitted_at) from your LMS, in place of those found
                       (a git repository's last commit, else the submission's file time)
+  --prior DIR         also compare the class's files with the earlier terms kept in DIR
+                      (grader keep-term), not those among themselves; merge takes it too
   --shard K/N         grade only every N-th submission, starting at the K-th (0-based)
   --no-race-check     skip the race check (each lab compiled with ThreadSanitizer and rendered
                       with 2 threads: a data race in its own code fails correctness)
@@ -152,11 +157,11 @@ int readCommand(int argc, char** argv, Arguments& a) {
     int first = 1;
     const std::string command = argv[1];
     for (const char* known : {"make-references", "submission", "batch", "merge", "rubric",
-                              "make-variants", "student-variants"})
+                              "make-variants", "student-variants", "keep-term"})
         if (command == known) a.command = command, first = 2;
     // The instructor's commands compile or run the reference solutions.
     if (!PATHLAB_HAS_SOLUTIONS && first == 2 && a.command != "merge" && a.command != "rubric" &&
-        a.command != "make-variants")
+        a.command != "make-variants" && a.command != "keep-term")
         throw InputError("grader " + a.command +
                          " is the instructor's: it needs the reference "
                          "solutions (solutions/), which the student release does not have; "
@@ -181,6 +186,8 @@ const std::map<std::string, std::string Arguments::*>& textOptions() {
         {"--solution-viewer", &Arguments::solutionViewer},
         {"--deadline", &Arguments::deadline},
         {"--submitted-at", &Arguments::submittedAt},
+        {"--prior", &Arguments::prior},
+        {"--term", &Arguments::term},
         {"--times", &Arguments::times},
         {"--rubric", &Arguments::rubric},
         {"--references", &Arguments::references},
@@ -283,7 +290,8 @@ void readOptions(int argc, char** argv, int first, Arguments& a, bool& scenesGiv
         else if (!arg.empty() && arg[0] == '-')
             throw InputError("unknown option '" + arg + "' (grader --help lists the options)");
         else if (a.command == "submission" || a.command == "batch" || a.command == "merge" ||
-                 a.command == "make-variants" || a.command == "student-variants")
+                 a.command == "make-variants" || a.command == "student-variants" ||
+                 a.command == "keep-term")
             a.inputs.push_back(arg);
         else
             throw InputError("unexpected argument '" + arg +
@@ -320,6 +328,16 @@ void requireWhatTheCommandNeeds(const Arguments& a) {
     if ((a.command == "submission" || a.command == "batch" || a.command == "merge") &&
         a.out.empty())
         throw InputError("grader " + a.command + " needs --out DIR");
+    if (a.command == "keep-term" && (a.inputs.size() != 1 || a.term.empty() || a.prior.empty()))
+        throw InputError("grader keep-term expects one batch output folder, --term NAME and "
+                         "--prior DIR");
+    if (!a.prior.empty() && a.command != "batch" && a.command != "merge" &&
+        a.command != "keep-term")
+        throw InputError("option --prior is for grader batch, merge and keep-term");
+    // Said now, not after a batch's gradings, when the similarity report reads it.
+    if (!a.prior.empty() && a.command != "keep-term" && !std::filesystem::is_directory(a.prior))
+        throw InputError("option --prior: '" + a.prior +
+                         "' is not a folder (grader keep-term writes one)");
     if (!a.submittedAt.empty() && (a.command != "submission" || a.deadline.empty()))
         throw InputError("option --submitted-at is for grader submission, with --deadline");
     if (a.command == "student-variants" && (a.inputs.empty() || a.out.empty()))

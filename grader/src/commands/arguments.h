@@ -46,6 +46,10 @@ struct Arguments {
     bool keepStale = false;        ///< keep results graded under another rubric or scenes
     std::string deadline;          ///< ISO 8601; a submission after it is flagged late
     std::string times;             ///< a CSV of id,submitted_at that overrides the times found
+    /// batch, merge: earlier terms' token files to compare with (similarity/prior_terms.h);
+    /// keep-term: where to write this term's.
+    std::string prior;
+    std::string term; ///< keep-term: the term's name
     /// submission: when it was handed in (Gradescope's created_at), for the rubric's late policy
     /// against --deadline.
     std::string submittedAt;

@@ -440,7 +440,7 @@ int runBatch(const Arguments& given, const Rubric& rubric, const std::string& sc
     const JobCounts counts =
         gradeInJobs(a.jobs, childBase, selection.todo, submissions, out, grading, log);
     const double gradingSeconds = secondsSince(gradingsStart); // the similarity report apart
-    const std::vector<SimilarLabs> similar = similarSubmissions(out, idsOf(submissions));
+    const std::vector<SimilarLabs> similar = similarSubmissions(out, idsOf(submissions), a.prior);
     writeGradebook(out, gradebookEntries(out, submissions, {}), grading, similar);
     writeSideBySidePages(out, similarClusters(similar));
     std::vector<Submission> gradedNow = selection.todo;

@@ -89,7 +89,7 @@ int mergeBatches(const Arguments& a) {
               [](const GradebookEntry& x, const GradebookEntry& y) { return x.id < y.id; });
     std::vector<std::string> ids;
     for (const GradebookEntry& e : all) ids.push_back(e.id);
-    const std::vector<SimilarLabs> similar = similarSubmissions(a.out, ids);
+    const std::vector<SimilarLabs> similar = similarSubmissions(a.out, ids, a.prior);
     writeGradebook(a.out, all, now, similar);
     writeSideBySidePages(a.out, similarClusters(similar));
     std::printf("merged %zu submission(s) from %zu shard(s): %s/gradebook.csv\n", all.size(),

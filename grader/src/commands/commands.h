@@ -24,6 +24,8 @@ int runBatch(const Arguments& a, const Rubric& rubric, const std::string& scratc
 int mergeBatches(const Arguments& a);
 /// Writes the rubric's scene variants into the folder named (grader make-variants).
 int makeVariants(const Arguments& a, const Rubric& rubric);
+/// Keeps a graded class's lab files as tokens for later terms (grader keep-term).
+int keepTerm(const Arguments& a);
 /// Writes each student's variant folder, --out/ID/ (student_variant.h).
 int makeStudentVariants(const Arguments& a, const Rubric& rubric, const std::string& scratch);
 /// The seed of scene variants: --variant-seed, else the one kept in the file `keptIn`, else a

@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
                 return 0;
             }
             if (a.command == "merge") return mergeBatches(a);
+            if (a.command == "keep-term") return keepTerm(a);
             const Rubric rubric = loadRubric(a.rubric);
             if (a.command == "rubric") {
                 const int hidden = a.scenesDir.empty()

@@ -182,16 +182,30 @@ std::string lmsCsv(const std::vector<GradebookEntry>& entries, const GradingNow&
     return text;
 }
 
-/// A bar chart of the totals in tenths of the maximum, as inline SVG.
-std::string histogram(const std::vector<GradebookEntry>& entries) {
+/// A bar chart of the totals in tenths of the maximum, as inline SVG; of one lab's scores in
+/// tenths of its maximum with `lab` (a submission without that lab counts as 0).
+std::string histogram(const std::vector<GradebookEntry>& entries,
+                      std::optional<Lab> lab = std::nullopt) {
     std::array<int, 10> bins{};
     for (const GradebookEntry& e : entries) {
         if (e.result.is_null()) continue;
-        const double max = e.result.value("max_score", 0.0);
-        const double fraction = max > 0 ? e.result.value("score", 0.0) / max : 0;
-        ++bins[std::min(9, static_cast<int>(std::floor(fraction * 10)))];
+        const nlohmann::json scored =
+            lab ? e.result.value("labs", nlohmann::json::object())
+                      .value(std::string(labName(*lab)), nlohmann::json::object())
+                : e.result;
+        const double max = scored.value("max_score", 0.0);
+        const double fraction = max > 0 ? scored.value("score", 0.0) / max : 0;
+        ++bins[std::clamp(static_cast<int>(std::floor(fraction * 10)), 0, 9)];
     }
-    return histogramSvg(bins, "total score, % of the maximum");
+    return histogramSvg(bins, lab ? std::string(labName(*lab)) + " score, % of its maximum"
+                                  : std::string("total score, % of the maximum"));
+}
+
+/// A histogram per lab, side by side where the page is wide enough.
+std::string labHistograms(const std::vector<GradebookEntry>& entries) {
+    std::string html = "<div style=\"display:flex;flex-wrap:wrap;gap:1em\">\n";
+    for (Lab lab : AllLabs) html += "<div>" + histogram(entries, lab) + "</div>\n";
+    return html + "</div>\n";
 }
 
 /// The pairs of submissions whose files of a lab are alike, grouped into clusters: a hint to
@@ -344,7 +358,7 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
                 "or <code>keep_higher</code> (their status says from what to what).</p>\n";
     html << "<h2>Scores</h2>\n"
          << histogram(entries) << "<h2>Labs</h2>\n"
-         << labTable(entries) << "<h2>Most common diagnoses</h2>\n"
+         << labTable(entries) << labHistograms(entries) << "<h2>Most common diagnoses</h2>\n"
          << "<table><tr><th>submissions</th><th>lab</th><th>diagnosis</th><th>whose</th></tr>\n";
     for (const auto& [count, key] : common) {
         std::string whose;

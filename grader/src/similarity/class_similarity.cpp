@@ -1,5 +1,6 @@
 #include "similarity/class_similarity.h"
 
+#include "similarity/prior_terms.h"
 #include "similarity/similarity.h"
 
 #include "pathlab/render/lab_registry.h"
@@ -13,7 +14,8 @@ namespace pathlab::grader {
 namespace fs = std::filesystem;
 
 std::vector<SimilarLabs> similarSubmissions(const std::string& out,
-                                            const std::vector<std::string>& ids) {
+                                            const std::vector<std::string>& ids,
+                                            const std::string& priorDir) {
     const fs::path kit = fs::path(PATHLAB_GRADER_DIR).parent_path();
     std::vector<SubmittedFile> files;
     std::map<std::string, std::string> stubs;
@@ -29,6 +31,8 @@ std::vector<SimilarLabs> similarSubmissions(const std::string& out,
                 files.push_back({id, name, readFile(submitted.string())});
         }
     }
+    if (!priorDir.empty())
+        for (SubmittedFile& earlier : priorTermFiles(priorDir)) files.push_back(std::move(earlier));
     std::vector<SimilarLabs> similar;
     for (const SimilarPair& pair : similarPairs(files, stubs, DefaultSimilarityThreshold))
         similar.push_back({pair.first, pair.second, pair.lab, pair.similarity});

@@ -1,6 +1,7 @@
 #include "similarity/side_by_side.h"
 
 #include "reports/page_style.h"
+#include "similarity/prior_terms.h"
 #include "reports/reports.h"
 
 #include "pathlab/render/lab_registry.h"
@@ -26,6 +27,9 @@ namespace {
 std::string labFileOf(const std::string& out, const std::string& id, const std::string& lab) {
     const std::optional<Lab> known = labFromName(lab);
     if (!known) return "";
+    if (isPriorSubmission(id))
+        return "(an earlier term's submission: PathLab kept its normalised tokens only, not its "
+               "code; the similarity is of those)";
     const std::string file = labFileName(*known);
     const fs::path path = id == "reference solutions"
                               ? fs::path(PATHLAB_GRADER_DIR).parent_path() / "solutions" / file

@@ -335,6 +335,7 @@ void addSimilarPairs(const std::string& lab, const std::vector<const SubmittedFi
     for (size_t i = 0; i < files.size(); ++i)
         for (size_t j = i + 1; j < files.size(); ++j) {
             if (files[i]->submission == files[j]->submission) continue;
+            if (files[i]->prior && files[j]->prior) continue; // earlier terms were compared then
             const double alike = containment(own[i], own[j]);
             if (alike < threshold) continue;
             const auto [first, second] = std::minmax(files[i]->submission, files[j]->submission);
@@ -394,7 +395,8 @@ std::vector<SimilarPair> similarPairs(const std::vector<SubmittedFile>& files,
         // Each file's own k-grams once, not once per pair: a class of n has n(n-1)/2 pairs.
         std::vector<std::vector<Hash>> own;
         for (const SubmittedFile* file : labFiles)
-            own.push_back(ownGrams(normalisedTokens(file->source), base.tokens, base.grams));
+            own.push_back(ownGrams(file->prior ? file->tokens : normalisedTokens(file->source),
+                                   base.tokens, base.grams));
         addSimilarPairs(lab, labFiles, own, threshold, pairs);
     }
     std::sort(pairs.begin(), pairs.end(), listedBefore);

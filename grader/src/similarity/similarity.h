@@ -47,6 +47,10 @@ struct SubmittedFile {
     std::string submission; ///< the submission's id in the gradebook
     std::string lab;        ///< "branching", "uniform", ...
     std::string source;     ///< the lab file's text
+    /// An earlier term's file (prior_terms.h): its normalised tokens only, no source. Compared
+    /// with this term's files, never with another earlier term's.
+    bool prior = false;
+    std::vector<std::string> tokens;
 };
 
 struct SimilarPair {
@@ -57,7 +61,8 @@ struct SimilarPair {
 
 /// Every pair of submissions whose file of the same lab is at least `threshold` alike (each lab
 /// compared with the same lab's files only, `bases` maps lab name -> stub source; a lab without
-/// a stub there is compared whole), most alike first. A submission is never paired with itself.
+/// a stub there is compared whole), most alike first. A submission is never paired with itself,
+/// nor an earlier term's file with another's.
 std::vector<SimilarPair> similarPairs(const std::vector<SubmittedFile>& files,
                                       const std::map<std::string, std::string>& bases,
                                       double threshold = DefaultSimilarityThreshold);
