@@ -34,6 +34,7 @@ import importlib.util
 import json
 import math
 import os
+import re
 import shutil
 import stat
 import subprocess
@@ -199,8 +200,13 @@ def check_specification(results, what):
             problems.append(f"{name}: visibility {t.get('visibility')!r}")
     if tests and number(results.get("score")) and all(number(t.get("score")) for t in tests):
         total = sum(t["score"] for t in tests)
-        if abs(total - results["score"]) > 1e-6:
-            problems.append(f"score {results['score']} is not the sum of the tests' {total}")
+        # A late submission's score is the tests' sum less the penalty its output states (the
+        # top-level score is the one Gradescope takes).
+        late = re.search(r"the score loses ([\d.]+)%", str(results.get("output", "")))
+        expected = total * (1 - float(late.group(1)) / 100) if late else total
+        if abs(expected - results["score"]) > 1e-6:
+            problems.append(f"score {results['score']} is not the sum of the tests' {total}"
+                            + (f" less the stated {late.group(1)}%" if late else ""))
     check(not problems, f"{what}: results.json follows Gradescope's specification {problems}")
 
 
