@@ -49,8 +49,8 @@ std::vector<SubmittedFile> priorTermFiles(const std::string& dir) {
             const std::string term = j.at("term");
             for (const auto& [lab, kept] : j.at("labs").items())
                 for (const nlohmann::json& file : kept)
-                    files.push_back({term + "/" + file.at("id").get<std::string>(), lab, "", true,
-                                     file.at("tokens").get<std::vector<std::string>>()});
+                    files.emplace_back(term + "/" + file.at("id").get<std::string>(), lab,
+                                       file.at("tokens").get<std::vector<std::string>>());
         } catch (const nlohmann::json::exception& e) {
             throw InputError(path.string() + ": not an earlier term kept by grader keep-term (" +
                              e.what() + ")");

@@ -6,6 +6,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pathlab::grader {
@@ -44,6 +45,14 @@ double similarity(const std::vector<std::string>& a, const std::vector<std::stri
                   const std::vector<std::string>& base);
 
 struct SubmittedFile {
+    /// This term's file.
+    SubmittedFile(std::string submission, std::string lab, std::string source)
+        : submission(std::move(submission)), lab(std::move(lab)), source(std::move(source)) {}
+    /// An earlier term's file, its tokens only.
+    SubmittedFile(std::string submission, std::string lab, std::vector<std::string> tokens)
+        : submission(std::move(submission)), lab(std::move(lab)), prior(true),
+          tokens(std::move(tokens)) {}
+
     std::string submission; ///< the submission's id in the gradebook
     std::string lab;        ///< "branching", "uniform", ...
     std::string source;     ///< the lab file's text
