@@ -145,6 +145,33 @@ class PackagingError(Exception):
     """A reason the package cannot be made, in one line; nothing is written."""
 
 
+def rubric_named_files(rubric):
+    """{what: absolute path} of the files the rubric at `rubric` names, relative to its folder:
+    the class secret (variants.secret_file) and the late policy's extensions (late.extensions).
+    Both are the instructor's: the secret keeps the variants, the extensions name students."""
+    try:
+        with open(rubric) as f:
+            j = json.load(f)
+    except (OSError, ValueError):
+        return {}
+    named = {}
+    for what, section, key in (("the class secret", "variants", "secret_file"),
+                               ("the late policy's extensions", "late", "extensions")):
+        value = j.get(section, {}).get(key) if isinstance(j.get(section), dict) else None
+        if isinstance(value, str) and value:
+            named[what] = os.path.realpath(os.path.join(os.path.dirname(os.path.abspath(rubric)), value))
+    return named
+
+
+def refuse_shipping_named_files(files, rubric):
+    """A student release must not carry the secret or the extensions the rubric names."""
+    for what, path in rubric_named_files(rubric).items():
+        shipped = [n for n, f in files.items() if os.path.realpath(f) == path]
+        if shipped:
+            raise PackagingError(f"{what} {path} is a file of the kit ({shipped[0]}) and would ship "
+                                 "in the release: keep it outside the kit, or out of git")
+
+
 def instructor_rubric(rubric, build, scratch):
     """{name in the release: file to pack} for the instructor's rubric: the rubric itself, the
     references that fit it (measured again where the kit's do not) and release.json; the grader
@@ -176,10 +203,8 @@ def instructor_rubric(rubric, build, scratch):
         packed.pop(section, None)
     # Per-student variants: the class secret's file stays with the instructor, and so does its
     # name (outside the hash too); a student grades on their own variant folder instead.
-    secret = None
-    if isinstance(packed.get("variants"), dict) and "secret_file" in packed["variants"]:
-        secret = os.path.realpath(os.path.join(os.path.dirname(rubric),
-                                               packed["variants"].pop("secret_file")))
+    if isinstance(packed.get("variants"), dict):
+        packed["variants"].pop("secret_file", None)
     packed_rubric = os.path.join(scratch, "rubric.json")
     with open(packed_rubric, "w") as f:
         json.dump(packed, f, indent=1)
@@ -192,20 +217,17 @@ def instructor_rubric(rubric, build, scratch):
     files = {RUBRIC: packed_rubric, RELEASE_JSON: release}
     for name in sorted(os.listdir(references)):
         files[REFERENCES + name] = os.path.join(references, name)
-    return files, found.group(1), secret
+    return files, found.group(1)
 
 
 def student_release(out, root=KIT, rubric=None, build=None):
     files = {name: os.path.join(root, f) for name, f in student_files(root).items()}
     with tempfile.TemporaryDirectory() as scratch:
+        # Whichever rubric the release carries, what it names for the instructor stays behind.
+        refuse_shipping_named_files(files, rubric or os.path.join(root, RUBRIC))
         if rubric:
-            instructors, rubric_hash, secret = instructor_rubric(rubric, build, scratch)
+            instructors, rubric_hash = instructor_rubric(rubric, build, scratch)
             files = {n: f for n, f in files.items() if n != RUBRIC and not n.startswith(REFERENCES)}
-            shipped = [n for n, f in files.items() if secret and os.path.realpath(f) == secret]
-            if shipped:
-                raise PackagingError(f"the class secret {secret} is a file of the kit ({shipped[0]}) "
-                                     "and would ship in the release: keep it outside the kit, or "
-                                     "out of git")
             files.update(instructors)
             files = dict(sorted(files.items()))
 
@@ -221,8 +243,27 @@ def student_release(out, root=KIT, rubric=None, build=None):
     return files
 
 
+def rubric_files_for_autograder(root):
+    """The files grader/rubric.json names (the class secret, the extensions), relative to the
+    kit, for the autograder, which needs them and which students never see, whether git tracks
+    them or not. One outside the kit, or missing, stops the packaging: the autograder would stop
+    every grading without it."""
+    found = []
+    for what, path in rubric_named_files(os.path.join(root, RUBRIC)).items():
+        relative = os.path.relpath(path, os.path.realpath(root))
+        if relative.startswith(".."):
+            raise PackagingError(f"{RUBRIC} names {what} {path}, outside the kit: the autograder "
+                                 "would not have it; put it beside the rubric in grader/ (git may "
+                                 "ignore it)")
+        if not os.path.isfile(path):
+            raise PackagingError(f"{RUBRIC} names {what} {relative}, which does not exist")
+        found.append(relative)
+    return found
+
+
 def gradescope(out, root=KIT):
-    files = sorted(set(kit_files(root)) | set(hidden_scene_files(root)))
+    files = sorted(set(kit_files(root)) | set(hidden_scene_files(root))
+                   | set(rubric_files_for_autograder(root)))
     at_root = {name: os.path.join(root, "scripts", "gradescope", name)
                for name in ("setup.sh", "run_autograder")}
 
@@ -270,6 +311,10 @@ def main(argv):
         scenes = [f for f in hidden if f.endswith(".ecs")]
         print(f"hidden scenes packed: {len(scenes)}" + "".join(f"\n  {f}" for f in hidden)
               if hidden else "hidden scenes packed: none (grader/hidden_scenes/ holds no file)")
+        named = rubric_files_for_autograder(KIT)
+        if named:
+            print("packed for the autograder, as grader/rubric.json names them (instructor-only: "
+                  "the autograder is never the students'): " + ", ".join(named))
     return 0
 
 

@@ -428,6 +428,12 @@ def main():
         kit = os.path.join(root, "kit")
         subprocess.run(["git", "clone", "--quiet", "--no-hardlinks", args.source, kit], check=True)
         add_hidden_scene(os.path.join(kit, "grader", "hidden_scenes"))
+        # Per-student variants on Gradescope: the class secret beside the kit's rubric, untracked.
+        kit_rubric = os.path.join(kit, "grader", "rubric.json")
+        rubric = json.load(open(kit_rubric))
+        rubric["variants"] = {"per_student": True, "secret_file": "class-secret.txt"}
+        json.dump(rubric, open(kit_rubric, "w"), indent=1)
+        write(os.path.join(kit, "grader", "class-secret.txt"), "a secret of this course's, 2026\n")
         tracked = subprocess.run(["git", "-C", kit, "ls-files", "grader/hidden_scenes"], capture_output=True, text=True).stdout
         zip_path = os.path.join(root, "autograder.zip")
         made = subprocess.run([sys.executable, os.path.join(kit, "scripts", "package_kit.py"), "gradescope", zip_path],
@@ -436,6 +442,8 @@ def main():
         check(tracked == "" and f"grader/hidden_scenes/{SECRET}.ecs" in names
               and f"grader/hidden_scenes/{SECRET}.mtl" in names and "hidden scenes packed: 1" in made.stdout,
               "make gradescope packs an untracked hidden scene and lists it")
+        check("grader/class-secret.txt" in names and "packed for the autograder" in made.stdout,
+              "... and the class secret its rubric names, untracked, which the autograder needs")
 
     print("timings: " + ", ".join(f"{step} {seconds:.0f} s" for step, seconds in timings.items()))
     finish()

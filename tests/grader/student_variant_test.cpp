@@ -8,14 +8,19 @@
 #include "checks/grading_scenes.h"
 #include "checks/rubric.h"
 #include "checks/rubric_text.h"
+#include "checks/scene_variants.h"
 #include "checks/student_variant.h"
+#include "common/plain_id.h"
 
 #include "pathlab/support/input_error.h"
 #include "pathlab/support/whole_file.h"
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <random>
 #include <set>
+#include <sstream>
 
 using namespace pathlab;
 using namespace pathlab::grader;
@@ -202,4 +207,50 @@ TEST_CASE("grader rubric describes the variants, the late policy and the regrade
     CHECK(text.find("late: 2 slip day(s) per student, then 10% of the total per late day, at most "
                     "30%") != std::string::npos);
     CHECK(text.find("regrades: keep_higher") != std::string::npos);
+}
+
+TEST_CASE("ids as the grader spells them: an email's @ as _, in the extensions CSV too",
+          "[grader]") {
+    CHECK(plainId("ada@uni.edu") == "ada_uni.edu");
+    CHECK(plainId("Jos\xc3\xa9") == "Jos__");
+    CHECK(plainId(".hidden") == "submission.hidden");
+    CHECK(plainId("") == "submission");
+    ScratchFolder scratch("extensions-ids");
+    writeFileAtomically((scratch.path / "extensions.csv").string(), "id,days\nada@uni.edu,3\n");
+    const LatePolicy policy =
+        readLatePolicy({{"extensions", "extensions.csv"}}, (scratch.path / "rubric.json").string());
+    CHECK(policy.extensionDays.count("ada_uni.edu") == 1);
+}
+
+TEST_CASE("a student's box has its point light varied too; a furnace's file keeps no public "
+          "number",
+          "[grader]") {
+    ScratchFolder scratch("student-box");
+    Rubric rubric = loadRubric(std::string(PATHLAB_GRADER_DIR) + "/rubric.json");
+    rubric.variants = settings("unused");
+    StudentVariant v = drawStudentVariant(rubric.variants, "0123456789abcdef", "alice");
+    studentVariantScenes(rubric, v, (scratch.path / "variant").string(), {}, "", "");
+    const std::string furnace = readFile((scratch.path / "variant" / "furnace.ecs").string());
+    CHECK(furnace.find("1/(1-a) = 2") == std::string::npos);
+    CHECK(furnace.find("-i furnace_furnace.obj") != std::string::npos);
+
+    // The box alone, as studentVariantScenes writes it (its reference needs the solutions).
+    std::mt19937_64 engine(v.boxSeed);
+    const std::function<double()> random = [&] {
+        return static_cast<double>(engine() >> 11) * 0x1.0p-53;
+    };
+    const std::string ecs = readFile(writeVariedScene(publicScenePath("cornell_box_diffuse"),
+                                                      (scratch.path / "box").string(), "box",
+                                                      random, {0.5, 1.0}, {0.6, 1.3}));
+    std::istringstream lines(ecs);
+    double intensity = 0;
+    for (std::string line; std::getline(lines, line);)
+        if (line.rfind("-pointlight", 0) == 0) {
+            std::istringstream words(line.substr(11));
+            double x, y, z;
+            words >> x >> y >> z >> intensity;
+        }
+    CHECK(intensity >= 0.6 * 150000);
+    CHECK(intensity <= 1.3 * 150000);
+    CHECK(intensity != 150000);
 }

@@ -317,8 +317,9 @@ def check_student_id(scratch):
             json.dump({"users": users}, f)
         found.append(module.student_id(metadata))
     found.append(module.student_id(os.path.join(scratch, "none.json")))
-    check(found == ["s123", "_a_b@uni.edu", "submission", "submission"],
-          f"run_autograder names a submission by its sid, else its email, as a plain name: {found}")
+    check(found == ["s123", "submission.._a_b_uni.edu", "submission", "submission"],
+          f"run_autograder names a submission by its sid, else its email, spelled as the grader "
+          f"spells ids: {found}")
 
 
 def main():

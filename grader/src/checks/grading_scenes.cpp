@@ -99,7 +99,10 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const SceneSources
             // Grading against it would fail correct labs (or pass wrong ones): stop instead.
             throw InputError(std::string(e.what()) +
                              ". Remake it: grader make-references --only-scene " + name +
-                             " (or restore models/ and the rubric as they were)");
+                             " (or restore models/ and the rubric as they were); for a rubric "
+                             "of your own, into a copy of grader/references/ that you then "
+                             "grade with: grader make-references --only-scene " +
+                             name + " --rubric YOURS --references COPY");
         } catch (const InputError& e) {
             notes.push_back(std::string(e.what()) + "; measured on the fly instead");
             s.reference =

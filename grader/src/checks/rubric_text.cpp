@@ -1,12 +1,14 @@
 #include "checks/rubric_text.h"
 
 #include "checks/glossy_furnace_scene.h"
+#include "diagnosis/diagnosis.h"
 #include "checks/run_limits.h"
 #include "checks/speed_check.h"
 #include "checks/strategy_tiles.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -81,7 +83,10 @@ std::string rubricText(const Rubric& r, const std::string& rubricPath, int hidde
         out << "  hidden scenes: " << hiddenScenes
             << " (feedback says pass or fail; Gradescope shows that " << r.hiddenScenesVisibility
             << ")\n";
-    else if (r.sceneVariants > 0)
+    else if (r.sceneVariants > 0 &&
+             std::any_of(r.scenes.begin(), r.scenes.end(), [&](const std::string& scene) {
+                 return !furnaceModel(scene, r.maxDepth, r.continueProb);
+             }))
         out << "  hidden scenes: none here; an instructor's batch without hidden scenes grades on "
             << r.sceneVariants
             << " variant(s) of the public scenes\n  (hidden_scenes.variants: the same geometry, "

@@ -20,6 +20,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// `text` without its lines that begin with #.
+std::string withoutComments(const std::string& text) {
+    std::istringstream in(text);
+    std::string out;
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind('#', 0) != 0) out += line + "\n";
+    return out;
+}
+
 /// Every occurrence of `from` in `text` replaced by `to`.
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
     for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
@@ -113,13 +122,19 @@ std::string writeVariedScene(const std::string& ecsPath, const std::string& fold
                              const std::string& stem, const std::function<double()>& random,
                              DrawRange reflectance, DrawRange light) {
     return copyScene(ecsPath, folder, stem, [&](const std::string& extension, std::string text) {
-        return extension == ".mtl" ? variedMaterials(text, random, reflectance, light) : text;
+        if (extension == ".mtl") return variedMaterials(text, random, reflectance, light);
+        // A scene lit by --pointlight or --dirlight (cornell_box_diffuse): its lights times one
+        // factor drawn within `light`, as each Ke of an emissive material is.
+        if (extension == ".ecs")
+            return scaledLightOptions(text, light.low + (light.high - light.low) * random());
+        return text;
     });
 }
 
 std::string writeGreyMaterialScene(const std::string& ecsPath, const std::string& folder,
                                    const std::string& stem, double albedo, double emission) {
     return copyScene(ecsPath, folder, stem, [&](const std::string& extension, std::string text) {
+        if (extension == ".ecs") return withoutComments(text); // the public scene's numbers
         if (extension != ".mtl") return text;
         // Every digit kept: the analytic value is computed from these very numbers.
         char kd[80], ke[80];

@@ -29,13 +29,15 @@ std::string variedMaterials(const std::string& mtl, const std::function<double()
                             DrawRange reflectance = {0.5, 1.0}, DrawRange light = {0.6, 1.3});
 
 /// A copy of the scene at `ecsPath` in `folder` as `stem`.ecs (its files as stem_NAME), its
-/// materials varied as variedMaterials does. Returns the copy's .ecs path.
+/// materials varied as variedMaterials does and its point and directional lights times one
+/// factor drawn within `light`. Returns the copy's .ecs path.
 std::string writeVariedScene(const std::string& ecsPath, const std::string& folder,
                              const std::string& stem, const std::function<double()>& random,
                              DrawRange reflectance, DrawRange light);
 
 /// A copy of the scene at `ecsPath` in `folder` as `stem`.ecs (its files as stem_NAME), each
-/// material's Kd and Ke set to the grey `albedo` and `emission`. Returns the copy's .ecs path.
+/// material's Kd and Ke set to the grey `albedo` and `emission`, the .ecs's comments (which
+/// describe the public scene's numbers) left out. Returns the copy's .ecs path.
 std::string writeGreyMaterialScene(const std::string& ecsPath, const std::string& folder,
                                    const std::string& stem, double albedo, double emission);
 

@@ -7,6 +7,7 @@
 #include "common/content_hash.h"
 
 #include "pathlab/support/input_error.h"
+#include "pathlab/support/printable_text.h"
 #include "pathlab/support/whole_file.h"
 
 #include <nlohmann/json.hpp>
@@ -158,6 +159,11 @@ std::vector<GradingScene> loadStudentVariantFolder(const Rubric& rubric,
             throw InputError("variant '" + folder +
                              "' was made for another rubric than this release's: ask your "
                              "instructor for your variant of this one");
+        if (j.value("kit_version", "") != PATHLAB_VERSION)
+            throw InputError("variant '" + folder + "' was made by PathLab " +
+                             printableText(j.value("kit_version", "?")) + ", this is " +
+                             PATHLAB_VERSION +
+                             ": ask your instructor for your variant of this one");
         std::vector<GradingScene> scenes = {analyticFurnaceScene(
             rubric, fs::absolute(folder + "/furnace.ecs").string(), furnace, furnaceName(furnace))};
         if (j.contains("box")) {
@@ -166,7 +172,8 @@ std::vector<GradingScene> loadStudentVariantFolder(const Rubric& rubric,
             if (name.find('/') != std::string::npos || name.find("..") != std::string::npos)
                 throw InputError(file + ": box.file must be a file of the folder");
             box.path = fs::absolute(folder + "/" + name).string();
-            box.name = boxName(j.at("box").at("scene"));
+            // Its words come from the folder: printed as text, never as terminal controls.
+            box.name = boxName(printableText(j.at("box").at("scene").get<std::string>()));
             box.reference = loadReference(folder + "/references", box.path, rubric);
             scenes.push_back(std::move(box));
         }

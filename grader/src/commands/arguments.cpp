@@ -85,6 +85,8 @@ batch
                       them again); the gradebook marks them stale
   --deadline TIME     flag submissions made after TIME (2026-12-01T23:59, local time, or with
                       Z or +01:00) as late in the gradebook
+  --id ID             submission: the student's id, where the submission's folder is not named
+                      by it (per-student variants and the late policy's extensions go by it)
   --submitted-at TIME submission: when it was handed in; with --deadline, the rubric's late
                       policy lowers its Gradescope and PrairieLearn scores (run_autograder
                       passes Gradescope's created_at and due date)
@@ -186,6 +188,7 @@ const std::map<std::string, std::string Arguments::*>& textOptions() {
         {"--solution-viewer", &Arguments::solutionViewer},
         {"--deadline", &Arguments::deadline},
         {"--submitted-at", &Arguments::submittedAt},
+        {"--id", &Arguments::id},
         {"--prior", &Arguments::prior},
         {"--term", &Arguments::term},
         {"--times", &Arguments::times},
@@ -338,6 +341,8 @@ void requireWhatTheCommandNeeds(const Arguments& a) {
     if (!a.prior.empty() && a.command != "keep-term" && !std::filesystem::is_directory(a.prior))
         throw InputError("option --prior: '" + a.prior +
                          "' is not a folder (grader keep-term writes one)");
+    if (!a.id.empty() && a.command != "submission")
+        throw InputError("option --id is for grader submission");
     if (!a.submittedAt.empty() && (a.command != "submission" || a.deadline.empty()))
         throw InputError("option --submitted-at is for grader submission, with --deadline");
     if (a.command == "student-variants" && (a.inputs.empty() || a.out.empty()))

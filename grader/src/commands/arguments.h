@@ -53,6 +53,7 @@ struct Arguments {
     /// submission: when it was handed in (Gradescope's created_at), for the rubric's late policy
     /// against --deadline.
     std::string submittedAt;
+    std::string id; ///< submission: the student's id, where the folder's name is not it
     int shard = 0, shards = 1;
     // submission, as batch starts it (and run_autograder)
     std::string kit; ///< compiled lab kit (default: built in the output folder)

@@ -319,7 +319,12 @@ Arguments withHiddenScenes(const Arguments& a, const Rubric& rubric, const std::
     graded.scenesDir = out + "/.variants";
     const std::string seedFile = graded.scenesDir + "/seed";
     const uint64_t seed = variantSeed(a, seedFile);
-    writeSceneVariants(rubric, graded.scenesDir, seed);
+    if (writeSceneVariants(rubric, graded.scenesDir, seed).empty()) {
+        std::fprintf(stderr, "hidden scenes: none kept, and the rubric's public scenes are all "
+                             "furnaces, of which no variant is made (hidden_scenes.variants): "
+                             "graded on the public scenes only\n");
+        return a;
+    }
     writeFileAtomically(seedFile, std::to_string(seed) + "\n");
     std::fprintf(stderr,
                  "hidden scenes: none kept, so %d variant(s) of the public scenes, made from the "

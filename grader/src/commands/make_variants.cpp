@@ -30,6 +30,10 @@ int makeVariants(const Arguments& a, const Rubric& rubric) {
     const std::string seedFile = folder + "/seed";
     const uint64_t seed = variantSeed(a, seedFile);
     const std::vector<std::string> written = writeSceneVariants(rubric, folder, seed);
+    if (written.empty())
+        throw InputError(a.rubric + ": every public scene of the rubric is a furnace, of which no "
+                                    "variant is made: add a scene like cornell_box_VI2_Specular "
+                                    "to correctness.scenes, or keep hidden scenes");
     writeFileAtomically(seedFile, std::to_string(seed) + "\n");
     for (const std::string& path : written) std::printf("wrote %s\n", path.c_str());
     std::printf("seed %s in %s: keep it from the students, as the scenes themselves\n",

@@ -3,11 +3,13 @@
 // that the student's `make grade VARIANT=DIR` grades on the scenes the batch grades them on.
 #include "checks/student_variant.h"
 #include "commands/commands.h"
+#include "common/plain_id.h"
 
 #include "pathlab/support/input_error.h"
 
 #include <cstdio>
 #include <filesystem>
+#include <map>
 
 namespace pathlab::grader {
 
@@ -28,10 +30,24 @@ int makeStudentVariants(const Arguments& a, const Rubric& rubric, const std::str
         throw InputError(a.rubric +
                          ": variants.per_student is not set: every student grades on the same "
                          "scenes (the instructor guide's Per-student variants says how to set it)");
-    for (const std::string& id : a.inputs) requirePlainId(id);
+    // Each id as the batch and Gradescope's run_autograder spell it (ada@uni.edu: ada_uni.edu):
+    // the variant is drawn from that spelling. Two ids spelled alike would share a variant.
+    std::map<std::string, std::string> spelled;
+    for (const std::string& given : a.inputs) {
+        requirePlainId(given);
+        const std::string id = plainId(given);
+        if (const auto [other, isNew] = spelled.try_emplace(id, given); !isNew)
+            throw InputError("grader student-variants: '" + other->second + "' and '" + given +
+                             "' are both the id '" + id +
+                             "' to the grader (letters, digits and . _ - are kept, any other "
+                             "character becomes _): they would share a variant");
+        if (id != given)
+            std::printf("%s: graded as %s (letters, digits and . _ - kept, others as _)\n",
+                        given.c_str(), id.c_str());
+    }
     const std::string secret = classSecret(rubric.variants);
     const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
-    for (const std::string& id : a.inputs) {
+    for (const auto& [id, given] : spelled) {
         const std::string folder = a.out + "/" + id;
         std::filesystem::remove_all(folder);
         const StudentVariant variant = drawStudentVariant(rubric.variants, secret, id);

@@ -6,6 +6,7 @@
 #include "commands/grading_host.h"
 #include "commands/output_lock.h"
 #include "commands/submission_grading.h"
+#include "common/plain_id.h"
 #include "reports/submission_time.h"
 
 #include "pathlab/support/input_error.h"
@@ -47,6 +48,9 @@ void applyLatePolicy(const Arguments& a, const Rubric& rubric, SubmissionOutcome
 int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::string& scratch) {
     requireSandbox();
     const OutputLock lock(a.out, "grading of a submission");
+    // The student: --id where the submission's folder does not name them (PrairieLearn's is
+    // always /grade/student), as the grader spells ids.
+    const std::string id = a.id.empty() ? submissionId(a.inputs[0]) : plainId(a.id);
     SubmissionGrader g;
     g.build = labBuildOfThisGrader();
     g.rubric = rubric;
@@ -63,8 +67,8 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
                              solution, scratch, notes);
     if (rubric.variants.perStudent) {
         // The student's own scenes, written beside their feedback: theirs to look at.
-        const StudentVariant variant = drawStudentVariant(
-            rubric.variants, classSecret(rubric.variants), submissionId(a.inputs[0]));
+        const StudentVariant variant =
+            drawStudentVariant(rubric.variants, classSecret(rubric.variants), id);
         for (GradingScene& s : studentVariantScenes(rubric, variant, a.out + "/variant", solution,
                                                     scratch, a.referenceCache))
             g.scenes.push_back(std::move(s));
@@ -79,7 +83,7 @@ int gradeOneSubmission(const Arguments& a, const Rubric& rubric, const std::stri
         if (!g.raceCheck.available())
             std::fprintf(stderr, "race check skipped: %s\n", g.raceCheck.unavailable.c_str());
     }
-    SubmissionOutcome outcome = gradeSubmission(g, a.inputs[0], a.out, scratch);
+    SubmissionOutcome outcome = gradeSubmission(g, a.inputs[0], a.out, scratch, id);
     outcome.report.notes.insert(outcome.report.notes.begin(), notes.begin(), notes.end());
     if (!a.submittedAt.empty()) applyLatePolicy(a, rubric, outcome);
     std::printf("%s: %s\n", outcome.id.c_str(), outcome.status.c_str());

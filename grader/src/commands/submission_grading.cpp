@@ -185,11 +185,12 @@ void writeGrading(const SubmissionOutcome& outcome, const std::string& submissio
 }
 
 SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::string& submission,
-                                  const std::string& folder, const std::string& scratchRoot) {
+                                  const std::string& folder, const std::string& scratchRoot,
+                                  const std::string& id) {
     auto start = std::chrono::steady_clock::now();
     const auto began = start;
     SubmissionOutcome outcome;
-    outcome.id = submissionId(submission);
+    outcome.id = id.empty() ? submissionId(submission) : id;
     outcome.attempt = archiveAttempt(folder);
     const SandboxPolicy policy{grader.workCpus, sandboxUserForThisProcess()};
     const std::string sources = folder + "/submitted", build = folder + "/build",

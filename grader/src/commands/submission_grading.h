@@ -57,9 +57,11 @@ struct SubmissionOutcome {
 /// Grades `submission` with its working files in `folder` (its renders' in `scratch`, a folder
 /// of this grading's own), and writes there, in this order, feedback.json (the grader's JSON
 /// report), index.html, and result.json (a summary for the gradebook). result.json is written
-/// last and atomically: its presence means done.
+/// last and atomically: its presence means done. `id`: the student's id, where not the
+/// submission's name (grader submission --id).
 SubmissionOutcome gradeSubmission(const SubmissionGrader& grader, const std::string& submission,
-                                  const std::string& folder, const std::string& scratch);
+                                  const std::string& folder, const std::string& scratch,
+                                  const std::string& id = "");
 
 /// result.json's text for an outcome.
 std::string resultJson(const SubmissionOutcome& outcome, const std::string& submission);

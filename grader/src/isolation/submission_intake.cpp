@@ -1,5 +1,6 @@
 #include "isolation/submission_intake.h"
 
+#include "common/plain_id.h"
 #include "pathlab/render/lab_registry.h"
 
 #include <nlohmann/json.hpp>
@@ -35,12 +36,7 @@ std::string submissionId(const std::string& submission) {
     std::string name = fs::path(submission).lexically_normal().filename().string();
     if (name.empty())
         name = fs::path(submission).lexically_normal().parent_path().filename().string();
-    name = name.substr(0, name.size() - archiveExtension(name).size());
-    std::string id;
-    for (char c : name)
-        id += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' ? c
-                                                                                              : '_';
-    return id.empty() || id[0] == '.' ? "submission" + id : id;
+    return plainId(name.substr(0, name.size() - archiveExtension(name).size()));
 }
 
 Intake takeSubmission(const std::string& submission, const std::string& folder,

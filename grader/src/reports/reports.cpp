@@ -61,6 +61,17 @@ namespace {
 
 /// "8/8", or "8/8 (+2 speed: graded by the instructor)" where a check is not graded here, with
 /// "; 2 of them at risk" where this build's own figures say those would likely be lost.
+std::string scoreText(double score, double maxScore, double notGradedHere, double atRisk);
+
+/// "; late: 20% off, 38.4 counts" for a late submission's report (GradeReport::latePenalty).
+std::string lateText(const GradeReport& report) {
+    if (report.latePenalty <= 0) return "";
+    char text[120];
+    std::snprintf(text, sizeof text, "; late: %g%% off, %g counts", 100 * report.latePenalty,
+                  report.score() * (1 - report.latePenalty));
+    return text;
+}
+
 std::string scoreText(double score, double maxScore, double notGradedHere, double atRisk) {
     char text[160];
     if (notGradedHere > 0 && atRisk > 0)
@@ -296,7 +307,7 @@ namespace {
 /// time to equal noise, which only a correct lab has (0 otherwise, ranked last), higher first.
 nlohmann::json gradescopeLeaderboard(const GradeReport& report) {
     nlohmann::json board = nlohmann::json::array();
-    board.push_back({{"name", "total"}, {"value", report.score()}});
+    board.push_back({{"name", "total"}, {"value", report.score() * (1 - report.latePenalty)}});
     for (const LabGrade& lab : report.labs) {
         const bool correct = !lab.checks.empty() && lab.checks.front().passed;
         const double ratio = correct ? lab.efficiencyRatio : 0;
@@ -364,7 +375,8 @@ std::string prairieLearnReport(const GradeReport& report) {
         {"gradable", true},
         {"score", max > 0 ? report.score() * (1 - report.latePenalty) / max : 0.0},
         {"message",
-         scoreText(report.score(), max, report.pointsNotGradedHere(), report.pointsAtRisk())},
+         scoreText(report.score(), max, report.pointsNotGradedHere(), report.pointsAtRisk()) +
+             lateText(report)},
         {"output", terminalReport(report, false, HiddenVerdicts::LeftOut)},
         {"tests", tests}};
     return j.dump(2) + "\n";

@@ -23,8 +23,7 @@ std::vector<SimilarLabs> similarSubmissions(const std::string& out,
         const std::string name = std::string(labName(lab)), file = labFileName(lab);
         stubs[name] = readFile((kit / "labs" / file).string());
         if (fs::is_regular_file(kit / "solutions" / file))
-            files.push_back(
-                {"reference solutions", name, readFile((kit / "solutions" / file).string())});
+            files.push_back({KitSolutions, name, readFile((kit / "solutions" / file).string())});
         for (const std::string& id : ids) {
             const fs::path submitted = fs::path(out) / "submissions" / id / "submitted" / file;
             if (fs::is_regular_file(submitted))

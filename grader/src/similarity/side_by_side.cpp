@@ -31,7 +31,7 @@ std::string labFileOf(const std::string& out, const std::string& id, const std::
         return "(an earlier term's submission: PathLab kept its normalised tokens only, not its "
                "code; the similarity is of those)";
     const std::string file = labFileName(*known);
-    const fs::path path = id == "reference solutions"
+    const fs::path path = id == KitSolutions
                               ? fs::path(PATHLAB_GRADER_DIR).parent_path() / "solutions" / file
                               : fs::path(out) / "submissions" / id / "submitted" / file;
     std::ifstream in(path);

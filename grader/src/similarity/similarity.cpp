@@ -335,7 +335,10 @@ void addSimilarPairs(const std::string& lab, const std::vector<const SubmittedFi
     for (size_t i = 0; i < files.size(); ++i)
         for (size_t j = i + 1; j < files.size(); ++j) {
             if (files[i]->submission == files[j]->submission) continue;
-            if (files[i]->prior && files[j]->prior) continue; // earlier terms were compared then
+            // Earlier terms were compared among themselves, and with the kit's solutions, then.
+            if (files[i]->prior && (files[j]->prior || files[j]->submission == KitSolutions))
+                continue;
+            if (files[j]->prior && files[i]->submission == KitSolutions) continue;
             const double alike = containment(own[i], own[j]);
             if (alike < threshold) continue;
             const auto [first, second] = std::minmax(files[i]->submission, files[j]->submission);

@@ -44,6 +44,9 @@ std::vector<std::string> normalisedTokens(const std::string& source);
 double similarity(const std::vector<std::string>& a, const std::vector<std::string>& b,
                   const std::vector<std::string>& base);
 
+/// The kit's reference solutions' name among a class's submissions.
+inline constexpr const char* KitSolutions = "reference solutions";
+
 struct SubmittedFile {
     /// This term's file.
     SubmittedFile(std::string submission, std::string lab, std::string source)
