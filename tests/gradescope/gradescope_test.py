@@ -252,8 +252,9 @@ def grade_correct(scratch, logs):
           f"correct submission, 3 days late: full marks less the late policy's 20%, "
           f"{results.get('score')} of {full}, and the output says why")
     board = {entry.get("name"): entry.get("value") for entry in results.get("leaderboard", [])}
-    check(board.get("total") == full and all(board.get(f"{lab}: efficiency / reference", 0) > 0 for lab in LABS),
-          f"the leaderboard: the total and each lab's efficiency over the reference's ({board})")
+    check(board.get("total") == results.get("score") and all(board.get(f"{lab}: efficiency / reference", 0) > 0 for lab in LABS),
+          f"the leaderboard: the total (after the late penalty) and each lab's efficiency over the "
+          f"reference's ({board})")
     os.remove(metadata)
     return results
 
