@@ -72,6 +72,9 @@ LEFT_OUT = {
                     "own bookkeeping, the same on every system (2 of its 4 minutes)",
     "grader.instructor": "an instructor's term of batches, 2 minutes; its sandbox, canary and "
                          "gradebook are those grader.batch runs here",
+    "release.rubric": "a release packed with an instructor's rubric, 2 minutes here: Python's "
+                      "packaging and the grader's rubric checks, the same on every system (the "
+                      "release's build and tests are those run here)",
     "grader.pages": "the grader's HTML in headless Chromium: the page's layout, not this "
                     "system's code, which the host's make test checks",
     "grader.slow": "label slow: 200 gradings, not part of `make test` anywhere",
