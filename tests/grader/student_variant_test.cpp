@@ -236,9 +236,7 @@ TEST_CASE("a student's box has its point light varied too; a furnace's file keep
 
     // The box alone, as studentVariantScenes writes it (its reference needs the solutions).
     std::mt19937_64 engine(v.boxSeed);
-    const std::function<double()> random = [&] {
-        return static_cast<double>(engine() >> 11) * 0x1.0p-53;
-    };
+    const std::function<double()> random = [&] { return portableUnit(engine); };
     const std::string ecs = readFile(writeVariedScene(publicScenePath("cornell_box_diffuse"),
                                                       (scratch.path / "box").string(), "box",
                                                       random, {0.5, 1.0}, {0.6, 1.3}));

@@ -121,6 +121,15 @@ LowerScores readLowerScores(const nlohmann::json& j, const std::string& path) {
                      "(the higher earlier total of the same files counts)");
 }
 
+/// gradescope.leaderboard, optional: results.json without a leaderboard unless it is true.
+bool readGradescopeLeaderboard(const nlohmann::json& j, const std::string& path) {
+    if (!j.contains("gradescope")) return false;
+    const auto& g = j.at("gradescope");
+    if (!g.is_object() || !g.contains("leaderboard") || !g.at("leaderboard").is_boolean())
+        throw InputError(path + ": gradescope.leaderboard must be true or false");
+    return g.at("leaderboard").get<bool>();
+}
+
 /// What no single value shows: values that must agree with each other.
 void requireConsistent(const Rubric& r, const std::string& path) {
     if (r.seeds < 2 || r.width < r.tiles || r.height < r.tiles || r.tiles < 1 ||
@@ -158,12 +167,7 @@ Rubric loadRubric(const std::string& path) {
         r.late = readLatePolicy(j.contains("late") ? j.at("late") : nlohmann::json(), path);
         r.variants =
             readVariantSettings(j.contains("variants") ? j.at("variants") : nlohmann::json(), path);
-        if (j.contains("gradescope")) {
-            const auto& g = j.at("gradescope");
-            if (!g.is_object() || !g.contains("leaderboard") || !g.at("leaderboard").is_boolean())
-                throw InputError(path + ": gradescope.leaderboard must be true or false");
-            r.gradescopeLeaderboard = g.at("leaderboard").get<bool>();
-        }
+        r.gradescopeLeaderboard = readGradescopeLeaderboard(j, path);
         j.erase("regrades"); // which total the gradebook shows: no result goes stale for it
         j.erase("late");
         j.erase("gradescope");

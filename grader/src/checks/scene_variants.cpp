@@ -104,6 +104,10 @@ std::string scaledLightOptions(const std::string& ecs, double factor) {
 
 } // namespace
 
+double portableUnit(std::mt19937_64& engine) {
+    return static_cast<double>(engine() >> 11) * 0x1.0p-53;
+}
+
 std::string variedMaterials(const std::string& mtl, const std::function<double()>& random,
                             DrawRange reflectance, DrawRange light) {
     // Each value times a factor drawn within [low, high], one draw per value in order.
@@ -173,11 +177,8 @@ std::vector<std::string> writeSceneVariants(const Rubric& rubric, const std::str
     for (const std::string& name : rubric.scenes)
         if (!furnaceModel(name, rubric.maxDepth, rubric.continueProb)) bases.push_back(name);
     if (bases.empty() || rubric.sceneVariants <= 0) return {};
-    // The engine's numbers are the same on every platform; a distribution's are not.
     std::mt19937_64 engine(seed);
-    const std::function<double()> random = [&] {
-        return static_cast<double>(engine() >> 11) * 0x1.0p-53;
-    };
+    const std::function<double()> random = [&] { return portableUnit(engine); };
     std::vector<std::string> written;
     for (int k = 0; k < rubric.sceneVariants; ++k) {
         const std::string base = publicScenePath(bases[static_cast<size_t>(k) % bases.size()]);

@@ -9,10 +9,15 @@
 
 #include <cstdint>
 #include <functional>
+#include <random>
 #include <string>
 #include <vector>
 
 namespace pathlab::grader {
+
+/// A number in [0, 1) from `engine`'s next: the engine's numbers are the same on every platform,
+/// a standard distribution's are not, and a variant must be the same wherever it is drawn.
+double portableUnit(std::mt19937_64& engine);
 
 /// Writes the rubric's hidden_scenes.variants variants into `folder` (made if needed):
 /// variant_1.ecs with its .obj and .mtl, and so on, the K-th from the K-th of the rubric's

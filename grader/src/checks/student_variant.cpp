@@ -27,12 +27,8 @@ namespace {
 constexpr size_t ShortestSecret = 16;
 const char* const VariantFile = "variant.json";
 
-/// A number in [0, 1) from `engine`: the engine's numbers are the same on every platform, a
-/// distribution's are not.
-double unit(std::mt19937_64& engine) { return static_cast<double>(engine() >> 11) * 0x1.0p-53; }
-
 double drawn(std::mt19937_64& engine, DrawRange range) {
-    return range.low + (range.high - range.low) * unit(engine);
+    return range.low + (range.high - range.low) * portableUnit(engine);
 }
 
 /// A value as feedback and the files write it: rounded to 3 decimals, so that the scene's .mtl,
@@ -89,7 +85,7 @@ StudentVariant drawStudentVariant(const VariantSettings& settings, const std::st
     v.furnace.emission = rounded(drawn(engine, settings.emission));
     const int low = static_cast<int>(std::ceil(settings.maxDepth.low));
     const int high = static_cast<int>(std::floor(settings.maxDepth.high));
-    v.furnace.maxDepth = low + static_cast<int>(unit(engine) * (high - low + 1));
+    v.furnace.maxDepth = low + static_cast<int>(portableUnit(engine) * (high - low + 1));
     v.boxSeed = engine();
     return v;
 }
@@ -107,7 +103,7 @@ std::vector<GradingScene> studentVariantScenes(const Rubric& rubric, const Stude
         analyticFurnaceScene(rubric, furnacePath, furnace, furnaceName(furnace))};
     if (s.boxScene.empty()) return scenes;
     std::mt19937_64 engine(variant.boxSeed);
-    const std::function<double()> random = [&] { return unit(engine); };
+    const std::function<double()> random = [&] { return portableUnit(engine); };
     GradingScene box;
     box.path = writeVariedScene(publicScenePath(s.boxScene), folder, boxStem(variant), random,
                                 s.reflectance, s.light);
@@ -117,13 +113,12 @@ std::vector<GradingScene> studentVariantScenes(const Rubric& rubric, const Stude
     return scenes;
 }
 
-std::vector<GradingScene> writeStudentVariantFolder(const Rubric& rubric,
-                                                    const StudentVariant& variant,
-                                                    const std::string& folder,
-                                                    const LabRunner& solution,
-                                                    const std::string& scratch) {
+std::vector<GradingScene>
+writeStudentVariantFolder(const Rubric& rubric, const StudentVariant& variant,
+                          const std::string& folder, const LabRunner& solution,
+                          const std::string& scratch, const std::string& cache) {
     std::vector<GradingScene> scenes =
-        studentVariantScenes(rubric, variant, folder, solution, scratch, "");
+        studentVariantScenes(rubric, variant, folder, solution, scratch, cache);
     nlohmann::json j = {{"id", variant.id},
                         {"rubric_hash", rubric.hash},
                         {"kit_version", PATHLAB_VERSION},

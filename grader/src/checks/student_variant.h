@@ -44,12 +44,12 @@ std::vector<GradingScene> studentVariantScenes(const Rubric& rubric, const Stude
                                                const std::string& cache);
 
 /// Writes the student's variant folder: the scenes, variant.json (the id, the rubric's hash, the
-/// furnace's numbers) and references/ (the box's). Returns the scenes as studentVariantScenes.
-std::vector<GradingScene> writeStudentVariantFolder(const Rubric& rubric,
-                                                    const StudentVariant& variant,
-                                                    const std::string& folder,
-                                                    const LabRunner& solution,
-                                                    const std::string& scratch);
+/// furnace's numbers) and references/ (the box's, from `cache` while it fits). Returns the
+/// scenes as studentVariantScenes.
+std::vector<GradingScene>
+writeStudentVariantFolder(const Rubric& rubric, const StudentVariant& variant,
+                          const std::string& folder, const LabRunner& solution,
+                          const std::string& scratch, const std::string& cache);
 
 /// The scenes of a variant folder writeStudentVariantFolder wrote, for a local grade; throws
 /// InputError when it is not one, or when it was made under another rubric or kit.

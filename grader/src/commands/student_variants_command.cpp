@@ -51,7 +51,8 @@ int makeStudentVariants(const Arguments& a, const Rubric& rubric, const std::str
         const std::string folder = a.out + "/" + id;
         std::filesystem::remove_all(folder);
         const StudentVariant variant = drawStudentVariant(rubric.variants, secret, id);
-        const auto scenes = writeStudentVariantFolder(rubric, variant, folder, solution, scratch);
+        const auto scenes =
+            writeStudentVariantFolder(rubric, variant, folder, solution, scratch, a.referenceCache);
         std::printf("%s: %s", folder.c_str(), scenes.front().name.c_str());
         for (size_t i = 1; i < scenes.size(); ++i) std::printf(", %s", scenes[i].name.c_str());
         std::printf("\n");

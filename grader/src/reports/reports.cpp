@@ -61,17 +61,6 @@ namespace {
 
 /// "8/8", or "8/8 (+2 speed: graded by the instructor)" where a check is not graded here, with
 /// "; 2 of them at risk" where this build's own figures say those would likely be lost.
-std::string scoreText(double score, double maxScore, double notGradedHere, double atRisk);
-
-/// "; late: 20% off, 38.4 counts" for a late submission's report (GradeReport::latePenalty).
-std::string lateText(const GradeReport& report) {
-    if (report.latePenalty <= 0) return "";
-    char text[120];
-    std::snprintf(text, sizeof text, "; late: %g%% off, %g counts", 100 * report.latePenalty,
-                  report.score() * (1 - report.latePenalty));
-    return text;
-}
-
 std::string scoreText(double score, double maxScore, double notGradedHere, double atRisk) {
     char text[160];
     if (notGradedHere > 0 && atRisk > 0)
@@ -83,6 +72,15 @@ std::string scoreText(double score, double maxScore, double notGradedHere, doubl
                       maxScore, notGradedHere);
     else
         std::snprintf(text, sizeof text, "%g/%g", score, maxScore);
+    return text;
+}
+
+/// "; late: 20% off, 38.4 counts" for a late submission's report (GradeReport::latePenalty).
+std::string lateText(const GradeReport& report) {
+    if (report.latePenalty <= 0) return "";
+    char text[120];
+    std::snprintf(text, sizeof text, "; late: %g%% off, %g counts", 100 * report.latePenalty,
+                  report.score() * (1 - report.latePenalty));
     return text;
 }
 

@@ -325,6 +325,15 @@ bool listedBefore(const SimilarPair& a, const SimilarPair& b) {
     return std::tie(a.lab, a.first, a.second) < std::tie(b.lab, b.first, b.second);
 }
 
+/// Whether two files are an earlier term's with another earlier term's or with the kit's
+/// solutions: compared in that term, not again.
+bool comparedInItsOwnTerm(const SubmittedFile& a, const SubmittedFile& b) {
+    const auto earlierOrKit = [](const SubmittedFile& f) {
+        return f.prior || f.submission == KitSolutions;
+    };
+    return (a.prior && earlierOrKit(b)) || (b.prior && earlierOrKit(a));
+}
+
 /// The pairs of one lab's files (`own` holds each file's own k-grams) at least `threshold`
 /// alike, added to `pairs`. Each pair of submissions once: one that sent a lab's file twice is
 /// listed by the more alike of the two.
@@ -335,10 +344,7 @@ void addSimilarPairs(const std::string& lab, const std::vector<const SubmittedFi
     for (size_t i = 0; i < files.size(); ++i)
         for (size_t j = i + 1; j < files.size(); ++j) {
             if (files[i]->submission == files[j]->submission) continue;
-            // Earlier terms were compared among themselves, and with the kit's solutions, then.
-            if (files[i]->prior && (files[j]->prior || files[j]->submission == KitSolutions))
-                continue;
-            if (files[j]->prior && files[i]->submission == KitSolutions) continue;
+            if (comparedInItsOwnTerm(*files[i], *files[j])) continue;
             const double alike = containment(own[i], own[j]);
             if (alike < threshold) continue;
             const auto [first, second] = std::minmax(files[i]->submission, files[j]->submission);
