@@ -185,8 +185,9 @@ handouts: build
 # The student release, $(BUILD)/pathlab-student.tar.gz: the kit without solutions/, the tests and
 # tools built on them, the instructor's hidden scenes and documents or history, with
 # README-student.md as its README (docs/instructor-guide.md: The student release).
-# RUBRIC=FILE: the release carries the instructor's rubric (and references that fit it, measured
-# again by the grader where the kit's do not), and says so (docs/instructor-guide.md).
+# RUBRIC=FILE: the release carries the instructor's rubric, the files of the public scenes it
+# names (tracked by git or not) and references that fit it (measured again by the grader where
+# the kit's do not), and says so (docs/instructor-guide.md).
 student-release: $(if $(RUBRIC),configure)
 	$(if $(RUBRIC),@cmake --build $(BUILD) -j $(JOBS) --target grader viewer)
 	@python3 scripts/package_kit.py student-release $(BUILD)/pathlab-student.tar.gz \

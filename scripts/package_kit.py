@@ -12,11 +12,12 @@ release is a copy of them minus STUDENT_EXCLUDED, under one top folder `pathlab/
 history, and with README-student.md as its README.md. With --rubric, the release carries the
 instructor's rubric as its grader/rubric.json (without its late policy and regrade setting,
 which only a batch's gradebook uses, and without the name of its per-student variants' class
-secret, which must not be a file the release would carry), the stored references measured again (by BUILD's
-grader and the reference solutions) for each public scene whose stored one does not fit that
-rubric, and grader/release.json saying which rubric it is. The autograder holds every file,
-solutions included, with scripts/gradescope/setup.sh and run_autograder at the root, as
-Gradescope wants.
+secret, which must not be a file the release would carry), the files of every public scene it
+names (an instructor's own scene in models/ too, tracked or not), the stored references measured
+again (by BUILD's grader and the reference solutions) for each public scene whose stored one does
+not fit that rubric, and grader/release.json saying which rubric it is. The autograder holds every
+file, solutions included, with scripts/gradescope/setup.sh and run_autograder at the root, as
+Gradescope wants; a scene its rubric grades on that git does not track stops it.
 """
 import json
 import os
@@ -172,10 +173,29 @@ def refuse_shipping_named_files(files, rubric):
                                  "in the release: keep it outside the kit, or out of git")
 
 
-def instructor_rubric(rubric, build, scratch):
+def rubric_scene_files(grader, rubric, root):
+    """{name in the release: file} of every public scene the rubric names (its .ecs, meshes and
+    materials, as the grader reads them), whether git tracks them or not: an instructor's own
+    scene, added to models/ for the course, goes with the rubric that grades on it."""
+    listed = subprocess.run([grader, "rubric", "--rubric", rubric, "--scene-files"],
+                            capture_output=True, text=True)
+    if listed.returncode != 0:
+        raise PackagingError(f"RUBRIC={rubric}: the grader cannot list its scenes: "
+                             + listed.stderr.strip())
+    files = {}
+    for path in listed.stdout.splitlines():
+        relative = os.path.relpath(os.path.realpath(path), os.path.realpath(root))
+        if relative.startswith(".."):
+            raise PackagingError(f"RUBRIC={rubric} grades on {path}, outside the kit: put the "
+                                 "scene in models/")
+        files[relative] = os.path.join(root, relative)
+    return files
+
+
+def instructor_rubric(rubric, build, scratch, root=KIT):
     """{name in the release: file to pack} for the instructor's rubric: the rubric itself, the
-    references that fit it (measured again where the kit's do not) and release.json; the grader
-    of `build` checks the rubric and measures."""
+    public scenes it names, the references that fit it (measured again where the kit's do not)
+    and release.json; the grader of `build` checks the rubric and measures."""
     grader = os.path.abspath(os.path.join(build, "grader"))
     if not os.path.isfile(rubric):
         raise PackagingError(f"RUBRIC={rubric}: no such file")
@@ -215,6 +235,7 @@ def instructor_rubric(rubric, build, scratch):
                    "packaged_at": time.strftime("%Y-%m-%dT%H:%MZ", time.gmtime())}, f, indent=1)
         f.write("\n")
     files = {RUBRIC: packed_rubric, RELEASE_JSON: release}
+    files.update(rubric_scene_files(grader, rubric, root))
     for name in sorted(os.listdir(references)):
         files[REFERENCES + name] = os.path.join(references, name)
     return files, found.group(1)
@@ -226,10 +247,13 @@ def student_release(out, root=KIT, rubric=None, build=None):
         # Whichever rubric the release carries, what it names for the instructor stays behind.
         refuse_shipping_named_files(files, rubric or os.path.join(root, RUBRIC))
         if rubric:
-            instructors, rubric_hash = instructor_rubric(rubric, build, scratch)
+            instructors, rubric_hash = instructor_rubric(rubric, build, scratch, root)
+            untracked = sorted(n for n in instructors if n.startswith("models/") and n not in files)
             files = {n: f for n, f in files.items() if n != RUBRIC and not n.startswith(REFERENCES)}
             files.update(instructors)
             files = dict(sorted(files.items()))
+            if untracked:
+                print("packed the rubric's scene files that git does not track: " + ", ".join(untracked))
 
         def write(path):
             with tarfile.open(path, "w:gz") as tar:
@@ -261,9 +285,35 @@ def rubric_files_for_autograder(root):
     return found
 
 
+def rubric_scene_names(rubric):
+    """The public scenes a rubric names, by name in models/ (the grader's Rubric reads the same
+    keys): its correctness scenes, its noise and speed scenes, its variants' box."""
+    try:
+        with open(rubric) as f:
+            j = json.load(f)
+    except (OSError, ValueError):
+        return []
+    section = lambda name: j.get(name) if isinstance(j.get(name), dict) else {}
+    names = list(section("correctness").get("scenes", []))
+    names += [section("noise").get("scene"), section("speed").get("scene"),
+              (section("variants").get("box") or {}).get("scene")]
+    return sorted({n for n in names if isinstance(n, str) and n})
+
+
+def require_rubric_scenes(files, root):
+    """The autograder holds the kit's tracked files: a scene the rubric grades on that git does
+    not track would stop every grading there, so it stops the packaging instead."""
+    for name in rubric_scene_names(os.path.join(root, RUBRIC)):
+        if f"models/{name}.ecs" not in files:
+            raise PackagingError(f"{RUBRIC} grades on {name}, but git does not track "
+                                 f"models/{name}.ecs: the autograder would not have it; "
+                                 f"git add models/{name}.* (its .obj and .mtl too)")
+
+
 def gradescope(out, root=KIT):
     files = sorted(set(kit_files(root)) | set(hidden_scene_files(root))
                    | set(rubric_files_for_autograder(root)))
+    require_rubric_scenes(files, root)
     at_root = {name: os.path.join(root, "scripts", "gradescope", name)
                for name in ("setup.sh", "run_autograder")}
 

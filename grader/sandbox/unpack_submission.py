@@ -22,6 +22,7 @@ import stat
 import subprocess
 import sys
 import tarfile
+import time
 import zipfile
 
 MAX_ENTRIES = 20000  # members or folder entries looked at, at most
@@ -205,10 +206,11 @@ class GitObjects:
                             "GIT_OBJECT_DIRECTORY": os.path.join(self.git_dir, "objects"),
                             "GIT_CONFIG_NOSYSTEM": "1", "GIT_CONFIG_GLOBAL": os.devnull,
                             "GIT_ATTR_NOSYSTEM": "1", "GIT_NO_REPLACE_OBJECTS": "1",
-                            "GIT_TERMINAL_PROMPT": "0", "LC_ALL": "C"}
+                            "GIT_TERMINAL_PROMPT": "0", "GIT_LITERAL_PATHSPECS": "1",
+                            "LC_ALL": "C"}
 
-    def git(self, *arguments):
-        run = subprocess.run(["git", *arguments], capture_output=True, timeout=60, env=self.environment)
+    def git(self, *arguments, timeout=60):
+        run = subprocess.run(["git", *arguments], capture_output=True, timeout=timeout, env=self.environment)
         if run.returncode != 0:
             raise ValueError("git could not read the repository: "
                              + run.stderr.decode(errors="replace").strip()[:200])
@@ -245,6 +247,17 @@ class GitObjects:
                 break
         return commit, None
 
+    def last_change(self, commit, path, timeout):
+        """The committer time of the last commit before `commit` (itself included) that changed
+        `path`, a path of its tree; None if none did or if git could not tell within `timeout`
+        seconds (a history long enough to take longer is dated by HEAD, not refused)."""
+        try:
+            text = self.git("log", "-1", "--format=%ct", commit, "--", path,
+                            timeout=timeout).decode().strip()
+        except (ValueError, subprocess.TimeoutExpired):
+            return None
+        return int(text) if text.isdigit() else None
+
 
 def newest_time(paths):
     """The newest modification time among paths, symbolic links not followed; None if none."""
@@ -267,8 +280,10 @@ def main():
     candidates = Candidates(limit, lab_files)
     # When it was submitted, as far as the submission tells: its last commit's time for a
     # repository (set by the student's machine), else its files' modification time.
+    # Each lab file's own time too, for a late policy with a deadline per lab: the last commit
+    # that changed it, else its modification time; an archive's own time for each of its labs.
     report = {"kind": "", "taken": {}, "problems": candidates.problems,
-              "commit": "", "submitted_at": None, "time_source": ""}
+              "commit": "", "submitted_at": None, "time_source": "", "lab_times": {}}
     try:
         lower = submission.lower()
         if os.path.isdir(submission) and is_git_repository(submission):
@@ -277,6 +292,13 @@ def main():
             report["taken"] = objects.head_files(candidates)
             report["commit"], report["submitted_at"] = objects.head_commit()
             report["time_source"] = "last commit"
+            # At most 20 s in all of the intake's minute, whatever the history's length.
+            deadline = time.monotonic() + 20
+            for name, where in report["taken"].items():
+                left = deadline - time.monotonic()
+                changed = objects.last_change(report["commit"], where, left) if left > 0 else None
+                if changed is not None:
+                    report["lab_times"][name] = changed
         elif os.path.isdir(submission):
             report["kind"] = "folder"
             from_folder(submission, candidates)
@@ -284,6 +306,10 @@ def main():
             report["submitted_at"] = newest_time(os.path.join(submission, where)
                                                  for where in report["taken"].values())
             report["time_source"] = "lab files' modification time"
+            for name, where in report["taken"].items():
+                changed = newest_time([os.path.join(submission, where)])
+                if changed is not None:
+                    report["lab_times"][name] = changed
         elif lower.endswith(".zip"):
             report["kind"] = "zip"
             report["taken"] = from_zip(submission, candidates)
@@ -296,6 +322,8 @@ def main():
         if report["kind"] in ("zip", "tar"):
             report["submitted_at"] = newest_time([submission])
             report["time_source"] = "archive's modification time"
+            if report["submitted_at"] is not None:
+                report["lab_times"] = {name: report["submitted_at"] for name in report["taken"]}
     except (OSError, ValueError, EOFError, zipfile.BadZipFile, tarfile.TarError,
             subprocess.TimeoutExpired, RuntimeError) as error:
         candidates.problems.append(f"the submission could not be read: {error}")

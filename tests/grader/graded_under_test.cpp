@@ -195,10 +195,12 @@ TEST_CASE("submission times: ISO 8601 with a zone, a deadline in local time, an 
     Scratch scratch;
     const fs::path csv = scratch.path / "times.csv";
     std::ofstream(csv)
-        << "id,submitted_at\nalice,2026-12-01T10:00:00Z\r\nbob,2026-12-02T10:00:00Z\n";
+        << "id,submitted_at\nalice,2026-12-01T10:00:00Z\r\nbob,2026-12-02T10:00:00Z\n"
+           "bob,uniform,2026-12-03T10:00:00Z\n";
     const auto times = loadSubmissionTimes(csv.string());
-    CHECK(times.at("alice") == *parseTime("2026-12-01T10:00Z"));
-    CHECK(times.at("bob") == *parseTime("2026-12-02T10:00Z"));
+    CHECK(times.whole.at("alice") == *parseTime("2026-12-01T10:00Z"));
+    CHECK(times.whole.at("bob") == *parseTime("2026-12-02T10:00Z"));
+    CHECK(times.byLab.at("bob").at("uniform") == *parseTime("2026-12-03T10:00Z")); // one lab's
     auto errorOf = [&] {
         try {
             loadSubmissionTimes(csv.string());
@@ -211,6 +213,8 @@ TEST_CASE("submission times: ISO 8601 with a zone, a deadline in local time, an 
     CHECK(errorOf().find("times.csv:2") != std::string::npos);
     std::ofstream(csv) << "dave,yesterday\n"; // a first line is a header only if it says id
     CHECK(errorOf().find("times.csv:1") != std::string::npos);
+    std::ofstream(csv) << "id,lab,submitted_at\ndave,lab9,2026-12-01T10:00:00Z\n";
+    CHECK(errorOf().find("times.csv:2: 'lab9' is not a lab") != std::string::npos);
 }
 
 TEST_CASE("a gradebook never mixes maxima, says pending, stale and late", "[grader]") {

@@ -15,7 +15,9 @@ promises:
 - a batch prints its time estimate before its gradings (per submission, the class, a Slurm
   array) and the measured figure at the end;
 - a late policy in the rubric (slip days, a penalty per day, a cap, an extension) gives each
-  student's late days, slip days used, penalty and final total, which lms.csv exports;
+  student's late days, slip days used, penalty and final total, which lms.csv exports; with a
+  deadline per lab and the LMS's time per lab, each late lab loses from its own points and the
+  slip days are one budget spent in the order the labs were due;
 - a regrade says, per student, the old and new total and each changed check with its reason (the
   terminal, regrades.csv, summary.html); a total it lowers on the same files is withheld from
   lms.csv until the rubric's regrades.lower_scores decides, and keep_higher keeps the higher one
@@ -121,10 +123,12 @@ RAISED_LAB_LOST = str(8 * len(LABS) + 10 - 8)
 RAISED_NO_LAB_4 = str(8 * len(LABS) + 10 - 18)
 
 
-def batch(step, *options):
+def batch(step, *options, references=True):
+    """A batch of the class into OUT; `references` False leaves --references out, for the batch
+    to take the one before's."""
     start = time.time()
-    run = subprocess.run([GRADER, "batch", SUBS, "--out", OUT, "--jobs", "2", "--no-speed",
-                          "--rubric", RUBRIC, "--references", NO_REFERENCES, "--scenes", HIDDEN, *options],
+    run = subprocess.run([GRADER, "batch", SUBS, "--out", OUT, "--jobs", "2", "--no-speed", "--rubric", RUBRIC,
+                          *(["--references", NO_REFERENCES] if references else []), "--scenes", HIDDEN, *options],
                          capture_output=True, text=True, timeout=1200)
     timings[step] = time.time() - start
     print(f"-- {step}: exit {run.returncode}, {timings[step]:.0f} s\n{run.stdout}{run.stderr[-1500:]}", flush=True)
@@ -372,6 +376,30 @@ def main():
               and f"\ncarol,carol,{RAISED}\n" in lms,
               f"late policy: bob 3 days late, 1 slip day, 20% off ({RAISED_LAB_LOST} -> {bob_final}, as the LMS "
               "gets it); carol on time by her extension; nothing graded again")
+
+        # 10b. A deadline per lab: roulette due a week after the rest, and the LMS's time for each
+        # of bob's labs where it has one. His branching, a day late, takes the one slip day; his
+        # uniform, 3 days late, has none left and loses 30% of its own points, not of his total.
+        lab_times = os.path.join(root, "lab-times.csv")
+        write(lab_times, "id,lab,submitted_at\nalice,2026-12-01T12:00Z\nbob,2026-12-01T12:00Z\n"
+                         "bob,branching,2026-12-02T12:00Z\nbob,uniform,2026-12-04T12:00Z\n"
+                         "bob,roulette,2026-12-06T12:00Z\ncarol,2026-12-01T12:00Z\n")
+        deadlines = {lab: "2026-12-01T23:59Z" for lab in ("branching", "uniform", "importance", "glossy", "mis")}
+        deadlines["roulette"] = "2026-12-08T23:59Z"
+        light_rubric(root, roulette_correctness=16, max_noise_ratio=1.2, moved_points=2, lower_scores="keep_higher",
+                     late={"penalty_per_day": 0.1, "slip_days": 1, "max_penalty": 0.3, "deadlines": deadlines})
+        # Run again without --references: the batch takes the one before's (its batch.json).
+        run = batch("a deadline per lab", "--times", lab_times, references=False)
+        rows = gradebook()
+        bob = rows["bob"]
+        lost = 0.3 * float(bob["uniform"]) / float(bob["graded_total"])
+        bob_final = f"{round(100 * float(bob['total']) * (1 - lost)) / 100:g}"
+        check(run.returncode == 0 and "as the batch before" in run.stderr and graded_in_last_batch() == []
+              and [bob[c] for c in ("late", "late_days", "slip_days_used", "final_total", "late_labs")]
+              == ["yes", "4", "1", bob_final, "branching 1 day(s) late (1 slip day(s)), uniform 3 day(s) late"]
+              and rows["alice"]["late"] == "no" and f"\nbob,bob,{bob_final}\n" in read(os.path.join(OUT, "lms.csv")),
+              f"a deadline per lab: bob's branching takes the slip day, his uniform loses 30% of its "
+              f"{bob['uniform']} points ({bob['total']} -> {bob_final}); roulette, due later, is on time")
 
         # 11. Per-student variants: each student also grades on a furnace and a Cornell box of
         # their own, drawn from the class secret and their id. New scenes for everyone: the class

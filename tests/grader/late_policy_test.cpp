@@ -112,12 +112,137 @@ TEST_CASE("the gradebook shows the raw total, the late days and slip days used, 
     writeGradebook(scratch.path.string(), entries, now, std::nullopt);
     const std::string csv = readFile((scratch.path / "gradebook.csv").string());
     INFO(csv);
-    CHECK(csv.find(",graded_total,late_days,slip_days_used,late_penalty,final_total\n") !=
+    CHECK(csv.find(",graded_total,late_days,slip_days_used,late_penalty,final_total,late_labs\n") !=
           std::string::npos);
-    CHECK(csv.find(",40,0,0,0,40\n") != std::string::npos);
-    CHECK(csv.find(",40,1,1,0,40\n") != std::string::npos);
-    CHECK(csv.find(",40,3,1,0.2,32\n") != std::string::npos);
+    CHECK(csv.find(",40,0,0,0,40,\n") != std::string::npos);
+    CHECK(csv.find(",40,1,1,0,40,\n") != std::string::npos);
+    CHECK(csv.find(",40,3,1,0.2,32,\n") != std::string::npos);
     const std::string lms = readFile((scratch.path / "lms.csv").string());
     CHECK(lms.find("cy,cy,32\n") != std::string::npos);
     CHECK(lms.find("bo,bo,40\n") != std::string::npos);
+}
+
+TEST_CASE("a deadline per lab: each lab late by its own time, the slip days one budget spent in "
+          "the order the labs were due, a lab's own extension",
+          "[grader]") {
+    const long long week = 7 * kDay, first = 1'800'000'000;
+    LatePolicy policy;
+    policy.given = true;
+    policy.penaltyPerDay = 0.1;
+    policy.slipDays = 2;
+    policy.labDeadlines = {
+        {"branching", first}, {"uniform", first + week}, {"roulette", first + 3 * week}};
+    policy.labExtensionDays = {{"erin", {{"uniform", 3}}}};
+    // branching 1 day late, uniform 3 days, roulette on time, importance (no deadline of its
+    // own, none for the batch) never late, glossy not handed in.
+    const std::map<std::string, long long> times = {{"branching", first + kHour},
+                                                    {"uniform", first + week + 2 * kDay + kHour},
+                                                    {"importance", first + 9 * week},
+                                                    {"roulette", first + 3 * week - kHour}};
+    const std::vector<LabLateness> labs = labLatenessOf(policy, "dan", times, std::nullopt);
+    REQUIRE(labs.size() == 3);
+    CHECK(labs[0].lab == "branching");
+    CHECK(labs[0].late.daysLate == 1);
+    CHECK(labs[0].late.slipDaysUsed == 1);
+    CHECK(labs[0].late.penalty == 0);
+    CHECK(labs[1].lab == "uniform");
+    CHECK(labs[1].late.daysLate == 3);
+    CHECK(labs[1].late.slipDaysUsed == 1); // what branching left of the two
+    CHECK(labs[1].late.penalty == Approx(0.2));
+    CHECK(labs[2].lab == "roulette");
+    CHECK(labs[2].late.daysLate == 0);
+    CHECK(lateLabsText(labs) == "branching 1 day(s) late (1 slip day(s)), uniform 3 day(s) late "
+                                "(1 slip day(s))");
+    // Lab scores 10 and 20 and 10: uniform's 20 loses 20%, 4 of 40 points.
+    CHECK(totalPenalty(labs, {{"branching", 10}, {"uniform", 20}, {"roulette", 10}}) ==
+          Approx(0.1));
+    // The batch's --deadline for the labs without their own: importance is now 2 weeks late.
+    CHECK(labLatenessOf(policy, "dan", times, first + 7 * week).size() == 4);
+    // Erin's 3 days on uniform: on time there, so both slip days are left for the rest.
+    const std::vector<LabLateness> erin = labLatenessOf(policy, "erin", times, std::nullopt);
+    CHECK(erin[1].late.daysLate == 0);
+    CHECK(erin[0].late.daysLate == 1);
+}
+
+TEST_CASE("a late policy's deadlines per lab and a lab's own extension are checked, named when "
+          "wrong",
+          "[grader]") {
+    const test::ScratchFolder scratch("late");
+    const std::string rubric = (scratch.path / "rubric.json").string();
+    const LatePolicy policy = readLatePolicy(
+        {{"deadlines", {{"branching", "2026-10-02T23:59Z"}, {"mis", "2026-12-11T23:59Z"}}}},
+        rubric);
+    CHECK(policy.perLab());
+    CHECK(policy.labDeadlines.at("branching") == *parseTime("2026-10-02T23:59Z"));
+    CHECK(latePolicyFromJson(latePolicyJson(policy)).labDeadlines == policy.labDeadlines);
+    CHECK(errorOf({{"deadlines", {{"lab7", "2026-10-02T23:59Z"}}}}, rubric)
+              .find("late.deadlines names 'lab7', not a lab") != std::string::npos);
+    CHECK(errorOf({{"deadlines", {{"uniform", "Friday"}}}}, rubric)
+              .find("late.deadlines.uniform is \"Friday\", not a time") != std::string::npos);
+    std::ofstream(scratch.path / "extensions.csv") << "id,days,lab\nerin@uni.edu,3,uniform\n";
+    const LatePolicy extended = readLatePolicy(
+        {{"deadlines", {{"uniform", "2026-10-09T23:59Z"}}}, {"extensions", "extensions.csv"}},
+        rubric);
+    CHECK(extended.labExtensionDays.at("erin_uni.edu").at("uniform") == 3);
+    CHECK(latePolicyFromJson(latePolicyJson(extended)).labExtensionDays ==
+          extended.labExtensionDays);
+    CHECK(errorOf({{"extensions", "extensions.csv"}}, rubric)
+              .find("needs a deadline per lab: late.deadlines") != std::string::npos);
+    std::ofstream(scratch.path / "extensions.csv") << "erin,3,labs\n";
+    CHECK(errorOf(
+              {{"deadlines", {{"uniform", "2026-10-09T23:59Z"}}}, {"extensions", "extensions.csv"}},
+              rubric)
+              .find("extensions.csv:1: 'labs' is not a lab") != std::string::npos);
+}
+
+TEST_CASE("under a deadline per lab the gradebook takes each lab's own time, the LMS's over the "
+          "submission's, and lowers each late lab's points",
+          "[grader]") {
+    const test::ScratchFolder scratch("late");
+    GradingNow now;
+    now.rubricHash = "rubric";
+    now.scenesHash = "scenes";
+    now.maxScore = 40;
+    now.late.given = true;
+    now.late.penaltyPerDay = 0.1;
+    now.late.slipDays = 1;
+    now.late.labDeadlines = {{"branching", *parseTime("2026-10-02T23:59Z")},
+                             {"uniform", *parseTime("2026-10-09T23:59Z")}};
+    // Lab files' own times: branching changed 2 days after its deadline, uniform on time; the
+    // submission's time (the last commit) is later than both.
+    auto result = [](long long uniformAt) {
+        return nlohmann::json{
+            {"status", "graded"},
+            {"score", 40},
+            {"max_score", 40},
+            {"graded_under", {{"rubric_hash", "rubric"}, {"scenes_hash", "scenes"}}},
+            {"labs", {{"branching", {{"score", 10}}}, {"uniform", {{"score", 30}}}}},
+            {"intake",
+             {{"submitted_at", *parseTime("2026-11-20T12:00Z")},
+              {"time_source", "last commit"},
+              {"taken",
+               {{"branching.cpp", "labs/branching.cpp"}, {"uniform.cpp", "labs/uniform.cpp"}}},
+              {"lab_times",
+               {{"branching.cpp", *parseTime("2026-10-04T12:00Z")}, {"uniform.cpp", uniformAt}}}}}};
+    };
+    // fay's uniform was changed after its deadline, but her LMS's hand-in of it was on time.
+    now.times.byLab["fay"]["uniform"] = *parseTime("2026-10-09T20:00Z");
+    const std::vector<GradebookEntry> entries = {
+        {"eve", "", result(*parseTime("2026-10-09T12:00Z")), "", false, std::nullopt},
+        {"fay", "", result(*parseTime("2026-10-12T12:00Z")), "", false, std::nullopt},
+        {"gus", "", result(*parseTime("2026-10-12T12:00Z")), "", false, std::nullopt}};
+    writeGradebook(scratch.path.string(), entries, now, std::nullopt);
+    const std::string csv = readFile((scratch.path / "gradebook.csv").string());
+    INFO(csv);
+    CHECK(csv.find(",final_total,late_labs\n") != std::string::npos);
+    // eve and fay: branching 2 days late, 1 slip day, 10% of its 10 points: 39 of 40.
+    CHECK(csv.find(",yes,") != std::string::npos);
+    CHECK(csv.find(",40,2,1,0.025,39,branching 2 day(s) late (1 slip day(s))\n") !=
+          std::string::npos);
+    // gus: uniform 3 days late too, with no slip day left: 30% of its 30 points, 9 more.
+    CHECK(csv.find(",40,5,1,0.25,30,\"branching 2 day(s) late (1 slip day(s)), uniform 3 day(s) "
+                   "late\"\n") != std::string::npos);
+    const std::string lms = readFile((scratch.path / "lms.csv").string());
+    CHECK(lms.find("fay,fay,39\n") != std::string::npos);
+    CHECK(lms.find("gus,gus,30\n") != std::string::npos);
 }

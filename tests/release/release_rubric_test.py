@@ -4,18 +4,23 @@ ctest `release.rubric`.
 
 Usage: release_rubric_test.py --source KIT --build BUILD
 
-Packages the kit with an instructor's rubric (the kit's, its points changed and its correctness
-checked on the furnace alone at 32x32 pixels, so that the furnace's stored reference no longer
-fits and is measured again) by scripts/package_kit.py, as the make target does, with BUILD's grader,
+Packages the kit with an instructor's rubric (the kit's, its points changed, its correctness
+checked at 32x32 pixels on the furnace, the VI2 box (still its noise scene) and a scene of the
+instructor's, and its speed timed on the furnace, so that those scenes' stored references no
+longer fit and are measured again, and lab_figures.json's timed runs too) by scripts/package_kit.py, as the make target does, with BUILD's grader,
 and checks, each printing PASS/FAIL:
 - the release's grader/rubric.json is the instructor's, but the sections only a batch's
   gradebook uses (its late policy, whose extensions file names students, and its regrade
   setting; both outside the rubric's hash), and its grader/release.json names it with the hash
   the grader gives the instructor's file;
-- the furnace's reference was measured again, at the rubric's size, and the references the
-  rubric still fits are the kit's, unchanged;
+- the furnace's reference was measured again, at the rubric's size, and the references of the
+  scenes it does not grade on are the kit's, unchanged; lab_figures.json's timed runs, of other
+  runs than the rubric's, were measured again, so that the release's make grade can estimate
+  speed, and its notebook figures (of the same noise scene) are the kit's;
 - `grader rubric` on the release's rubric, beside its release.json, says which rubric the release
   carries; edited afterwards, it says it is not that one;
+- an instructor's own public scene, added to models/ for the course and not tracked by git, is
+  packed with its mesh and materials (and its reference measured), since the rubric grades on it;
 - a rubric with per-student variants is packed without the name of its class secret's file
   (outside the hash, which stays the instructor's), and a secret that is a file of the kit stops
   the packaging, naming it;
@@ -47,14 +52,42 @@ def package(out, rubric):
                            out, "--rubric", rubric, "--build", BUILD], capture_output=True, text=True)
 
 
+def course_scene(stem):
+    """An instructor's own scene in the kit's models/, untracked: the diffuse box with a warmer
+    light, its .ecs, .obj and .mtl named `stem`. Returns the files written."""
+    models = os.path.join(KIT, "models")
+    written = []
+    for extension, rewrite in ((".ecs", lambda t: t.replace("cornell_box_diffuse.obj", stem + ".obj")),
+                               (".obj", lambda t: t.replace("cornell_box_diffuse.mtl", stem + ".mtl")),
+                               (".mtl", lambda t: t + "\nnewmtl unused_by_the_mesh\nKd 0.5 0.5 0.5\n")):
+        with open(os.path.join(models, "cornell_box_diffuse" + extension)) as f:
+            text = rewrite(f.read())
+        path = os.path.join(models, stem + extension)
+        with open(path, "w") as f:
+            f.write(text)
+        written.append(path)
+    return written
+
+
 def main():
+    # Removed whatever happens: the scene is the test's, in the kit's folder for the grader to read.
+    stem = f"course_box_{os.getpid()}"
+    written = course_scene(stem)
+    try:
+        return checks(stem)
+    finally:
+        for path in written:
+            os.remove(path)
+
+
+def checks(stem):
     with tempfile.TemporaryDirectory() as root:
         rubric = json.load(open(os.path.join(KIT, "grader", "rubric.json")))
         rubric["about"] = "CS 999, fall 2026"
         rubric["points"]["uniform"]["noise"] = 4
         rubric["correctness"].update({"width": 32, "height": 32, "tiles": 2, "seeds": 4,
-                                      "scenes": ["furnace"]})
-        rubric["noise"]["scene"] = rubric["speed"]["scene"] = "furnace"
+                                      "scenes": ["furnace", "cornell_box_VI2_Specular", stem]})
+        rubric["speed"]["scene"] = "furnace"
         # The gradebook's own sections, the extensions file naming students: not for the release.
         rubric["late"] = {"penalty_per_day": 0.1, "extensions": "extensions.csv"}
         rubric["regrades"] = {"lower_scores": "keep_higher"}
@@ -90,12 +123,27 @@ def main():
               "the release's rubric is the instructor's, but its late policy and regrade setting (the gradebook's, "
               f"naming students) and its class secret's name, and release.json names it and its hash ({release})")
         furnace = json.load(open(os.path.join(grader_folder, "references", "furnace.json")))
-        kit_box = os.path.join(KIT, "grader", "references", "cornell_box_VI2_Specular.json")
+        kit_glass = os.path.join(KIT, "grader", "references", "refraction_check.json")
         check(furnace["width"] == 32 and filecmp.cmp(os.path.join(grader_folder, "references",
-                                                                    "cornell_box_VI2_Specular.json"),
-                                                       kit_box, shallow=False)
+                                                                    "refraction_check.json"),
+                                                       kit_glass, shallow=False)
               and "measuring furnace again" in made.stdout,
-              f"the furnace's reference measured again at 32x32 (width {furnace['width']}), the box's kept as the kit's")
+              f"the furnace's reference measured again at 32x32 (width {furnace['width']}), the glass's, "
+              "a scene the rubric does not grade on, kept as the kit's")
+        figures = json.load(open(os.path.join(grader_folder, "references", "lab_figures.json")))
+        kit_figures = json.load(open(os.path.join(KIT, "grader", "references", "lab_figures.json")))
+        timed = figures["timed_runs"]
+        check("measuring lab_figures.json's timed runs again" in made.stdout
+              and (timed["scene"], timed["width"], timed["seeds"]) == ("furnace", 32, 4)
+              and all(v > 0 for v in timed["samples_per_second"].values()) and "machine" in timed
+              and figures["notebook"] == kit_figures["notebook"],
+              "lab_figures.json's timed runs measured again on the rubric's runs for the release "
+              f"({timed['scene']}, {timed['width']}x{timed['height']}, {timed['seeds']} seeds), its notebook kept")
+        course_files = [f"models/{stem}{e}" for e in (".ecs", ".obj", ".mtl")]
+        check(all(os.path.isfile(os.path.join(unpacked, "pathlab", f)) for f in course_files)
+              and os.path.isfile(os.path.join(grader_folder, "references", stem + ".json"))
+              and f"models/{stem}.ecs" in made.stdout and "git does not track" in made.stdout,
+              f"the instructor's own scene {stem}, untracked, is packed with its mesh, materials and reference")
         released = os.path.join(grader_folder, "rubric.json")
         says = subprocess.run([GRADER, "rubric", "--rubric", released], capture_output=True, text=True).stdout
         check(f"this release carries the instructor's rubric course-rubric.json (hash {release['rubric_hash']})" in says
@@ -116,6 +164,22 @@ def main():
         check(refused.returncode == 2 and "would ship in the release" in refused.stderr
               and "models/furnace.mtl" in refused.stderr and not os.path.exists(tracked_out),
               f"a class secret that is a file of the kit stops the packaging ({refused.stderr.strip()[-200:]})")
+
+        # The autograder packs the kit's tracked files: a rubric grading on an untracked scene
+        # stops `make gradescope` (checked on a kit of the rubric alone).
+        sys.path.insert(0, os.path.join(KIT, "scripts"))
+        import package_kit
+        gradescope_kit = os.path.join(root, "gradescope-kit")
+        os.makedirs(os.path.join(gradescope_kit, "grader"))
+        json.dump(rubric, open(os.path.join(gradescope_kit, "grader", "rubric.json"), "w"))
+        tracked_scenes = ["models/furnace.ecs", "models/cornell_box_VI2_Specular.ecs"]
+        try:
+            package_kit.require_rubric_scenes(tracked_scenes, gradescope_kit)
+            words = ""
+        except package_kit.PackagingError as error:
+            words = str(error)
+        check(f"grades on {stem}, but git does not track models/{stem}.ecs" in words,
+              f"make gradescope refuses a rubric grading on an untracked scene ({words})")
 
         del rubric["points"]["mis"]
         broken = os.path.join(root, "broken.json")

@@ -11,6 +11,7 @@
 #include "pathlab/support/progress_bar.h"
 
 #include <algorithm>
+#include <set>
 #include <filesystem>
 
 namespace pathlab::grader {
@@ -125,6 +126,17 @@ std::vector<GradingScene> gradingScenes(const Rubric& rubric, const SceneSources
         scenes.push_back(std::move(s));
     }
     return scenes;
+}
+
+std::vector<std::string> rubricSceneFiles(const Rubric& rubric) {
+    std::vector<std::string> names = rubric.scenes;
+    names.push_back(rubric.noiseScene);
+    names.push_back(rubric.speedScene);
+    if (!rubric.variants.boxScene.empty()) names.push_back(rubric.variants.boxScene);
+    std::set<std::string> files;
+    for (const std::string& name : names)
+        for (const std::string& file : sceneFiles(publicScenePath(name))) files.insert(file);
+    return {files.begin(), files.end()};
 }
 
 std::string scenesHash(const Rubric& rubric, const std::string& hiddenFolder) {

@@ -11,6 +11,10 @@ namespace pathlab::grader {
 /// models/NAME.ecs: a public scene of the rubric.
 std::string publicScenePath(const std::string& name);
 
+/// The files of every public scene the rubric names (its correctness scenes, its noise and speed
+/// scenes, its variants' box), sorted, each once: what a release carrying the rubric must hold.
+std::vector<std::string> rubricSceneFiles(const Rubric& rubric);
+
 /// Where the instructor keeps hidden scenes: grader/hidden_scenes/. Every command that grades
 /// uses it unless told otherwise (--scenes DIR, --scenes none).
 std::string defaultHiddenScenesFolder();

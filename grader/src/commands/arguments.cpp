@@ -52,6 +52,8 @@ options
   --variant DIR       also grade on your own variant's scenes, from the folder your instructor
                       sent you (when their rubric grades each student on a variant)
   --rubric FILE       points and thresholds (default: grader/rubric.json)
+  --scene-files       rubric: list the files of the public scenes the rubric names, one a line
+                      (what make student-release RUBRIC=FILE packs)
   --references DIR    stored references (default: grader/references)
   --seed N            seed base (default 1); a fail is re-checked on fresh seeds anyway
   --threads N         threads per render (default: all cores)
@@ -71,8 +73,9 @@ make-references
   --only-hidden       measure only the hidden scenes' references, into the reference cache
                       (Gradescope's setup.sh does this once, so no submission waits for it)
   --only-stale        measure only the public scenes whose reference in --references is
-                      missing or no longer fits the rubric, and not lab_figures.json (make
-                      student-release RUBRIC=FILE does this for the instructor's rubric)
+                      missing or no longer fits the rubric, and lab_figures.json only if it
+                      was measured for other timed runs (make student-release RUBRIC=FILE
+                      does this for the instructor's rubric)
 
 batch
   --out DIR           gradebook.csv, summary.html, batch.log and submissions/ID/ (feedback)
@@ -84,14 +87,16 @@ batch
   --keep-stale        keep results graded under another rubric or other scenes (default: grade
                       them again); the gradebook marks them stale
   --deadline TIME     flag submissions made after TIME (2026-12-01T23:59, local time, or with
-                      Z or +01:00) as late in the gradebook
+                      Z or +01:00) as late in the gradebook; the labs' own deadlines, where
+                      the rubric's late policy gives them, go first
   --id ID             submission: the student's id, where the submission's folder is not named
                       by it (per-student variants and the late policy's extensions go by it)
   --submitted-at TIME submission: when it was handed in; with --deadline, the rubric's late
                       policy lowers its Gradescope and PrairieLearn scores (run_autograder
                       passes Gradescope's created_at and due date)
-  --times FILE.csv    submission times (id,submitted_at) from your LMS, in place of those found
-                      (a git repository's last commit, else the submission's file time)
+  --times FILE.csv    submission times (id,submitted_at, or id,lab,submitted_at for one lab)
+                      from your LMS, in place of those found (a git repository's last commit,
+                      else the submission's file time)
   --prior DIR         also compare the class's files with the earlier terms kept in DIR
                       (grader keep-term), not those among themselves; merge takes it too
   --shard K/N         grade only every N-th submission, starting at the K-th (0-based)
@@ -177,6 +182,7 @@ const std::map<std::string, bool Arguments::*>& flagOptions() {
         {"--reveal-hidden", &Arguments::revealHidden}, {"--only-hidden", &Arguments::onlyHidden},
         {"--keep-stale", &Arguments::keepStale},       {"--only-figures", &Arguments::onlyFigures},
         {"--only-stale", &Arguments::onlyStale},       {"--force", &Arguments::force},
+        {"--scene-files", &Arguments::sceneFiles},
     };
     return flags;
 }
@@ -373,10 +379,14 @@ Arguments parseArguments(int argc, char** argv) {
     const int first = readCommand(argc, argv, a);
     bool scenesGiven = false;
     readOptions(argc, argv, first, a, scenesGiven);
-    for (int i = first; i < argc; ++i)
+    for (int i = first; i < argc; ++i) {
         a.rubricGiven = a.rubricGiven || std::string(argv[i]).rfind("--rubric", 0) == 0;
+        a.referencesGiven = a.referencesGiven || std::string(argv[i]).rfind("--references", 0) == 0;
+    }
     if (a.command == "help") return a;
     settleHiddenScenes(a, scenesGiven);
+    if (a.sceneFiles && a.command != "rubric")
+        throw InputError("option --scene-files is for grader rubric");
     if (a.command == "rubric") return a;
     if (a.referenceCache.empty())
         a.referenceCache = (thisProgram().parent_path() / "reference-cache").string();

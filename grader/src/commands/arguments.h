@@ -25,7 +25,8 @@ struct Arguments {
     /// grade: a student's variant folder (student_variant.h) to grade on as well.
     std::string variant;
     std::string rubric, references;
-    bool rubricGiven = false; ///< --rubric on the command line (else the kit's)
+    bool rubricGiven = false;     ///< --rubric on the command line (else the kit's)
+    bool referencesGiven = false; ///< --references on the command line (else the kit's)
     std::string json, junit, gradescope, prairielearn, html, report;
     /// --report: where `make sweep` wrote its plots (default: sweep/ beside the grader).
     std::string sweeps;
@@ -42,6 +43,7 @@ struct Arguments {
     int jobs = 1;
     int estimateNodes = 10; ///< batch: the Slurm array its time estimate is also given for
     bool force = false;
+    bool sceneFiles = false;       ///< rubric: list the files of the public scenes it names
     std::vector<std::string> only; ///< grade only these submission ids (again)
     bool keepStale = false;        ///< keep results graded under another rubric or scenes
     std::string deadline;          ///< ISO 8601; a submission after it is flagged late

@@ -44,6 +44,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 
 namespace pathlab::grader {
 
@@ -112,7 +113,10 @@ DeadlineAndTimes deadlineAndTimes(const Arguments& a, const std::string& out) {
 /// A time for an id that is no submission is likely a typing error in the CSV (a shard, which
 /// sees only some of the ids, cannot tell).
 void noteTimesOfOthers(const GradingNow& grading, const std::vector<Submission>& submissions) {
-    for (const auto& [id, when] : grading.times)
+    std::set<std::string> named;
+    for (const auto& [id, when] : grading.times.whole) named.insert(id);
+    for (const auto& [id, labs] : grading.times.byLab) named.insert(id);
+    for (const std::string& id : named)
         if (!hasId(submissions, id))
             std::fprintf(stderr,
                          "note: the submission times name '%s', which is not a submission here\n",
@@ -126,6 +130,22 @@ void logBatchStart(std::ofstream& log, const Arguments& a, size_t submissions,
         << (a.shards > 1 ? ", shard " + std::to_string(a.shard) + "/" + std::to_string(a.shards)
                          : "")
         << ", rubric " << grading.rubricHash << ", scenes " << grading.scenesHash << "\n";
+}
+
+/// A batch run again into OUT without --references grades against the references the batch
+/// before used (its batch.json), as it keeps its deadline: a course rubric's references are not
+/// the kit's, and the kit's would stop the batch as stale.
+Arguments withEarlierReferences(Arguments a, const std::string& out) {
+    a.references = fs::absolute(a.references).string();
+    const std::string earlier = earlierSetting(out, "references");
+    if (a.referencesGiven || earlier.empty() || earlier == a.references) return a;
+    if (!fs::is_directory(earlier))
+        throw InputError("the batch before into " + out + " graded against the references in " +
+                         earlier + ", which is no longer a folder: pass --references");
+    std::fprintf(stderr, "references %s, as the batch before into %s (--references sets others)\n",
+                 earlier.c_str(), out.c_str());
+    a.references = earlier;
+    return a;
 }
 
 /// A batch into a folder graded under another rubric file, with no --rubric given, is most
@@ -236,20 +256,39 @@ void measureStudentVariants(const Arguments& a, const Rubric& rubric,
     if (!rubric.variants.perStudent || rubric.variants.boxScene.empty()) return;
     const std::string secret = classSecret(rubric.variants);
     const LabRunner solution{a.solutionViewer, Implementation::Solution, {}, {}, {}};
-    for (const Submission& s : todo) {
-        const std::string folder = scratch + "/variants/" + s.id;
-        studentVariantScenes(rubric, drawStudentVariant(rubric.variants, secret, s.id), folder,
-                             solution, scratch, referenceCache);
+    // One reference per student, before the first grading and before the gradings' estimate:
+    // a class of 200 takes a while here, so the first one measured says how long.
+    std::fprintf(stderr,
+                 "the box references of %zu student(s)' variants (those not measured before) "
+                 "...\n",
+                 todo.size());
+    bool estimated = false;
+    for (size_t i = 0; i < todo.size(); ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        const std::string folder = scratch + "/variants/" + todo[i].id;
+        studentVariantScenes(rubric, drawStudentVariant(rubric.variants, secret, todo[i].id),
+                             folder, solution, scratch, referenceCache);
         fs::remove_all(folder);
+        const double seconds = secondsSince(start);
+        if (!estimated && seconds > 1 && i + 1 < todo.size()) {
+            estimated = true;
+            std::fprintf(stderr,
+                         "estimated: a box reference took %.1f s; at most %s for the other %zu "
+                         "student(s)\n",
+                         seconds, roughDuration(seconds * (todo.size() - i - 1)).c_str(),
+                         todo.size() - i - 1);
+        }
     }
 }
 
 /// OUT/batch.json: what the batch's gradebook is written against, for `grader merge` and for
 /// the next batch into OUT.
 void writeBatchJson(const std::string& out, const std::string& rubricFile,
-                    const GradingNow& grading, const DeadlineAndTimes& dates) {
+                    const std::string& references, const GradingNow& grading,
+                    const DeadlineAndTimes& dates) {
     writeFileAtomically(out + "/batch.json",
                         nlohmann::json{{"rubric_file", rubricFile},
+                                       {"references", references},
                                        {"rubric_hash", grading.rubricHash},
                                        {"scenes_hash", grading.scenesHash},
                                        {"max_score", grading.maxScore},
@@ -399,7 +438,7 @@ int runBatch(const Arguments& given, const Rubric& rubric, const std::string& sc
     requireKnownIds(given.only, submissions);
     fs::create_directories(given.out + "/submissions");
     const std::string out = fs::absolute(given.out).string();
-    const Arguments a = withHiddenScenes(given, rubric, out);
+    const Arguments a = withEarlierReferences(withHiddenScenes(given, rubric, out), out);
     const DeadlineAndTimes dates = deadlineAndTimes(a, out);
     const GradingNow grading = gradingNow(a, rubric, dates.deadline, dates.times);
     if (a.shards == 1) noteTimesOfOthers(grading, submissions);
@@ -439,7 +478,7 @@ int runBatch(const Arguments& given, const Rubric& rubric, const std::string& sc
     if (!selection.todo.empty()) prepare();
     // What this batch's gradebook is written against, for `grader merge`: only once the canary
     // passed, so that a batch it stopped changes nothing.
-    writeBatchJson(out, fs::absolute(a.rubric).string(), grading, dates);
+    writeBatchJson(out, fs::absolute(a.rubric).string(), a.references, grading, dates);
     const std::optional<GradingTime> estimated = sayEstimate(a, out, selection.todo.size(), log);
     const auto gradingsStart = std::chrono::steady_clock::now();
     const JobCounts counts =

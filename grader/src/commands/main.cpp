@@ -50,6 +50,11 @@ int main(int argc, char** argv) {
             if (a.command == "merge") return mergeBatches(a);
             if (a.command == "keep-term") return keepTerm(a);
             const Rubric rubric = loadRubric(a.rubric);
+            if (a.command == "rubric" && a.sceneFiles) {
+                for (const std::string& file : rubricSceneFiles(rubric))
+                    std::printf("%s\n", file.c_str());
+                return 0;
+            }
             if (a.command == "rubric") {
                 const int hidden = a.scenesDir.empty()
                                        ? 0

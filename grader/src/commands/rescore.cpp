@@ -33,6 +33,7 @@ Intake storedIntake(const nlohmann::json& result) {
     intake.commit = i.value("commit", "");
     intake.submittedAt = i.value("submitted_at", 0LL);
     intake.timeSource = i.value("time_source", "");
+    intake.labTimes = i.value("lab_times", std::map<std::string, long long>{});
     return intake;
 }
 

@@ -9,9 +9,12 @@
 #include "common/plain_id.h"
 #include "reports/submission_time.h"
 
+#include "pathlab/render/lab_registry.h"
 #include "pathlab/support/input_error.h"
 
+#include <cmath>
 #include <cstdio>
+#include <map>
 
 namespace pathlab::grader {
 
@@ -31,10 +34,33 @@ void applyLatePolicy(const Arguments& a, const Rubric& rubric, SubmissionOutcome
                                            "policy, so the score is not lowered");
         return;
     }
+    char note[400];
+    if (rubric.late.perLab()) {
+        // Each lab handed in now, against its own deadline (--deadline for a lab without one).
+        std::map<std::string, long long> times;
+        std::map<std::string, double> scores;
+        for (const LabGrade& lab : outcome.report.labs) {
+            scores[std::string(labName(lab.lab))] = lab.score();
+            if (outcome.intake.taken.count(labFileName(lab.lab)))
+                times[std::string(labName(lab.lab))] = *submitted;
+        }
+        const std::vector<LabLateness> labs =
+            labLatenessOf(rubric.late, outcome.id, times, *deadline);
+        const std::string late = lateLabsText(labs);
+        if (late.empty()) return;
+        outcome.report.latePenalty = totalPenalty(labs, scores);
+        std::snprintf(note, sizeof note,
+                      "late: %s: the score loses %g%% (the rubric's late policy, a deadline per "
+                      "lab), %g of %g",
+                      late.c_str(), std::round(1000 * outcome.report.latePenalty) / 10,
+                      outcome.report.score() * (1 - outcome.report.latePenalty),
+                      outcome.report.maxScore());
+        outcome.report.notes.push_back(note);
+        return;
+    }
     const Lateness late = latenessOf(rubric.late, outcome.id, *submitted, *deadline);
     if (late.daysLate == 0) return;
     outcome.report.latePenalty = late.penalty;
-    char note[240];
     std::snprintf(note, sizeof note,
                   "late: %d day(s) after the deadline, %d slip day(s) forgiven: the score loses "
                   "%g%% (the rubric's late policy), %g of %g",

@@ -293,7 +293,8 @@ std::string resultJson(const SubmissionOutcome& outcome, const std::string& subm
                                 {"commit", intake.commit},
                                 {"files_hash", outcome.filesHash},
                                 {"submitted_at", intake.submittedAt},
-                                {"time_source", intake.timeSource}}}};
+                                {"time_source", intake.timeSource},
+                                {"lab_times", intake.labTimes}}}};
     return j.dump(1) + "\n";
 }
 

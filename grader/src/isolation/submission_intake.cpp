@@ -84,6 +84,9 @@ Intake takeSubmission(const std::string& submission, const std::string& folder,
         if (j.contains("submitted_at") && j.at("submitted_at").is_number_integer())
             intake.submittedAt = j.at("submitted_at").get<long long>();
         intake.timeSource = j.value("time_source", "");
+        if (j.contains("lab_times") && j.at("lab_times").is_object())
+            for (const auto& [name, when] : j.at("lab_times").items())
+                if (when.is_number_integer()) intake.labTimes[name] = when.get<long long>();
         for (const auto& [name, where] : j.at("taken").items()) {
             const auto file = outcome.files.find(name);
             if (file == outcome.files.end() || file->second.size() > MaxLabFileBytes) continue;

@@ -23,6 +23,9 @@ struct Intake {
     /// from what: "last commit", "lab files' modification time", "archive's modification time".
     long long submittedAt = 0;
     std::string timeSource;
+    /// Each lab file's own time (lab file name -> seconds since 1970), for a late policy with a
+    /// deadline per lab: the last commit that changed it, its modification time, or the archive's.
+    std::map<std::string, long long> labTimes;
 };
 
 /// Copies the lab files of `submission` into `folder` (which must exist and be empty).

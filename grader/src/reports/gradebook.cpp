@@ -1,7 +1,9 @@
 #include "reports/gradebook.h"
 
 #include "checks/check_kind.h"
+#include "reports/class_history.h"
 #include "reports/histogram_svg.h"
+#include "reports/late_cost.h"
 #include "reports/similarity_clusters.h"
 #include "reports/page_style.h"
 #include "reports/reports.h"
@@ -13,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -28,25 +31,9 @@ std::string number(double value) {
     return out.str();
 }
 
-/// When a result was submitted (seconds since 1970) and how that is known; 0 when unknown.
-std::pair<long long, std::string> submittedAt(const GradebookEntry& e, const GradingNow& now) {
-    if (const auto given = now.times.find(e.id); given != now.times.end())
-        return {given->second, "--times"};
-    if (e.result.is_null()) return {0, ""};
-    const nlohmann::json intake = e.result.value("intake", nlohmann::json::object());
-    return {intake.value("submitted_at", 0LL), intake.value("time_source", "")};
-}
-
-/// What the entry's time costs it under the late policy; none without a deadline or a time.
-std::optional<Lateness> latenessNow(const GradebookEntry& e, const GradingNow& now) {
-    const long long at = submittedAt(e, now).first;
-    if (!now.deadline || at == 0) return std::nullopt;
-    return latenessOf(now.late, e.id, at, *now.deadline);
-}
-
 /// "yes", "no", or "" where there is no deadline or no time; an extension moves the deadline.
 std::string lateness(const GradebookEntry& e, const GradingNow& now) {
-    const std::optional<Lateness> late = latenessNow(e, now);
+    const std::optional<LateCost> late = lateCostOf(e, now);
     if (!late) return "";
     return late->daysLate > 0 ? "yes" : "no";
 }
@@ -54,7 +41,7 @@ std::string lateness(const GradebookEntry& e, const GradingNow& now) {
 /// The total after the late policy's penalty: what the LMS gets.
 std::optional<double> finalTotal(const GradebookEntry& e, const GradingNow& now) {
     const std::optional<double> total = countedTotal(e, now);
-    const std::optional<Lateness> late = latenessNow(e, now);
+    const std::optional<LateCost> late = lateCostOf(e, now);
     if (!total || !late || !now.late.given) return total;
     return std::round(100 * *total * (1 - late->penalty)) / 100;
 }
@@ -114,7 +101,7 @@ std::string csv(const std::vector<GradebookEntry>& entries, const GradingNow& no
         for (CheckKind check : AllChecks)
             text += "," + std::string(labName(lab)) + "_" + std::string(checkName(check));
     text += ",missing_labs,submitted_at,time_source,late,commit,files_hash,rubric_hash,attempt,"
-            "graded_total,late_days,slip_days_used,late_penalty,final_total\n";
+            "graded_total,late_days,slip_days_used,late_penalty,final_total,late_labs\n";
     for (const GradebookEntry& e : entries) {
         const std::optional<double> total = countedTotal(e, now);
         const nlohmann::json labs =
@@ -159,12 +146,13 @@ std::string csv(const std::vector<GradebookEntry>& entries, const GradingNow& no
                 csvField(under.value("rubric_hash", "")) + "," +
                 (e.result.is_null() ? "" : number(e.result.value("attempt", 1))) + "," +
                 (total ? number(e.result.value("score", 0.0)) : "");
-        const std::optional<Lateness> late = latenessNow(e, now);
+        const std::optional<LateCost> late = lateCostOf(e, now);
         const std::optional<double> finalScore = finalTotal(e, now);
         text += "," + (late ? number(late->daysLate) : "") + "," +
                 (late && now.late.given ? number(late->slipDaysUsed) : "") + "," +
-                (late && now.late.given ? number(late->penalty) : "") + "," +
-                (finalScore ? number(*finalScore) : "") + "\n";
+                (late && now.late.given ? number(std::round(1000 * late->penalty) / 1000) : "") +
+                "," + (finalScore ? number(*finalScore) : "") + "," +
+                csvField(late ? late->labs : "") + "\n";
     }
     return text;
 }
@@ -311,7 +299,8 @@ std::string timeTable(const std::vector<GradebookEntry>& entries) {
 
 std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const GradingNow& now,
                         const std::optional<std::vector<SimilarLabs>>& similar,
-                        const std::vector<RegradeComparison>& regrades) {
+                        const std::vector<RegradeComparison>& regrades,
+                        const std::vector<ClassFigures>& history) {
     int graded = 0, pending = 0, stale = 0, late = 0, lowered = 0;
     double sum = 0;
     // (lab, diagnosis) -> the submissions it was made of
@@ -368,7 +357,11 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
         html << "<tr><td>" << count << "</td><td>" << escapeXml(key.first) << "</td><td>"
              << escapeXml(key.second) << "</td><td>" << whose << "</td></tr>\n";
     }
-    html << "</table>\n<h2>Regrades</h2>\n"
+    html << "</table>\n<h2>Over time</h2>\n<p>The class when each batch into this folder "
+            "finished (<code>history.jsonl</code>): the mean total and each lab's mean score, as "
+            "percentages of their maxima, and the share of those graded whose lab passed its "
+            "correctness check.</p>\n"
+         << classHistoryHtml(history) << "<h2>Regrades</h2>\n"
          << regradesHtml(regrades) << "<h2>Similar submissions</h2>\n"
          << similarityTable(similar)
          << "<h2>Submissions</h2>\n<table><tr><th>id</th><th>score</th><th>late</th><th>status</"
@@ -376,13 +369,20 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
     for (const GradebookEntry& e : allEntries) {
         const std::string link = "submissions/" + e.id + "/index.html";
         const std::optional<double> total = countedTotal(e, now);
+        const std::optional<double> lateTotal = finalTotal(e, now);
+        // The score the LMS gets, and the graded one beside it where the late policy lowered it.
+        std::string score = total ? number(*total) + " / " + number(now.maxScore) : "";
+        if (total && lateTotal && *lateTotal != *total)
+            score = number(*lateTotal) + " / " + number(now.maxScore) + " (graded " +
+                    number(*total) + ")";
+        const std::optional<LateCost> late = lateCostOf(e, now);
         html << "<tr><td>"
              << (e.result.is_null()
                      ? escapeXml(e.id)
                      : "<a href=\"" + escapeXml(link) + "\">" + escapeXml(e.id) + "</a>")
-             << "</td><td>" << (total ? number(*total) + " / " + number(now.maxScore) : "")
-             << "</td><td>" << lateness(e, now) << "</td><td>" << escapeXml(statusOf(e, now))
-             << "</td></tr>\n";
+             << "</td><td>" << score << "</td><td>" << lateness(e, now)
+             << (late && !late->labs.empty() ? ": " + escapeXml(late->labs) : "") << "</td><td>"
+             << escapeXml(statusOf(e, now)) << "</td></tr>\n";
     }
     html << "</table>\n<h2>Grading time</h2>\n<p>Wall-clock seconds of each submission's "
             "last grading, by phase (a re-score measures nothing and takes none).</p>\n"
@@ -448,7 +448,18 @@ void writeGradebook(const std::string& out, const std::vector<GradebookEntry>& e
     writeFileAtomically(out + "/lms.csv", lmsCsv(entries, now));
     writeFileAtomically(out + "/regrades.csv", regradesCsv(regrades));
     if (similar) writeFileAtomically(out + "/similarity.csv", similarityCsv(*similar));
-    writeFileAtomically(out + "/summary.html", summaryPage(entries, now, similar, regrades));
+    // A finished batch (its similarity report made) is a point in the class's history.
+    std::vector<ClassFigures> history = readClassHistory(out);
+    if (similar) {
+        const ClassFigures figures =
+            classFiguresNow(entries, now, isoTime(static_cast<long long>(std::time(nullptr))));
+        if (figures.graded > 0) {
+            addToClassHistory(out, figures);
+            history.push_back(figures);
+        }
+    }
+    writeFileAtomically(out + "/summary.html",
+                        summaryPage(entries, now, similar, regrades, history));
 }
 
 } // namespace pathlab::grader

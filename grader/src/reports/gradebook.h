@@ -6,6 +6,7 @@
 
 #include "checks/rubric.h"
 #include "reports/regrade_report.h"
+#include "reports/submission_time.h"
 
 #include <nlohmann/json.hpp>
 
@@ -34,8 +35,8 @@ struct GradingNow {
     std::string measurementHash; ///< Rubric::measurementHash
     bool measuresSpeed = true;   ///< not --no-speed
     double maxScore = 0;
-    std::optional<long long> deadline;      ///< --deadline, seconds since 1970
-    std::map<std::string, long long> times; ///< --times: id -> submitted at, over what results say
+    std::optional<long long> deadline;                ///< --deadline, seconds since 1970
+    SubmissionTimes times;                            ///< --times, over what results say
     LowerScores lowerScores = LowerScores::Undecided; ///< the rubric's regrades.lower_scores
     LatePolicy late;                                  ///< the rubric's late policy
 };
@@ -67,7 +68,8 @@ std::optional<double> countedTotal(const GradebookEntry& e, const GradingNow& no
 
 /// Writes OUT/gradebook.csv, OUT/lms.csv, OUT/regrades.csv and OUT/summary.html (atomically),
 /// rows in the order of `entries`; the summary lists the `similar` pairs, or says they come once
-/// the batch is done.
+/// the batch is done. A batch done (`similar` given) adds the class's figures to
+/// OUT/history.jsonl, which the summary draws over time (class_history.h).
 void writeGradebook(const std::string& out, const std::vector<GradebookEntry>& entries,
                     const GradingNow& now, const std::optional<std::vector<SimilarLabs>>& similar);
 

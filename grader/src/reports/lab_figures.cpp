@@ -166,6 +166,33 @@ std::map<std::string, EstimatorFigures> measureNotebook(const LabRunner& runner,
     return figures;
 }
 
+namespace {
+
+/// The timed runs' part of lab_figures.json.
+nlohmann::json timedRunsJson(const LabFigures& figures, const Rubric& rubric) {
+    nlohmann::json timed = nlohmann::json::object(), timedSpp = nlohmann::json::object(),
+                   rays = nlohmann::json::object();
+    for (Lab lab : AllLabs) {
+        const std::string name(labName(lab));
+        timed[name] = figures.timedSamplesPerSecond[lab];
+        timedSpp[name] = rubric.forLab(lab).correctnessSpp;
+        const RaysPerSample& r = figures.timedRays[lab];
+        rays[name] = {{"camera", r.camera}, {"bounce", r.bounce}, {"shadow", r.shadow}};
+    }
+    return {{"scene", rubric.speedScene},
+            {"width", rubric.width},
+            {"height", rubric.height},
+            {"seeds", rubric.seeds},
+            {"spp", timedSpp},
+            {"runs", rubric.speedRuns},
+            {"measure", "samples per CPU-second"},
+            {"samples_per_second", timed},
+            {"rays_per_sample", rays},
+            {"kit_cpu_seconds_per_ray", figures.kitCpuSecondsPerRay}};
+}
+
+} // namespace
+
 void saveLabFigures(const std::string& path, const LabFigures& figures, const Rubric& rubric) {
     nlohmann::json notebook = nlohmann::json::object();
     for (const auto& [key, f] : figures.notebook) {
@@ -177,15 +204,6 @@ void saveLabFigures(const std::string& path, const LabFigures& figures, const Ru
                          {"rays_per_sample", f.raysPerSample},
                          {"notes", f.notes}};
         if (f.noiseLate > 0) notebook[key]["noise_late"] = f.noiseLate;
-    }
-    nlohmann::json timed = nlohmann::json::object(), timedSpp = nlohmann::json::object(),
-                   rays = nlohmann::json::object();
-    for (Lab lab : AllLabs) {
-        const std::string name(labName(lab));
-        timed[name] = figures.timedSamplesPerSecond[lab];
-        timedSpp[name] = rubric.forLab(lab).correctnessSpp;
-        const RaysPerSample& r = figures.timedRays[lab];
-        rays[name] = {{"camera", r.camera}, {"bounce", r.bounce}, {"shadow", r.shadow}};
     }
     const nlohmann::json j = {
         {"made_by", "grader make-references"},
@@ -204,18 +222,41 @@ void saveLabFigures(const std::string& path, const LabFigures& figures, const Ru
           {"max_depth", rubric.maxDepth},
           {"graded_continue_prob", rubric.continueProb},
           {"estimators", notebook}}},
-        {"timed_runs",
-         {{"scene", rubric.speedScene},
-          {"width", rubric.width},
-          {"height", rubric.height},
-          {"seeds", rubric.seeds},
-          {"spp", timedSpp},
-          {"runs", rubric.speedRuns},
-          {"measure", "samples per CPU-second"},
-          {"samples_per_second", timed},
-          {"rays_per_sample", rays},
-          {"kit_cpu_seconds_per_ray", figures.kitCpuSecondsPerRay}}}};
+        {"timed_runs", timedRunsJson(figures, rubric)}};
     writeFileAtomically(path, j.dump(1) + "\n");
+}
+
+void replaceTimedRuns(const std::string& path, const LabFigures& timed, const Rubric& rubric) {
+    std::ifstream in(path);
+    nlohmann::json j = nlohmann::json::parse(in);
+    j["timed_runs"] = timedRunsJson(timed, rubric);
+    // The notebook's figures stay those of the machine at the top; these are of this one.
+    j["timed_runs"]["machine"] = machineJson(timed.machine);
+    writeFileAtomically(path, j.dump(1) + "\n");
+}
+
+FiguresStaleness labFiguresStaleness(const std::string& path, const Rubric& rubric) {
+    FiguresStaleness stale;
+    try {
+        const LabFigures figures = loadLabFigures(path, rubric);
+        for (Lab lab : AllLabs)
+            if (!(figures.timedSamplesPerSecond[lab] > 0))
+                stale.timedRuns = "its timed runs are not the rubric's (the speed scene, image "
+                                  "size, seeds or samples per pixel differ)";
+        std::ifstream in(path);
+        const nlohmann::json notebook = nlohmann::json::parse(in).at("notebook");
+        const nlohmann::json continueProb = rubric.continueProb; // as saveLabFigures writes it
+        if (notebook.value("scene", "") != rubric.noiseScene ||
+            notebook.value("max_depth", 0) != rubric.maxDepth ||
+            notebook.value("graded_continue_prob", nlohmann::json()) != continueProb)
+            stale.notebook = "its notebook figures are not of the rubric's noise scene, max "
+                             "depth or continue probability";
+    } catch (const InputError& e) {
+        stale.timedRuns = stale.notebook = e.what();
+    } catch (const nlohmann::json::exception& e) {
+        stale.timedRuns = stale.notebook = path + ": " + e.what();
+    }
+    return stale;
 }
 
 LabFigures loadLabFigures(const std::string& path, const Rubric& rubric) {

@@ -92,6 +92,17 @@ std::map<std::string, EstimatorFigures> measureNotebook(const LabRunner& runner,
 
 /// grader/references/lab_figures.json. Atomic.
 void saveLabFigures(const std::string& path, const LabFigures& figures, const Rubric& rubric);
+/// Replaces only the timed runs of the figures at `path` with `timed`'s (and its machine's),
+/// keeping the notebook's. Atomic.
+void replaceTimedRuns(const std::string& path, const LabFigures& timed, const Rubric& rubric);
+
+/// What of the stored figures does not fit the rubric, in words ("" where it fits): the timed
+/// runs (another speed scene, image size, seeds or samples per pixel) and the notebook (another
+/// noise scene, max depth or continue probability). A missing or unreadable file: both.
+struct FiguresStaleness {
+    std::string timedRuns, notebook;
+};
+FiguresStaleness labFiguresStaleness(const std::string& path, const Rubric& rubric);
 /// Throws InputError when missing, unreadable, or measured for other timed runs than the
 /// rubric's (then timedSamplesPerSecond would not compare).
 LabFigures loadLabFigures(const std::string& path, const Rubric& rubric);

@@ -1,79 +1,48 @@
 #include "reports/submission_time.h"
 
+#include "pathlab/render/lab_registry.h"
 #include "pathlab/support/input_error.h"
 
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <vector>
 
 namespace pathlab::grader {
 
-std::optional<long long> parseTime(const std::string& text) {
-    int year = 0, month = 0, day = 0, hour = 0, minute = 0, second = 0, used = 0;
-    if (std::sscanf(text.c_str(), "%4d-%2d-%2dT%2d:%2d%n", &year, &month, &day, &hour, &minute,
-                    &used) != 5)
-        return std::nullopt;
-    std::string rest = text.substr(static_cast<size_t>(used));
-    if (rest.size() >= 3 && rest[0] == ':') {
-        int more = 0;
-        if (std::sscanf(rest.c_str(), ":%2d%n", &second, &more) != 1) return std::nullopt;
-        rest = rest.substr(static_cast<size_t>(more));
-    }
-    if (month < 1 || month > 12 || day < 1 || day > 31 || hour > 23 || minute > 59 || second > 60)
-        return std::nullopt;
-    std::tm fields{};
-    fields.tm_year = year - 1900, fields.tm_mon = month - 1, fields.tm_mday = day;
-    fields.tm_hour = hour, fields.tm_min = minute, fields.tm_sec = second;
-    // 2026-02-30 is not a day: timegm would carry it into March.
-    std::tm check = fields;
-    const std::time_t asUtc = timegm(&check);
-    std::tm back{};
-    gmtime_r(&asUtc, &back);
-    if (back.tm_mday != day || back.tm_mon != month - 1) return std::nullopt;
-    if (rest.empty()) {
-        fields.tm_isdst = -1; // local time, daylight saving as it was on that day
-        return static_cast<long long>(std::mktime(&fields));
-    }
-    long long offset = 0;
-    if (rest != "Z") {
-        int offsetHours = 0, offsetMinutes = 0;
-        if ((rest[0] != '+' && rest[0] != '-') ||
-            std::sscanf(rest.c_str() + 1, "%2d:%2d", &offsetHours, &offsetMinutes) != 2 ||
-            rest.size() != 6)
-            return std::nullopt;
-        offset = (rest[0] == '-' ? -1 : 1) * (offsetHours * 3600LL + offsetMinutes * 60LL);
-    }
-    return static_cast<long long>(timegm(&fields)) - offset;
-}
-
-std::string isoTime(long long seconds) {
-    const std::time_t t = static_cast<std::time_t>(seconds);
-    std::tm utc{};
-    gmtime_r(&t, &utc);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-    return text;
-}
-
-std::map<std::string, long long> loadSubmissionTimes(const std::string& path) {
+SubmissionTimes loadSubmissionTimes(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw InputError(path + ": cannot open the submission times");
-    std::map<std::string, long long> times;
+    SubmissionTimes times;
     std::string line;
     for (int number = 1; std::getline(in, line); ++number) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
         if (line.empty()) continue;
-        const size_t comma = line.find(',');
-        const std::string id = line.substr(0, comma);
-        const std::string time = comma == std::string::npos ? "" : line.substr(comma + 1);
-        const std::optional<long long> seconds = parseTime(time);
-        if (number == 1 && !seconds && id == "id") continue; // the header, id,submitted_at
-        if (!seconds)
-            throw InputError(path + ":" + std::to_string(number) +
-                             ": expected id,time (time as "
-                             "2026-12-01T23:59:00Z), got '" +
+        std::vector<std::string> fields;
+        for (size_t from = 0;;) {
+            const size_t comma = line.find(',', from);
+            fields.push_back(line.substr(from, comma - from));
+            if (comma == std::string::npos) break;
+            from = comma + 1;
+        }
+        const std::optional<long long> seconds =
+            fields.size() >= 2 ? parseTime(fields.back()) : std::nullopt;
+        // The header: id,submitted_at or id,lab,submitted_at.
+        if (number == 1 && !seconds && fields[0] == "id") continue;
+        const std::string where = path + ":" + std::to_string(number) + ": ";
+        if (!seconds || fields.size() > 3 || fields[0].empty())
+            throw InputError(where +
+                             "expected id,time or id,lab,time (time as 2026-12-01T23:59:00Z), "
+                             "got '" +
                              line + "'");
-        times[id] = *seconds;
+        const long long at = seconds.value_or(0); // given: checked above
+        if (fields.size() == 2) {
+            times.whole[fields[0]] = at;
+            continue;
+        }
+        if (!labFromName(fields[1]))
+            throw InputError(where + "'" + fields[1] + "' is not a lab (" + labNames(", ") + ")");
+        times.byLab[fields[0]][fields[1]] = at;
     }
     return times;
 }

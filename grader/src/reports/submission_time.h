@@ -1,6 +1,8 @@
 #pragma once
-/// Submission times for the gradebook: ISO 8601 text, the instructor's deadline, and the times an
-/// LMS reports (--times), which override those a submission tells of itself.
+/// The times an LMS reports (--times), which override those a submission tells of itself. (Times
+/// as text, parseTime and isoTime, are common/local_time.h's.)
+
+#include "common/local_time.h"
 
 #include <map>
 #include <optional>
@@ -8,15 +10,15 @@
 
 namespace pathlab::grader {
 
-/// "2026-12-01T23:59", with optional seconds, and Z or ±HH:MM (else local time), as seconds
-/// since 1970; nullopt if it is not such a time.
-std::optional<long long> parseTime(const std::string& text);
+/// The times an LMS recorded: a submission's, or one lab's where the LMS has an assignment per lab.
+struct SubmissionTimes {
+    std::map<std::string, long long> whole;                        ///< id -> submitted at
+    std::map<std::string, std::map<std::string, long long>> byLab; ///< id -> lab name -> at
+    bool empty() const { return whole.empty() && byLab.empty(); }
+};
 
-/// "2026-12-01T22:59:00Z".
-std::string isoTime(long long seconds);
-
-/// A CSV of id,submitted_at (a first line "id,..." is its header); throws InputError naming the
-/// file and line of anything it cannot read.
-std::map<std::string, long long> loadSubmissionTimes(const std::string& path);
+/// A CSV of lines id,submitted_at or id,lab,submitted_at (a first line "id,..." is its header);
+/// throws InputError naming the file and line of anything it cannot read, a lab's name included.
+SubmissionTimes loadSubmissionTimes(const std::string& path);
 
 } // namespace pathlab::grader
