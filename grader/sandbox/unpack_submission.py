@@ -187,7 +187,11 @@ def resolve_head(git_dir):
 class GitObjects:
     """The objects of a submission's repository, read by git as plain data: git runs in a fresh,
     empty repository of our own whose object store is the submission's, so that nothing of the
-    submission's configuration, attributes, filters or hooks is read, let alone run."""
+    submission's configuration, attributes, filters or hooks is read, let alone run. Nor are the
+    object store's own hints, which the student writes as freely: a commit-graph (whose trees
+    could differ from the commits') is not read, and alternates are refused. Only the list of
+    shallow commits is taken over, which can only make a lab's time later (an honest shallow
+    clone's history stops there, and git log would fail on the missing parents)."""
 
     def __init__(self, repository):
         self.git_dir = git_dir_of(repository)
@@ -196,18 +200,30 @@ class GitObjects:
         if os.path.realpath(objects) != os.path.join(os.path.realpath(self.git_dir), "objects"):
             raise ValueError("the repository's objects folder is a link: submit the repository "
                              "itself")
+        if os.path.lexists(os.path.join(objects, "info", "alternates")):
+            raise ValueError("the repository borrows objects from another (objects/info/"
+                             "alternates): submit a full clone")
         own = os.path.abspath("git-reader")
         for folder in ("objects", "refs"):
             os.makedirs(os.path.join(own, folder), exist_ok=True)
         with open(os.path.join(own, "HEAD"), "w") as f:
             f.write("ref: refs/heads/none\n")
+        shallow = read_small(os.path.join(self.git_dir, "shallow"), 1 << 20, inside=self.git_dir)
+        if shallow is not None:
+            ids = shallow.split()
+            if not all(GIT_OBJECT_ID.fullmatch(i) for i in ids):
+                raise ValueError("git could not read the repository: its shallow file is not a "
+                                 "list of commits")
+            with open(os.path.join(own, "shallow"), "w") as f:
+                f.write("".join(i + "\n" for i in ids))
         self.environment = {"PATH": os.environ.get("PATH", "/usr/bin:/bin"), "HOME": os.getcwd(),
                             "GIT_DIR": own,
                             "GIT_OBJECT_DIRECTORY": os.path.join(self.git_dir, "objects"),
                             "GIT_CONFIG_NOSYSTEM": "1", "GIT_CONFIG_GLOBAL": os.devnull,
                             "GIT_ATTR_NOSYSTEM": "1", "GIT_NO_REPLACE_OBJECTS": "1",
                             "GIT_TERMINAL_PROMPT": "0", "GIT_LITERAL_PATHSPECS": "1",
-                            "LC_ALL": "C"}
+                            "GIT_CONFIG_COUNT": "1", "GIT_CONFIG_KEY_0": "core.commitGraph",
+                            "GIT_CONFIG_VALUE_0": "false", "LC_ALL": "C"}
 
     def git(self, *arguments, timeout=60):
         run = subprocess.run(["git", *arguments], capture_output=True, timeout=timeout, env=self.environment)
@@ -216,9 +232,20 @@ class GitObjects:
                              + run.stderr.decode(errors="replace").strip()[:200])
         return run.stdout
 
+    def head(self):
+        """HEAD's commit: what HEAD names, a tag peeled; a HEAD naming a tree or a blob is no
+        commit, and has no time."""
+        named = resolve_head(self.git_dir)
+        try:
+            return self.git("rev-parse", "--verify", "--quiet", named + "^{commit}").decode().strip()
+        except ValueError:
+            raise ValueError(f"HEAD names {named}, which is not a commit") from None
+
     def head_files(self, candidates):
-        """Offers every file of HEAD's tree to `candidates`, each read as a blob (no filter)."""
-        commit = resolve_head(self.git_dir)
+        """Offers every file of HEAD's tree to `candidates`, each read as a blob (no filter).
+        A path git itself would not write (a component '.', '..' or empty, or not UTF-8) is
+        skipped: git log's pathspec would read it as another path."""
+        commit = self.head()
         listing = self.git("ls-tree", "-r", "-l", "-z", "--full-tree", commit)
         for i, entry in enumerate(listing.split(b"\0")):
             if not entry:
@@ -229,6 +256,16 @@ class GitObjects:
             meta, _, path = entry.partition(b"\t")
             mode, kind, object_id, size = meta.split()
             regular = kind == b"blob" and mode in (b"100644", b"100755")
+            try:
+                path.decode("utf-8")
+                odd = any(part in (b"", b".", b"..") for part in path.split(b"/"))
+            except UnicodeDecodeError:
+                odd = True
+            if odd:
+                candidates.problems.append(f"{path.decode(errors='replace')!r}: a path git does "
+                                           "not write (a '.', '..' or empty part, or not UTF-8): "
+                                           "skipped")
+                continue
 
             def read(object_id=object_id.decode()):
                 return self.git("cat-file", "blob", object_id)[:candidates.limit + 1]
@@ -237,26 +274,23 @@ class GitObjects:
         return candidates.choose()
 
     def head_commit(self):
-        """HEAD's commit id and its committer time (seconds since 1970)."""
-        commit = resolve_head(self.git_dir)
-        for line in self.git("cat-file", "commit", commit).decode(errors="replace").splitlines():
-            match = re.match(r"committer .* (\d+) [+-]\d{4}$", line)
-            if match:
-                return commit, int(match.group(1))
-            if not line:
-                break
-        return commit, None
+        """HEAD's commit id and its committer time (seconds since 1970), as git reads it."""
+        commit = self.head()
+        text = self.git("log", "-1", "--format=%ct", commit).decode().strip()
+        return commit, (int(text) if text.isdigit() else None)
 
     def last_change(self, commit, path, timeout):
         """The committer time of the last commit before `commit` (itself included) that changed
-        `path`, a path of its tree; None if none did or if git could not tell within `timeout`
-        seconds (a history long enough to take longer is dated by HEAD, not refused)."""
+        `path`, a path of its tree; None, and the reason, if git could not tell (within
+        `timeout` seconds: a history long enough to take longer is dated by HEAD, not refused)."""
         try:
             text = self.git("log", "-1", "--format=%ct", commit, "--", path,
                             timeout=timeout).decode().strip()
-        except (ValueError, subprocess.TimeoutExpired):
-            return None
-        return int(text) if text.isdigit() else None
+        except ValueError as error:
+            return None, str(error)
+        except subprocess.TimeoutExpired:
+            return None, f"git took more than {timeout:.0f} s"
+        return (int(text), "") if text.isdigit() else (None, f"git gave '{text[:40]}'")
 
 
 def newest_time(paths):
@@ -296,9 +330,13 @@ def main():
             deadline = time.monotonic() + 20
             for name, where in report["taken"].items():
                 left = deadline - time.monotonic()
-                changed = objects.last_change(report["commit"], where, left) if left > 0 else None
+                changed, why = (objects.last_change(report["commit"], where, left) if left > 0
+                                else (None, "no time was left"))
                 if changed is not None:
                     report["lab_times"][name] = changed
+                else:
+                    candidates.problems.append(f"{where}: when it last changed is not known "
+                                               f"({why}): dated by the last commit")
         elif os.path.isdir(submission):
             report["kind"] = "folder"
             from_folder(submission, candidates)

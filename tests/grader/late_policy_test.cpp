@@ -158,6 +158,16 @@ TEST_CASE("a deadline per lab: each lab late by its own time, the slip days one 
           Approx(0.1));
     // The batch's --deadline for the labs without their own: importance is now 2 weeks late.
     CHECK(labLatenessOf(policy, "dan", times, first + 7 * week).size() == 4);
+    // A lab dated 2^32 days after its deadline (a commit's date is the student's to set) is late
+    // by a century at most: its late days never wrap into negative ones, which would add slip
+    // days for the other labs.
+    std::map<std::string, long long> wild = times;
+    wild["branching"] = first + (1LL << 32) * kDay;
+    const std::vector<LabLateness> wrapped = labLatenessOf(policy, "dan", wild, std::nullopt);
+    CHECK(wrapped[0].late.daysLate == 36525);
+    CHECK(wrapped[0].late.slipDaysUsed == 2);
+    CHECK(wrapped[1].late.slipDaysUsed == 0);
+    CHECK(wrapped[1].late.penalty == Approx(0.3));
     // Erin's 3 days on uniform: on time there, so both slip days are left for the rest.
     const std::vector<LabLateness> erin = labLatenessOf(policy, "erin", times, std::nullopt);
     CHECK(erin[1].late.daysLate == 0);
@@ -225,12 +235,17 @@ TEST_CASE("under a deadline per lab the gradebook takes each lab's own time, the
               {"lab_times",
                {{"branching.cpp", *parseTime("2026-10-04T12:00Z")}, {"uniform.cpp", uniformAt}}}}}};
     };
+    // hal's lab files have no time (none his submission could tell): not on time, unknown.
+    nlohmann::json timeless = result(0);
+    timeless["intake"].erase("submitted_at");
+    timeless["intake"].erase("lab_times");
     // fay's uniform was changed after its deadline, but her LMS's hand-in of it was on time.
     now.times.byLab["fay"]["uniform"] = *parseTime("2026-10-09T20:00Z");
     const std::vector<GradebookEntry> entries = {
         {"eve", "", result(*parseTime("2026-10-09T12:00Z")), "", false, std::nullopt},
         {"fay", "", result(*parseTime("2026-10-12T12:00Z")), "", false, std::nullopt},
-        {"gus", "", result(*parseTime("2026-10-12T12:00Z")), "", false, std::nullopt}};
+        {"gus", "", result(*parseTime("2026-10-12T12:00Z")), "", false, std::nullopt},
+        {"hal", "", timeless, "", false, std::nullopt}};
     writeGradebook(scratch.path.string(), entries, now, std::nullopt);
     const std::string csv = readFile((scratch.path / "gradebook.csv").string());
     INFO(csv);
@@ -242,6 +257,12 @@ TEST_CASE("under a deadline per lab the gradebook takes each lab's own time, the
     // gus: uniform 3 days late too, with no slip day left: 30% of its 30 points, 9 more.
     CHECK(csv.find(",40,5,1,0.25,30,\"branching 2 day(s) late (1 slip day(s)), uniform 3 day(s) "
                    "late\"\n") != std::string::npos);
+    CHECK(csv.find(",,last commit,unknown,") != std::string::npos);
+    CHECK(csv.find(",40,0,0,0,40,\"branching: no time known, uniform: no time known\"\n") !=
+          std::string::npos);
+    CHECK(
+        readFile((scratch.path / "summary.html").string()).find("1 handed in with no time known") !=
+        std::string::npos);
     const std::string lms = readFile((scratch.path / "lms.csv").string());
     CHECK(lms.find("fay,fay,39\n") != std::string::npos);
     CHECK(lms.find("gus,gus,30\n") != std::string::npos);

@@ -92,10 +92,14 @@ int extensionOf(const LatePolicy& policy, const std::string& id, const std::stri
     return days == policy.extensionDays.end() ? 0 : days->second;
 }
 
-/// Whole days from `due` to `submittedAt`, rounded up; 0 if on time.
+/// Whole days from `due` to `submittedAt`, rounded up; 0 if on time. At most a century: a
+/// time far off (the student's clock sets a commit's) must not wrap into negative days, which
+/// would hand out slip days.
 int daysAfter(long long submittedAt, long long due) {
     if (submittedAt <= due) return 0;
-    return static_cast<int>((submittedAt - due + kSecondsPerDay - 1) / kSecondsPerDay);
+    constexpr long long Century = 36525;
+    return static_cast<int>(
+        std::min(Century, (submittedAt - due + kSecondsPerDay - 1) / kSecondsPerDay));
 }
 
 double penaltyFor(const LatePolicy& policy, const Lateness& late) {

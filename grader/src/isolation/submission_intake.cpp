@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 
@@ -15,6 +16,30 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string unpackScript = std::string(PATHLAB_GRADER_DIR) + "/sandbox/unpack_submission.py";
+
+/// A time the submission tells of itself (seconds since 1970), if it could be one: after 2000
+/// and no later than two days from now (a commit's clock may be off by a zone or so). Else 0,
+/// unknown, and a problem naming it: the student's machine sets these, and a wild one (a date in
+/// 2106, a negative one) must neither wrap around nor pass for on time.
+long long plausibleTime(const nlohmann::json& when, const std::string& what,
+                        std::vector<std::string>& problems) {
+    if (when.is_null()) return 0;
+    constexpr long long Year2000 = 946684800, TwoDays = 2 * 24 * 3600;
+    const long long latest = static_cast<long long>(std::time(nullptr)) + TwoDays;
+    // JSON reads a positive integer as unsigned: one past long long's range would wrap.
+    long long at = -1;
+    if (when.is_number_unsigned())
+        at = when.get<unsigned long long>() > (1ULL << 40)
+                 ? -1
+                 : static_cast<long long>(when.get<unsigned long long>());
+    else if (when.is_number_integer())
+        at = when.get<long long>();
+    if (at >= Year2000 && at <= latest) return at;
+    problems.push_back(what + ", " + when.dump() +
+                       " seconds since 1970, is not a time it could have been handed in: "
+                       "no time is kept (give it with --times)");
+    return 0;
+}
 
 bool endsWith(const std::string& text, const std::string& end) {
     return text.size() >= end.size() &&
@@ -81,12 +106,13 @@ Intake takeSubmission(const std::string& submission, const std::string& folder,
         intake.kind = j.at("kind");
         intake.problems = j.at("problems").get<std::vector<std::string>>();
         intake.commit = j.value("commit", "");
-        if (j.contains("submitted_at") && j.at("submitted_at").is_number_integer())
-            intake.submittedAt = j.at("submitted_at").get<long long>();
+        if (j.contains("submitted_at"))
+            intake.submittedAt = plausibleTime(j.at("submitted_at"), "its time", intake.problems);
         intake.timeSource = j.value("time_source", "");
         if (j.contains("lab_times") && j.at("lab_times").is_object())
             for (const auto& [name, when] : j.at("lab_times").items())
-                if (when.is_number_integer()) intake.labTimes[name] = when.get<long long>();
+                if (const long long at = plausibleTime(when, name + "'s time", intake.problems))
+                    intake.labTimes[name] = at;
         for (const auto& [name, where] : j.at("taken").items()) {
             const auto file = outcome.files.find(name);
             if (file == outcome.files.end() || file->second.size() > MaxLabFileBytes) continue;

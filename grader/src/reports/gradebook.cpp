@@ -31,11 +31,13 @@ std::string number(double value) {
     return out.str();
 }
 
-/// "yes", "no", or "" where there is no deadline or no time; an extension moves the deadline.
+/// "yes", "no", "unknown" (handed in with no time known: --times gives it), or "" where no
+/// deadline applies; an extension moves the deadline.
 std::string lateness(const GradebookEntry& e, const GradingNow& now) {
     const std::optional<LateCost> late = lateCostOf(e, now);
     if (!late) return "";
-    return late->daysLate > 0 ? "yes" : "no";
+    if (late->daysLate > 0) return "yes";
+    return late->timeUnknown ? "unknown" : "no";
 }
 
 /// The total after the late policy's penalty: what the LMS gets.
@@ -301,7 +303,7 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
                         const std::optional<std::vector<SimilarLabs>>& similar,
                         const std::vector<RegradeComparison>& regrades,
                         const std::vector<ClassFigures>& history) {
-    int graded = 0, pending = 0, stale = 0, late = 0, lowered = 0;
+    int graded = 0, pending = 0, stale = 0, late = 0, timeUnknown = 0, lowered = 0;
     double sum = 0;
     // (lab, diagnosis) -> the submissions it was made of
     std::map<std::pair<std::string, std::string>, std::vector<std::string>> diagnoses;
@@ -309,6 +311,7 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
     for (const GradebookEntry& e : allEntries) {
         pending += e.pending;
         late += lateness(e, now) == "yes";
+        timeUnknown += lateness(e, now) == "unknown";
         lowered += loweredUndecided(e, now);
         if (e.result.is_null()) continue;
         stale += !staleness(e.result, now).empty();
@@ -340,6 +343,11 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
         html << "<p>" << pending << " pending, " << stale
              << " stale (graded under another rubric or other "
              << "scenes), " << late << " late.</p>\n";
+    if (timeUnknown > 0)
+        html << "<p><b>" << timeUnknown
+             << " handed in with no time known</b> (late: <code>unknown</code>): the submission "
+                "told none it could have been handed in at, and nothing is taken off; give "
+                "their times with <code>--times</code>.</p>\n";
     if (lowered > 0)
         html << "<p><b>" << lowered
              << " total(s) lowered by a regrade of the same files</b>, withheld from lms.csv "

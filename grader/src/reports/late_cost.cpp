@@ -12,8 +12,10 @@ nlohmann::json intakeOf(const GradebookEntry& e) {
     return e.result.value("intake", nlohmann::json::object());
 }
 
-/// Each handed-in lab's time (lab name -> seconds since 1970), the LMS's over the submission's.
-std::map<std::string, long long> labTimesOf(const GradebookEntry& e, const GradingNow& now) {
+/// Each handed-in lab's time (lab name -> seconds since 1970), the LMS's over the submission's;
+/// the labs handed in with no time known go into `unknown`.
+std::map<std::string, long long> labTimesOf(const GradebookEntry& e, const GradingNow& now,
+                                            std::vector<std::string>& unknown) {
     const nlohmann::json intake = intakeOf(e);
     const nlohmann::json taken = intake.value("taken", nlohmann::json::object());
     // Results graded before labs had their own times have only the submission's.
@@ -30,15 +32,19 @@ std::map<std::string, long long> labTimesOf(const GradebookEntry& e, const Gradi
         if (lmsLabs != now.times.byLab.end())
             if (const auto lms = lmsLabs->second.find(name); lms != lmsLabs->second.end())
                 at = lms->second;
-        if (at != 0) times[name] = at;
+        if (at != 0)
+            times[name] = at;
+        else
+            unknown.push_back(name);
     }
     return times;
 }
 
 std::optional<LateCost> perLabCost(const GradebookEntry& e, const GradingNow& now) {
+    std::vector<std::string> unknown;
     const std::vector<LabLateness> labs =
-        labLatenessOf(now.late, e.id, labTimesOf(e, now), now.deadline);
-    if (labs.empty()) return std::nullopt;
+        labLatenessOf(now.late, e.id, labTimesOf(e, now, unknown), now.deadline);
+    if (labs.empty() && unknown.empty()) return std::nullopt;
     std::map<std::string, double> scores;
     const nlohmann::json graded = e.result.value("labs", nlohmann::json::object());
     for (const auto& [lab, result] : graded.items()) scores[lab] = result.value("score", 0.0);
@@ -49,6 +55,11 @@ std::optional<LateCost> perLabCost(const GradebookEntry& e, const GradingNow& no
     }
     cost.penalty = totalPenalty(labs, scores);
     cost.labs = lateLabsText(labs);
+    // A lab with no time is not taken as on time: the gradebook says so, for --times to settle.
+    for (const std::string& lab : unknown) {
+        cost.timeUnknown = true;
+        cost.labs += (cost.labs.empty() ? "" : ", ") + lab + ": no time known";
+    }
     return cost;
 }
 
@@ -65,7 +76,13 @@ std::pair<long long, std::string> submittedAt(const GradebookEntry& e, const Gra
 std::optional<LateCost> lateCostOf(const GradebookEntry& e, const GradingNow& now) {
     if (now.late.perLab()) return e.result.is_null() ? std::nullopt : perLabCost(e, now);
     const long long at = submittedAt(e, now).first;
-    if (!now.deadline || at == 0) return std::nullopt;
+    if (!now.deadline) return std::nullopt;
+    if (at == 0) {
+        if (e.result.is_null()) return std::nullopt;
+        LateCost unknown;
+        unknown.timeUnknown = true;
+        return unknown;
+    }
     const Lateness late = latenessOf(now.late, e.id, at, *now.deadline);
     return LateCost{late.daysLate, late.slipDaysUsed, late.penalty, ""};
 }

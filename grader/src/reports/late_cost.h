@@ -20,6 +20,9 @@ struct LateCost {
     int slipDaysUsed = 0; ///< of the policy's slip days
     double penalty = 0;   ///< the fraction of the graded total it loses
     std::string labs;     ///< under deadlines per lab, the late labs in words
+    /// Handed in with no time known (none the submission could tell, none from --times): not
+    /// taken as on time, said in the gradebook instead.
+    bool timeUnknown = false;
 };
 
 /// What the entry's times cost it; none where no deadline applies or no time is known.
