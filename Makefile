@@ -187,11 +187,12 @@ handouts: build
 # README-student.md as its README (docs/instructor-guide.md: The student release).
 # RUBRIC=FILE: the release carries the instructor's rubric, the files of the public scenes it
 # names (tracked by git or not) and references that fit it (measured again by the grader where
-# the kit's do not), and says so (docs/instructor-guide.md).
+# the kit's, or REFERENCES=DIR's, do not), and says so (docs/instructor-guide.md).
 student-release: $(if $(RUBRIC),configure)
 	$(if $(RUBRIC),@cmake --build $(BUILD) -j $(JOBS) --target grader viewer)
 	@python3 scripts/package_kit.py student-release $(BUILD)/pathlab-student.tar.gz \
-	    $(if $(RUBRIC),--rubric '$(RUBRIC)' --build '$(BUILD)')
+	    $(if $(RUBRIC),--rubric '$(RUBRIC)' --build '$(BUILD)') \
+	    $(if $(REFERENCES),--references '$(REFERENCES)')
 
 # The Gradescope autograder, $(BUILD)/autograder.zip: the whole kit, with setup.sh and
 # run_autograder from scripts/gradescope/ (docs/instructor-guide.md: Gradescope).

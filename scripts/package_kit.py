@@ -2,7 +2,7 @@
 """The kit's two packages, made from this folder's files as they are.
 
 Usage:
-  package_kit.py student-release OUT.tar.gz [--rubric FILE --build BUILD]
+  package_kit.py student-release OUT.tar.gz [--rubric FILE --build BUILD [--references DIR]]
                                               the student release (docs/instructor-guide.md: The student release)
   package_kit.py gradescope OUT.zip           the Gradescope autograder (docs/instructor-guide.md: Gradescope)
 
@@ -192,10 +192,11 @@ def rubric_scene_files(grader, rubric, root):
     return files
 
 
-def instructor_rubric(rubric, build, scratch, root=KIT):
+def instructor_rubric(rubric, build, scratch, root=KIT, stored=None):
     """{name in the release: file to pack} for the instructor's rubric: the rubric itself, the
-    public scenes it names, the references that fit it (measured again where the kit's do not)
-    and release.json; the grader of `build` checks the rubric and measures."""
+    public scenes it names, the references that fit it (measured again where those `stored`,
+    the instructor's folder of them, else the kit's, do not) and release.json; the grader of
+    `build` checks the rubric and measures."""
     grader = os.path.abspath(os.path.join(build, "grader"))
     if not os.path.isfile(rubric):
         raise PackagingError(f"RUBRIC={rubric}: no such file")
@@ -208,7 +209,9 @@ def instructor_rubric(rubric, build, scratch, root=KIT):
         raise PackagingError(f"RUBRIC={rubric} is not a rubric the grader takes: "
                              + (described.stderr.strip() or described.stdout.strip()))
     references = os.path.join(scratch, "references")
-    shutil.copytree(os.path.join(KIT, REFERENCES), references)
+    if stored and not os.path.isdir(stored):
+        raise PackagingError(f"REFERENCES={stored}: no such folder")
+    shutil.copytree(stored or os.path.join(KIT, REFERENCES), references)
     print(f"checking the stored references against {rubric} (a scene whose reference does not fit "
           "it is measured again from the reference solutions: a minute or more each)", flush=True)
     measured = subprocess.run([grader, "make-references", "--only-stale", "--rubric", rubric,
@@ -241,13 +244,13 @@ def instructor_rubric(rubric, build, scratch, root=KIT):
     return files, found.group(1)
 
 
-def student_release(out, root=KIT, rubric=None, build=None):
+def student_release(out, root=KIT, rubric=None, build=None, references=None):
     files = {name: os.path.join(root, f) for name, f in student_files(root).items()}
     with tempfile.TemporaryDirectory() as scratch:
         # Whichever rubric the release carries, what it names for the instructor stays behind.
         refuse_shipping_named_files(files, rubric or os.path.join(root, RUBRIC))
         if rubric:
-            instructors, rubric_hash = instructor_rubric(rubric, build, scratch, root)
+            instructors, rubric_hash = instructor_rubric(rubric, build, scratch, root, references)
             untracked = sorted(n for n in instructors if n.startswith("models/") and n not in files)
             files = {n: f for n, f in files.items() if n != RUBRIC and not n.startswith(REFERENCES)}
             files.update(instructors)
@@ -339,7 +342,9 @@ def gradescope(out, root=KIT):
 def main(argv):
     options = dict(zip(argv[3::2], argv[4::2]))
     if (len(argv) < 3 or argv[1] not in ("student-release", "gradescope") or len(argv) % 2 == 0
-            or set(options) - {"--rubric", "--build"} or ("--rubric" in options) != ("--build" in options)
+            or set(options) - {"--rubric", "--build", "--references"}
+            or ("--rubric" in options) != ("--build" in options)
+            or ("--references" in options and "--rubric" not in options)
             or (options and argv[1] != "student-release")):
         print(__doc__.strip().split("\n\n")[1], file=sys.stderr)
         return 2
@@ -349,7 +354,8 @@ def main(argv):
               "kit, not from the student release", file=sys.stderr)
         return 2
     try:
-        files = (student_release(out, rubric=options.get("--rubric"), build=options.get("--build"))
+        files = (student_release(out, rubric=options.get("--rubric"), build=options.get("--build"),
+                                 references=options.get("--references"))
                  if command == "student-release" else gradescope(out))
     except PackagingError as e:
         print(f"make {command}: {e}; nothing was written", file=sys.stderr)

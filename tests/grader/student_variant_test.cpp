@@ -207,6 +207,14 @@ TEST_CASE("grader rubric describes the variants, the late policy and the regrade
     CHECK(text.find("late: 2 slip day(s) per student, then 10% of the total per late day, at most "
                     "30%") != std::string::npos);
     CHECK(text.find("regrades: keep_higher") != std::string::npos);
+    // A deadline per lab: the budget is the term's, the penalty a lab's, the labs as they come due.
+    rubric.late.labDeadlines = {{"uniform", 1792108740}, {"branching", 1790899140}};
+    rubric.late.labExtensionDays = {{"erin", {{"uniform", 2}}}};
+    const std::string perLab = rubricText(rubric, "rubric.json", 0);
+    CHECK(perLab.find("late: 2 slip day(s) per student for the term, spent as the labs come "
+                      "due,\n  then 10% of a late lab's points per late day, at most 30%; "
+                      "extensions for 1 student(s)\n  branching due 2026-10-01T23:59:00Z\n  "
+                      "uniform due 2026-10-15T23:59:00Z\n") != std::string::npos);
 }
 
 TEST_CASE("ids as the grader spells them: an email's @ as _, in the extensions CSV too",

@@ -24,6 +24,10 @@ and checks, each printing PASS/FAIL:
 - a rubric with per-student variants is packed without the name of its class secret's file
   (outside the hash, which stays the instructor's), and a secret that is a file of the kit stops
   the packaging, naming it;
+- packaged again from the instructor's own references (REFERENCES=, here the first release's,
+  which fit the rubric), nothing is measured again;
+- a rubric naming a public scene not in models/ is refused by grader rubric and stops the
+  packaging before anything is measured;
 - a rubric the grader refuses (a lab's points missing) stops the packaging in one line naming
   the problem, exit 2, and no package is written.
 """
@@ -47,9 +51,10 @@ KIT, BUILD = os.path.abspath(args.source), os.path.abspath(args.build)
 GRADER = os.path.join(BUILD, "grader")
 
 
-def package(out, rubric):
+def package(out, rubric, references=None):
     return subprocess.run([sys.executable, os.path.join(KIT, "scripts", "package_kit.py"), "student-release",
-                           out, "--rubric", rubric, "--build", BUILD], capture_output=True, text=True)
+                           out, "--rubric", rubric, "--build", BUILD,
+                           *(["--references", references] if references else [])], capture_output=True, text=True)
 
 
 def course_scene(stem):
@@ -154,6 +159,23 @@ def checks(stem):
         says = subprocess.run([GRADER, "rubric", "--rubric", released], capture_output=True, text=True).stdout
         check("is not that rubric" in says and "may differ from your instructor's" in says,
               "an edited rubric in the release is told apart from the instructor's")
+
+        # Packaged from the instructor's own references, which fit: nothing is measured again.
+        again = package(os.path.join(root, "again.tar.gz"), course, os.path.join(grader_folder, "references"))
+        check(again.returncode == 0 and "measuring" not in again.stdout
+              and "kept" in again.stdout and f"{stem}.json: it fits" in again.stdout,
+              f"packaged from REFERENCES= that fit the rubric, nothing measured again (exit {again.returncode})")
+
+        # A public scene that is not in models/: refused at once, before any measuring.
+        nowhere = dict(rubric, correctness=dict(rubric["correctness"], scenes=["furnace", "nowhere_box"]))
+        nowhere_rubric = os.path.join(root, "nowhere.json")
+        json.dump(nowhere, open(nowhere_rubric, "w"))
+        said = subprocess.run([GRADER, "rubric", "--rubric", nowhere_rubric], capture_output=True, text=True)
+        refused = package(os.path.join(root, "nowhere.tar.gz"), nowhere_rubric)
+        check(said.returncode == 2 and "public scene 'nowhere_box'" in said.stderr
+              and refused.returncode == 2 and "public scene 'nowhere_box'" in refused.stderr
+              and "measuring" not in refused.stdout,
+              f"a rubric naming a scene not in models/ is refused before any measuring ({said.stderr.strip()})")
 
         # A class secret that git tracks in the kit would ship in the release: refused.
         tracked = dict(rubric, variants=dict(rubric["variants"], secret_file=os.path.join(KIT, "models", "furnace.mtl")))

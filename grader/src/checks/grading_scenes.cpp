@@ -134,8 +134,14 @@ std::vector<std::string> rubricSceneFiles(const Rubric& rubric) {
     names.push_back(rubric.speedScene);
     if (!rubric.variants.boxScene.empty()) names.push_back(rubric.variants.boxScene);
     std::set<std::string> files;
-    for (const std::string& name : names)
+    for (const std::string& name : names) {
+        if (!fs::exists(publicScenePath(name)))
+            throw InputError("the rubric grades on the public scene '" + name + "', but " +
+                             publicScenePath(name) +
+                             " does not exist: a public scene is found by name in models/ "
+                             "(put its .ecs, .obj and .mtl there)");
         for (const std::string& file : sceneFiles(publicScenePath(name))) files.insert(file);
+    }
     return {files.begin(), files.end()};
 }
 

@@ -5,12 +5,14 @@
 #include "checks/run_limits.h"
 #include "checks/speed_check.h"
 #include "checks/strategy_tiles.h"
+#include "common/local_time.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace pathlab::grader {
@@ -135,14 +137,29 @@ std::string rubricText(const Rubric& r, const std::string& rubricPath, int hidde
         << r.secondsPerRun * WallLimitFactor
         << " s of wall-clock time at most\n  (none depends on how busy the machine is), "
         << (r.memoryBytes >> 20) << " MB of memory\n";
-    if (r.late.given)
-        out << "\nlate: " << r.late.slipDays << " slip day(s) per student, then "
-            << r.late.penaltyPerDay * 100 << "% of the total per late day, at most "
+    if (r.late.given) {
+        std::set<std::string> extended;
+        for (const auto& [id, days] : r.late.extensionDays) extended.insert(id);
+        for (const auto& [id, labs] : r.late.labExtensionDays) extended.insert(id);
+        const size_t extensions = extended.size();
+        out << "\nlate: " << r.late.slipDays
+            << (r.late.perLab() ? " slip day(s) per student for the term, spent as the labs "
+                                  "come due,\n  then "
+                                : " slip day(s) per student, then ")
+            << r.late.penaltyPerDay * 100
+            << (r.late.perLab() ? "% of a late lab's points per late day, at most "
+                                : "% of the total per late day, at most ")
             << r.late.maxPenalty * 100 << "%"
-            << (r.late.extensionDays.empty()
-                    ? std::string()
-                    : "; " + std::to_string(r.late.extensionDays.size()) + " extension(s)")
+            << (extensions == 0 ? std::string()
+                                : "; extensions for " + std::to_string(extensions) + " student(s)")
             << "\n";
+        // The labs' deadlines in the order they come due.
+        std::vector<std::pair<long long, std::string>> due;
+        for (const auto& [lab, deadline] : r.late.labDeadlines) due.push_back({deadline, lab});
+        std::sort(due.begin(), due.end());
+        for (const auto& [deadline, lab] : due)
+            out << "  " << lab << " due " << isoTime(deadline) << "\n";
+    }
     if (r.lowerScores != LowerScores::Undecided)
         out << "regrades: " << lowerScoresName(r.lowerScores)
             << (r.lowerScores == LowerScores::Replace ? " (a regrade's lower total counts)"

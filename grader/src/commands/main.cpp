@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
                 return 0;
             }
             if (a.command == "rubric") {
+                rubricSceneFiles(rubric); // a public scene missing from models/ is said now
                 const int hidden = a.scenesDir.empty()
                                        ? 0
                                        : static_cast<int>(hiddenScenePaths(a.scenesDir).size());

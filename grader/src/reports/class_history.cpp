@@ -75,12 +75,17 @@ std::string chart(const std::vector<ClassFigures>& history) {
         svg << "<line x1=\"" << PlotLeft << "\" x2=\"" << PlotRight << "\" y1=\"" << y(level)
             << "\" y2=\"" << y(level) << "\" stroke=\"#dddddd\"/>\n<text x=\"" << PlotLeft - 4
             << "\" y=\"" << y(level) + 4 << "\" text-anchor=\"end\">" << level << "%</text>\n";
-    // A date under every batch, or under every k-th where they would overlap.
+    // When, under every batch or under every k-th where they would overlap: month, day and
+    // time ("12-07 14:05"), as batches of one day are told apart by their hour.
     const size_t step =
-        std::max<size_t>(1, (n * 70 + (PlotRight - PlotLeft) - 1) / (PlotRight - PlotLeft));
-    for (size_t i = 0; i < n; i += step)
+        std::max<size_t>(1, (n * 80 + (PlotRight - PlotLeft) - 1) / (PlotRight - PlotLeft));
+    for (size_t i = 0; i < n; i += step) {
+        const std::string& at = history[i].at; // 2026-12-07T14:05:00Z
+        const std::string when =
+            at.size() >= 16 ? at.substr(5, 5) + " " + at.substr(11, 5) : at.substr(0, 10);
         svg << "<text x=\"" << x(i) << "\" y=\"" << DateBaseline << "\" text-anchor=\"middle\">"
-            << escapeXml(history[i].at.substr(0, 10)) << "</text>\n";
+            << escapeXml(when) << "</text>\n";
+    }
     svg << "<text x=\"" << (PlotLeft + PlotRight) / 2 << "\" y=\"" << TitleBaseline
         << "\" text-anchor=\"middle\">batch finished (UTC), % of the maximum</text>\n";
     std::vector<std::pair<std::string, std::vector<double>>> lines = {{"total", {}}};
@@ -94,12 +99,16 @@ std::string chart(const std::vector<ClassFigures>& history) {
     }
     for (size_t k = 0; k < lines.size(); ++k) {
         const char* colour = Colours[k % std::size(Colours)];
+        // Labs of equal means would hide one another: each lab's line is moved by a pixel or
+        // two of its own, and the legend gives each line's last value.
+        const int shift = k == 0 ? 0 : 2 * static_cast<int>(k) - static_cast<int>(lines.size());
         svg << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\""
             << (k == 0 ? 3 : 1.5) << "\" points=\"";
-        for (size_t i = 0; i < n; ++i) svg << x(i) << "," << y(lines[k].second[i]) << " ";
+        for (size_t i = 0; i < n; ++i)
+            svg << x(i) << "," << std::clamp(y(lines[k].second[i]) + shift, 0, Height) << " ";
         svg << "\"/>\n<text x=\"" << LegendX << "\" y=\"" << PlotTop + 8 + LegendPitch * k
             << "\" fill=\"" << colour << "\">" << escapeXml(lines[k].first)
-            << (k == 0 ? " (mean)" : "") << "</text>\n";
+            << (k == 0 ? " (mean)" : "") << " " << percent(lines[k].second.back()) << "</text>\n";
     }
     svg << "</svg>\n";
     return svg.str();

@@ -304,7 +304,7 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
                         const std::vector<RegradeComparison>& regrades,
                         const std::vector<ClassFigures>& history) {
     int graded = 0, pending = 0, stale = 0, late = 0, timeUnknown = 0, lowered = 0;
-    double sum = 0;
+    double sum = 0, finalSum = 0; // of the totals that count, before and after late penalties
     // (lab, diagnosis) -> the submissions it was made of
     std::map<std::pair<std::string, std::string>, std::vector<std::string>> diagnoses;
     std::vector<GradebookEntry> entries; // those with a total out of today's maximum
@@ -320,6 +320,7 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
         ++graded;
         const double max = e.result.value("max_score", 0.0);
         sum += max > 0 ? *countedTotal(e, now) / max : 0;
+        finalSum += max > 0 ? finalTotal(e, now).value_or(0) / max : 0;
         for (const auto& d : e.result.value("diagnoses", nlohmann::json::array()))
             if (d.value("check", "") == std::string(checkName(CheckKind::Correctness)) ||
                 d.value("diagnosis", "") == "too noisy" || d.value("diagnosis", "") == "too slow")
@@ -338,7 +339,11 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
          << " submissions graded</h1>\n";
     if (graded > 0)
         html << "<p>Mean total: " << number(std::round(1000 * sum / graded) / 10)
-             << "% of the maximum (" << number(now.maxScore) << " points).</p>\n";
+             << "% of the maximum (" << number(now.maxScore) << " points)"
+             << (finalSum < sum ? ", " + number(std::round(1000 * finalSum / graded) / 10) +
+                                      "% after the late policy's penalties"
+                                : std::string())
+             << ".</p>\n";
     if (pending + stale + late > 0)
         html << "<p>" << pending << " pending, " << stale
              << " stale (graded under another rubric or other "
