@@ -25,6 +25,12 @@ bool sandboxHere() {
     return reason.empty();
 }
 
+/// Readable by the sandbox's user, as a class's submissions are.
+void readableBySandbox(const fs::path& folder) {
+    fs::permissions(folder, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                fs::perms::others_read | fs::perms::others_exec);
+}
+
 /// Runs `command` (a shell line), failing the test if it fails.
 void shell(const std::string& command) { REQUIRE(std::system(command.c_str()) == 0); }
 
@@ -34,10 +40,7 @@ TEST_CASE("a lab's time is the last commit that changed its file, or its modific
           "[grader][sandbox]") {
     if (!sandboxHere()) return;
     const pathlab::test::ScratchFolder scratch("intake-times");
-    // Readable by the sandbox's user, as a class's submissions are.
-    fs::permissions(scratch.path, fs::perms::owner_all | fs::perms::group_read |
-                                      fs::perms::group_exec | fs::perms::others_read |
-                                      fs::perms::others_exec);
+    readableBySandbox(scratch.path);
     const fs::path repository = scratch.path / "dan";
     fs::create_directories(repository / "labs");
     const std::string git =
@@ -92,9 +95,7 @@ TEST_CASE("a student's repository cannot pass a lab off as on time: a wild commi
           "[grader][sandbox]") {
     if (!sandboxHere()) return;
     const pathlab::test::ScratchFolder scratch("intake-hostile");
-    fs::permissions(scratch.path, fs::perms::owner_all | fs::perms::group_read |
-                                      fs::perms::group_exec | fs::perms::others_read |
-                                      fs::perms::others_exec);
+    readableBySandbox(scratch.path);
     const SandboxPolicy policy{{}, sandboxUserForThisProcess()};
     int taken = 0;
     auto intakeOf = [&](const fs::path& submission) {

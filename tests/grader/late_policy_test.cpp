@@ -32,6 +32,18 @@ std::string errorOf(const nlohmann::json& section, const std::string& rubric) {
     return "";
 }
 
+/// The grading now, out of 40, under a policy of 10% a late day after one slip day.
+GradingNow gradingWithPolicy() {
+    GradingNow now;
+    now.rubricHash = "rubric";
+    now.scenesHash = "scenes";
+    now.maxScore = 40;
+    now.late.given = true;
+    now.late.penaltyPerDay = 0.1;
+    now.late.slipDays = 1;
+    return now;
+}
+
 } // namespace
 
 TEST_CASE("late days round up; slip days go first; the penalty per day stops at its cap",
@@ -89,14 +101,8 @@ TEST_CASE("the gradebook shows the raw total, the late days and slip days used, 
           "the final total, which the LMS gets",
           "[grader]") {
     const test::ScratchFolder scratch("late");
-    GradingNow now;
-    now.rubricHash = "rubric";
-    now.scenesHash = "scenes";
-    now.maxScore = 40;
+    GradingNow now = gradingWithPolicy();
     now.deadline = parseTime("2026-12-01T23:59Z");
-    now.late.given = true;
-    now.late.penaltyPerDay = 0.1;
-    now.late.slipDays = 1;
     auto result = [](const std::string& submitted) {
         return nlohmann::json{
             {"status", "graded"},
@@ -209,13 +215,7 @@ TEST_CASE("under a deadline per lab the gradebook takes each lab's own time, the
           "submission's, and lowers each late lab's points",
           "[grader]") {
     const test::ScratchFolder scratch("late");
-    GradingNow now;
-    now.rubricHash = "rubric";
-    now.scenesHash = "scenes";
-    now.maxScore = 40;
-    now.late.given = true;
-    now.late.penaltyPerDay = 0.1;
-    now.late.slipDays = 1;
+    GradingNow now = gradingWithPolicy();
     now.late.labDeadlines = {{"branching", *parseTime("2026-10-02T23:59Z")},
                              {"uniform", *parseTime("2026-10-09T23:59Z")}};
     // Lab files' own times: branching changed 2 days after its deadline, uniform on time; the

@@ -259,8 +259,8 @@ void measureStudentVariants(const Arguments& a, const Rubric& rubric,
     // One reference per student, before the first grading and before the gradings' estimate:
     // a class of 200 takes a while here, so the first one measured says how long.
     std::fprintf(stderr,
-                 "the box references of %zu student(s)' variants (those not measured before) "
-                 "...\n",
+                 "the box references of %zu student(s)' variants, each measured once and then "
+                 "kept ...\n",
                  todo.size());
     bool estimated = false;
     for (size_t i = 0; i < todo.size(); ++i) {
