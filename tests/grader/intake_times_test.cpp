@@ -8,6 +8,7 @@
 #if PATHLAB_SANDBOX
 
 #include "isolation/submission_intake.h"
+#include "sandbox_here.h"
 #include "test_support.h"
 
 #include <cstdlib>
@@ -18,12 +19,6 @@ using namespace pathlab::grader;
 namespace fs = std::filesystem;
 
 namespace {
-
-bool sandboxHere() {
-    static const std::string reason = sandboxUnavailableReason();
-    if (!reason.empty()) WARN("no sandbox here, nothing checked: " << reason);
-    return reason.empty();
-}
 
 /// Readable by the sandbox's user, as a class's submissions are.
 void readableBySandbox(const fs::path& folder) {

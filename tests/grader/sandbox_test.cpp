@@ -8,6 +8,7 @@
 #if PATHLAB_SANDBOX
 
 #include "isolation/sandbox.h"
+#include "sandbox_here.h"
 
 #include <csignal>
 #include <cstdlib>
@@ -20,13 +21,6 @@ using namespace pathlab::grader;
 namespace fs = std::filesystem;
 
 namespace {
-
-/// Whether a sandbox can be made here; says why not when it cannot.
-bool sandboxHere() {
-    static const std::string reason = sandboxUnavailableReason();
-    if (!reason.empty()) WARN("no sandbox here, nothing checked: " << reason);
-    return reason.empty();
-}
 
 SandboxOutcome inSandbox(const std::string& script,
                          const std::vector<std::pair<std::string, std::string>>& files = {}) {

@@ -3,6 +3,7 @@
 #include "common/local_time.h"
 #include "common/plain_id.h"
 #include "pathlab/render/lab_registry.h"
+#include "pathlab/support/parse_number.h"
 #include "pathlab/support/input_error.h"
 
 #include <nlohmann/json.hpp>
@@ -20,16 +21,6 @@ namespace {
 
 constexpr long long kSecondsPerDay = 24 * 60 * 60;
 
-std::vector<std::string> csvFields(const std::string& line) {
-    std::vector<std::string> fields;
-    for (size_t from = 0;;) {
-        const size_t comma = line.find(',', from);
-        fields.push_back(line.substr(from, comma - from));
-        if (comma == std::string::npos) return fields;
-        from = comma + 1;
-    }
-}
-
 /// id,days lines (every deadline of the student's moves) and id,days,lab lines (that lab's), after
 /// an optional header "id,...", each id as the grader spells it.
 void readExtensions(const std::string& path, LatePolicy& policy) {
@@ -39,7 +30,8 @@ void readExtensions(const std::string& path, LatePolicy& policy) {
     for (int number = 1; std::getline(in, line); ++number) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
         if (line.empty() || (number == 1 && line.rfind("id,", 0) == 0)) continue;
-        const std::vector<std::string> fields = csvFields(line);
+        std::vector<std::string> fields;
+        for (std::string_view field : splitAt(line, ',')) fields.emplace_back(field);
         const std::string where = path + ":" + std::to_string(number) + ": ";
         char* end = nullptr;
         const long value = fields.size() >= 2 ? std::strtol(fields[1].c_str(), &end, 10) : -1;

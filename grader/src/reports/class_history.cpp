@@ -164,10 +164,10 @@ std::vector<ClassFigures> readClassHistory(const std::string& out) {
     return history;
 }
 
-void addToClassHistory(const std::string& out, const ClassFigures& figures) {
+void writeClassHistory(const std::string& out, const std::vector<ClassFigures>& history) {
     std::string text;
-    for (const ClassFigures& f : readClassHistory(out)) text += toJson(f).dump() + "\n";
-    writeFileAtomically(out + "/history.jsonl", text + toJson(figures).dump() + "\n");
+    for (const ClassFigures& f : history) text += toJson(f).dump() + "\n";
+    writeFileAtomically(out + "/history.jsonl", text);
 }
 
 std::string classHistoryHtml(const std::vector<ClassFigures>& history) {

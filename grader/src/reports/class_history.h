@@ -29,8 +29,8 @@ ClassFigures classFiguresNow(const std::vector<GradebookEntry>& entries, const G
 /// OUT/history.jsonl, oldest first; a line it cannot read is left out.
 std::vector<ClassFigures> readClassHistory(const std::string& out);
 
-/// Adds `figures` to OUT/history.jsonl (written atomically).
-void addToClassHistory(const std::string& out, const ClassFigures& figures);
+/// Writes `history` as OUT/history.jsonl (atomically): what was read, a batch's figures added.
+void writeClassHistory(const std::string& out, const std::vector<ClassFigures>& history);
 
 /// The summary page's "Over time" section: a table of the batches and, from two on, a chart of
 /// the mean total and each lab's mean, every label inside its SVG.

@@ -310,8 +310,9 @@ std::string summaryPage(const std::vector<GradebookEntry>& allEntries, const Gra
     std::vector<GradebookEntry> entries; // those with a total out of today's maximum
     for (const GradebookEntry& e : allEntries) {
         pending += e.pending;
-        late += lateness(e, now) == "yes";
-        timeUnknown += lateness(e, now) == "unknown";
+        const std::string isLate = lateness(e, now);
+        late += isLate == "yes";
+        timeUnknown += isLate == "unknown";
         lowered += loweredUndecided(e, now);
         if (e.result.is_null()) continue;
         stale += !staleness(e.result, now).empty();
@@ -467,8 +468,8 @@ void writeGradebook(const std::string& out, const std::vector<GradebookEntry>& e
         const ClassFigures figures =
             classFiguresNow(entries, now, isoTime(static_cast<long long>(std::time(nullptr))));
         if (figures.graded > 0) {
-            addToClassHistory(out, figures);
             history.push_back(figures);
+            writeClassHistory(out, history);
         }
     }
     writeFileAtomically(out + "/summary.html",

@@ -1,6 +1,7 @@
 #include "reports/submission_time.h"
 
 #include "pathlab/render/lab_registry.h"
+#include "pathlab/support/parse_number.h"
 #include "pathlab/support/input_error.h"
 
 #include <cstdio>
@@ -19,12 +20,7 @@ SubmissionTimes loadSubmissionTimes(const std::string& path) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
         if (line.empty()) continue;
         std::vector<std::string> fields;
-        for (size_t from = 0;;) {
-            const size_t comma = line.find(',', from);
-            fields.push_back(line.substr(from, comma - from));
-            if (comma == std::string::npos) break;
-            from = comma + 1;
-        }
+        for (std::string_view field : splitAt(line, ',')) fields.emplace_back(field);
         const std::optional<long long> seconds =
             fields.size() >= 2 ? parseTime(fields.back()) : std::nullopt;
         // The header: id,submitted_at or id,lab,submitted_at.
